@@ -1,0 +1,138 @@
+// Global adaptive Gauss-Kronrod (G10K21) integration of a small vector of integrands over a
+// set of tagged intervals, with a fixed-capacity interval store (no heap allocation).
+#pragma once
+
+#include <array>
+#include <cmath>
+
+#include "contensou/quadrature.hpp"
+#include "contensou/scalar.hpp"
+
+namespace contensou::detail {
+
+// One sample of a vector integrand; inner_error carries the error of a nested integral.
+template <class T, int Dim>
+struct Sample {
+  std::array<T, Dim> value{};
+  std::array<double, Dim> inner_error{};
+};
+
+template <class T, int Dim>
+struct AdaptiveResult {
+  std::array<T, Dim> value{};
+  std::array<double, Dim> error{};
+  int evaluations = 0;
+  int intervals = 0;
+  bool converged = false;
+};
+
+struct TaggedInterval {
+  double a;
+  double b;
+  int tag;
+};
+
+// Integrates f(x, tag) (returning Sample<T, Dim>) over the union of the given intervals until
+// the estimated absolute error of every component c is <= tolerance[c], bisecting the
+// interval with the largest scaled error. Capacity bounds the number of intervals kept.
+template <class T, int Dim, int Capacity = 160, class F>
+AdaptiveResult<T, Dim> integrate_adaptive(F&& f, const TaggedInterval* initial, int n_initial,
+                                          const std::array<double, Dim>& tolerance) {
+  struct Piece {
+    double a, b;
+    int tag;
+    std::array<T, Dim> value;
+    std::array<double, Dim> error;
+  };
+  std::array<Piece, Capacity> pieces;
+  int n = 0;
+  AdaptiveResult<T, Dim> out;
+
+  auto evaluate = [&](double a, double b, int tag) {
+    Piece p{a, b, tag, {}, {}};
+    const double mid = 0.5 * (a + b), half = 0.5 * (b - a);
+    std::array<T, Dim> kron{}, gauss{};
+    std::array<double, Dim> kron_d{}, inner{}, absdev{};
+    std::array<std::array<double, Dim>, 21> plain{};
+    for (auto& v : kron) v = T(0);
+    for (auto& v : gauss) v = T(0);
+    int idx = 0;
+    for (const KronrodNode& node : kGK21) {
+      const int signs = node.x == 0.0 ? 1 : 2;
+      for (int s = 0; s < signs; ++s) {
+        const double x = s == 0 ? mid + half * node.x : mid - half * node.x;
+        const Sample<T, Dim> y = f(x, tag);
+        for (int c = 0; c < Dim; ++c) {
+          kron[c] += node.kronrod * y.value[c];
+          if (node.gauss != 0.0) gauss[c] += node.gauss * y.value[c];
+          plain[idx][c] = value_of(y.value[c]);
+          kron_d[c] += node.kronrod * plain[idx][c];
+          inner[c] += node.kronrod * y.inner_error[c];
+        }
+        ++idx;
+      }
+    }
+    out.evaluations += 21;
+    idx = 0;
+    for (const KronrodNode& node : kGK21) {
+      const int signs = node.x == 0.0 ? 1 : 2;
+      for (int s = 0; s < signs; ++s, ++idx)
+        for (int c = 0; c < Dim; ++c)
+          absdev[c] += node.kronrod * std::abs(plain[idx][c] - 0.5 * kron_d[c]);
+    }
+    for (int c = 0; c < Dim; ++c) {
+      p.value[c] = half * kron[c];
+      const double diff = half * (value_of(kron[c]) - value_of(gauss[c]));
+      p.error[c] = kronrod_error(diff, std::abs(half) * absdev[c]) + std::abs(half) * inner[c] +
+                   4.0e-16 * std::abs(value_of(p.value[c]));
+    }
+    return p;
+  };
+
+  auto scaled = [&](const Piece& p) {
+    double e = 0.0;
+    for (int c = 0; c < Dim; ++c) e = std::max(e, p.error[c] / tolerance[c]);
+    return e;
+  };
+
+  for (int i = 0; i < n_initial && n < Capacity; ++i)
+    pieces[n++] = evaluate(initial[i].a, initial[i].b, initial[i].tag);
+
+  while (true) {
+    std::array<double, Dim> total{};
+    for (int i = 0; i < n; ++i)
+      for (int c = 0; c < Dim; ++c) total[c] += pieces[i].error[c];
+    bool ok = true;
+    for (int c = 0; c < Dim; ++c) ok = ok && total[c] <= tolerance[c];
+    if (ok || n + 1 > Capacity) {
+      out.converged = ok;
+      out.error = total;
+      break;
+    }
+    int worst = 0;
+    double worst_e = -1.0;
+    for (int i = 0; i < n; ++i) {
+      const double e = scaled(pieces[i]);
+      if (e > worst_e) {
+        worst_e = e;
+        worst = i;
+      }
+    }
+    const Piece parent = pieces[worst];
+    const double m = 0.5 * (parent.a + parent.b);
+    if (!(m > parent.a && m < parent.b)) {  // interval at machine resolution
+      out.converged = false;
+      out.error = total;
+      break;
+    }
+    pieces[worst] = evaluate(parent.a, m, parent.tag);
+    pieces[n++] = evaluate(m, parent.b, parent.tag);
+  }
+  for (auto& v : out.value) v = T(0);
+  for (int i = 0; i < n; ++i)
+    for (int c = 0; c < Dim; ++c) out.value[c] += pieces[i].value[c];
+  out.intervals = n;
+  return out;
+}
+
+}  // namespace contensou::detail

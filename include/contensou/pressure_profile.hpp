@@ -1,0 +1,80 @@
+// Axisymmetric contact-pressure profiles p(rho) and their moments (theory.md sections 2, 4, 5).
+//
+// The pressure on the patch is sigma(x, y) = p* p(rho) (1 + kx x/R + ky y/R), rho = r/R
+// (seed eq. 1 and 9): p is a dimensionless radial shape, p* a reference pressure [Pa], and
+// (kx, ky) the dimensionless linear shift of the pressure centre (rolling, camber).
+#pragma once
+
+#include <string>
+#include <utility>
+#include <variant>
+#include <vector>
+
+namespace contensou {
+
+// p(rho) = 1.
+struct UniformShape {};
+
+// p(rho) = sqrt(1 - rho^2) (Hertz contact of a sphere; here scaled to p(0) = 1).
+struct HertzShape {};
+
+// p(rho) = sum_k a_k cos(pi k w rho) (seed eq. 8; the seed's x in [-1, 1] is rho along a diameter).
+struct CosineSeriesShape {
+  double w = 1.0;
+  std::vector<double> a;
+};
+
+// A radial profile tabulated at increasing rho in [0, 1] and interpolated by a monotone
+// piecewise cubic (Fritsch-Carlson PCHIP: no new extrema, C1). Values are dimensionless
+// (divided by the reference pressure).
+struct TabulatedShape {
+  std::vector<double> rho;
+  std::vector<double> p;
+  std::vector<double> slope;  // dp/drho at the knots, set by make_tabulated_profile
+};
+
+using ProfileShape = std::variant<UniformShape, HertzShape, CosineSeriesShape, TabulatedShape>;
+
+// A pressure profile: the radial shape, the linear shift and the explicit clipping option.
+struct PressureProfile {
+  ProfileShape shape = UniformShape{};
+  double kx = 0.0;            // shift along x (seed eq. 9; 0.14 for the seed's rolling tire)
+  double ky = 0.0;            // shift along y
+  bool clip_negative = false;  // if true, p is replaced by max(p, 0)
+};
+
+PressureProfile uniform_profile();
+PressureProfile hertz_profile();
+PressureProfile cosine_series_profile(double w, std::vector<double> a);
+// Validates rho (strictly increasing, within [0, 1], ending at 1) and p (finite); a first
+// rho > 0 is extended flat to the centre.
+PressureProfile tabulated_profile(std::vector<double> rho, std::vector<double> p);
+
+// The tire of the seed (Table 1): w = 0.848, a_0..a_7, no shift, not clipped.
+PressureProfile seed_tire_profile();
+
+// A tabulated profile read from a CSV with columns rho and pressure_Pa (any order, header
+// row, '#' comments). The shape is the pressure divided by reference_pressure_pa, the mean
+// contact pressure N / (pi R^2), so that 2 A^1 = 1. Errors name file, line and column.
+struct MeasuredProfile {
+  PressureProfile profile;
+  double reference_pressure_pa = 0.0;
+};
+MeasuredProfile read_profile_csv(const std::string& path);
+
+// The dimensionless shape p(rho) for rho in [0, 1], after clipping if enabled (no shift).
+double shape_value(const PressureProfile& profile, double rho);
+
+// A^n = integral_0^1 p(rho) rho^n d rho (theory.md section 4). Closed forms for uniform, Hertz
+// and the cosine series (integer n); exact piecewise Gauss-Legendre for the tabulated cubic.
+// Clipping, if enabled, is honoured (exact integration between the sign changes).
+double moment(const PressureProfile& profile, int n);
+
+// Intervals of rho in [0, 1] where the unclipped shape is negative (empty for a physical
+// profile). The seed tire is negative on (0.9936, 1].
+std::vector<std::pair<double, double>> negative_intervals(const PressureProfile& profile);
+
+// A short human-readable name ("uniform", "Hertz", "cosine series (8 terms)", ...).
+std::string describe(const PressureProfile& profile);
+
+}  // namespace contensou

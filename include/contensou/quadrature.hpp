@@ -1,0 +1,56 @@
+// Quadrature rules: Gauss-Legendre nodes of any order and the Gauss-Kronrod G10K21 pair.
+#pragma once
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <numbers>
+#include <vector>
+
+namespace contensou {
+
+// A Gauss-Legendre rule on [-1, 1].
+struct GaussLegendreRule {
+  std::vector<double> nodes;
+  std::vector<double> weights;
+};
+
+// n-point Gauss-Legendre rule (exact for polynomials of degree 2n-1), computed by Newton's
+// method on the three-term recurrence of P_n; accurate to a few ulp for n <= 1000.
+GaussLegendreRule gauss_legendre(int n);
+
+namespace detail {
+
+struct KronrodNode {
+  double x;         // node in [0, 1]
+  double kronrod;   // weight in the 21-point Kronrod rule
+  double gauss;     // weight in the embedded 10-point Gauss rule (0 if Kronrod-only)
+};
+
+// Gauss-Kronrod G10K21 on [-1, 1]; the symmetric half. Generated to 20 digits by
+// scripts/gen_kronrod.py (zeros of the Stieltjes polynomial E_11).
+inline constexpr KronrodNode kGK21[11] = {
+    {9.9565716302580808074e-1, 0.011694638867371874278, 0.0},
+    {9.7390652851717172008e-1, 0.032558162307964727479, 0.066671344308688137594},
+    {9.30157491355708226e-1, 0.054755896574351996031, 0.0},
+    {8.6506336668898451073e-1, 0.075039674810919952767, 0.14945134915058059315},
+    {7.8081772658641689706e-1, 0.093125454583697605535, 0.0},
+    {6.7940956829902440623e-1, 0.1093871588022976419, 0.219086362515982044},
+    {5.6275713466860468334e-1, 0.12349197626206585108, 0.0},
+    {4.333953941292471908e-1, 0.13470921731147332593, 0.26926671930999635509},
+    {2.9439286270146019813e-1, 0.1427759385770600808, 0.0},
+    {1.4887433898163121088e-1, 0.14773910490133849137, 0.29552422471475287017},
+    {0.0, 0.14944555400291690566, 0.0},
+};
+
+// QUADPACK's error heuristic: scale |K - G| by the integrand's variation (Piessens et al. 1983).
+inline double kronrod_error(double kronrod_minus_gauss, double abs_dev) {
+  double err = std::abs(kronrod_minus_gauss);
+  if (abs_dev != 0.0 && err != 0.0) {
+    err = abs_dev * std::min(1.0, std::pow(200.0 * err / abs_dev, 1.5));
+  }
+  return err;
+}
+
+}  // namespace detail
+}  // namespace contensou

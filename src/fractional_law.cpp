@@ -1,0 +1,216 @@
+#include "contensou/fractional_law.hpp"
+
+#include <cmath>
+#include <numbers>
+
+#include "contensou/error.hpp"
+#include "contensou/exact_resultants.hpp"
+
+namespace contensou {
+
+void validate(const FractionalLaw<double>& p) {
+  detail::require_non_negative("F0", p.F0);
+  detail::require_non_negative("M0", p.M0);
+  detail::require_positive("a", p.a);
+  detail::require_positive("m", p.m);
+  detail::require_positive("c", p.c);
+  detail::require_positive("a_k", p.a_k);
+  detail::require_positive("kappa", p.kappa);
+  detail::require_finite("kx", p.kx);
+  detail::require_finite("ky", p.ky);
+  detail::require_non_negative("Mk", p.Mk);
+  detail::require_positive("radius", p.radius);
+  detail::require_positive("regularization_speed", p.regularization_speed);
+}
+
+FractionalWithJacobian fractional_resultants_with_jacobian(const FractionalLaw<double>& p,
+                                                           const Kinematics<double>& k) {
+  const double R = p.radius, e2 = p.regularization_speed * p.regularization_speed;
+  const double vx = k.vx, vy = k.vy, u = k.omega * R, U = u * u, q = vx * vx + vy * vy;
+  FractionalWithJacobian out;
+  Eigen::Matrix3d& J = out.jacobian;
+  J.setZero();
+  // Sliding force -F0 (vx, kappa vy) / Sa.
+  const double Sa2 = q + p.a * U + e2, Sa = std::sqrt(Sa2), Sa3 = Sa2 * Sa;
+  const double fx = -p.F0 * vx / Sa, fy = -p.F0 * p.kappa * vy / Sa;
+  J(0, 0) = -p.F0 * (1.0 / Sa - vx * vx / Sa3);
+  J(0, 1) = p.F0 * vx * vy / Sa3;
+  J(1, 0) = p.F0 * p.kappa * vx * vy / Sa3;
+  J(1, 1) = -p.F0 * p.kappa * (1.0 / Sa - vy * vy / Sa3);
+  J(0, 2) = p.F0 * vx * p.a * u * R / Sa3;
+  J(1, 2) = p.F0 * p.kappa * vy * p.a * u * R / Sa3;
+  // Spin torque -M0 (1 + kappa)/2 u / Sm.
+  const double ks = 0.5 * (1.0 + p.kappa);
+  const double Sm2 = U + p.m * q + e2, Sm = std::sqrt(Sm2), Sm3 = Sm2 * Sm;
+  double mz = -p.M0 * ks * u / Sm;
+  J(2, 0) = p.M0 * ks * u * p.m * vx / Sm3;
+  J(2, 1) = p.M0 * ks * u * p.m * vy / Sm3;
+  J(2, 2) = -p.M0 * ks * R * (p.m * q + e2) / Sm3;
+  // Shift forces -(M0/2R) [g2 (z x k) + (g1 - g2) (k.v)(z x v)/q].
+  const double hm = p.M0 / (2.0 * R);
+  const double S12 = U + 0.25 * p.m * q + e2, S1 = std::sqrt(S12), S13 = S12 * S1;
+  const double S22 = U + p.c * q + e2, S2 = std::sqrt(S22), S25 = S22 * S22 * S2;
+  const double g1 = u / S1, g2 = U * u / (S22 * S2);
+  const double dg1_dq = -0.125 * p.m * u / S13;  // d g1 / d(q), q = v^2
+  const double dg1_du = (0.25 * p.m * q + e2) / S13;
+  const double dg2_dq = -1.5 * p.c * U * u / S25;
+  const double dg2_du = 3.0 * U * (p.c * q + e2) / S25;
+  double Fx = fx + hm * g2 * p.ky, Fy = fy - hm * g2 * p.kx;
+  for (int j = 0; j < 3; ++j) {
+    const double dg2 = j == 0 ? 2 * vx * dg2_dq : j == 1 ? 2 * vy * dg2_dq : R * dg2_du;
+    J(0, j) += hm * dg2 * p.ky;
+    J(1, j) -= hm * dg2 * p.kx;
+  }
+  if (q > 1e-30 * (U + e2)) {
+    const double kv = p.kx * vx + p.ky * vy, G = g1 - g2, H = G * kv / q;
+    Fx += hm * H * vy;
+    Fy -= hm * H * vx;
+    // dH/dvx etc.
+    const double dG_dq = dg1_dq - dg2_dq, dG_du = dg1_du - dg2_du;
+    const double dH_dvx = (2 * vx * dG_dq) * kv / q + G * p.kx / q - 2 * vx * G * kv / (q * q);
+    const double dH_dvy = (2 * vy * dG_dq) * kv / q + G * p.ky / q - 2 * vy * G * kv / (q * q);
+    const double dH_dw = R * dG_du * kv / q;
+    J(0, 0) += hm * dH_dvx * vy;
+    J(0, 1) += hm * (dH_dvy * vy + H);
+    J(0, 2) += hm * dH_dw * vy;
+    J(1, 0) -= hm * (dH_dvx * vx + H);
+    J(1, 1) -= hm * dH_dvy * vx;
+    J(1, 2) -= hm * dH_dw * vx;
+  }
+  // Cross-shift torque Mk W v / Sk2, W = vx ky - kappa vy kx.
+  const double v = std::sqrt(q + 1e-300), W = vx * p.ky - p.kappa * vy * p.kx;
+  const double Sk2 = q + p.a_k * U + e2;
+  mz += p.Mk * W * v / Sk2;
+  if (q > 0.0) {
+    J(2, 0) += p.Mk * (p.ky * v / Sk2 + W * (vx / v) / Sk2 - W * v * 2 * vx / (Sk2 * Sk2));
+    J(2, 1) += p.Mk * (-p.kappa * p.kx * v / Sk2 + W * (vy / v) / Sk2 -
+                       W * v * 2 * vy / (Sk2 * Sk2));
+  }
+  J(2, 2) += -p.Mk * W * v * 2 * p.a_k * u * R / (Sk2 * Sk2);
+  out.resultants = {Fx, Fy, mz};
+  return out;
+}
+
+namespace {
+
+struct ProfileMoments {
+  double A0, A1, A2, A3, A5;
+};
+
+ProfileMoments moments_of(const PressureProfile& prof) {
+  return {moment(prof, 0), moment(prof, 1), moment(prof, 2), moment(prof, 3), moment(prof, 5)};
+}
+
+// Minimises g(x) over [lo, hi] by golden-section search (g unimodal near its optimum).
+template <class G>
+double golden_minimum(G&& g, double lo, double hi, int iterations = 60) {
+  const double r = 0.5 * (std::sqrt(5.0) - 1.0);
+  double a = lo, b = hi, c = b - r * (b - a), d = a + r * (b - a);
+  double gc = g(c), gd = g(d);
+  for (int i = 0; i < iterations; ++i) {
+    if (gc < gd) {
+      b = d;
+      d = c;
+      gd = gc;
+      c = b - r * (b - a);
+      gc = g(c);
+    } else {
+      a = c;
+      c = d;
+      gc = gd;
+      d = a + r * (b - a);
+      gd = g(d);
+    }
+  }
+  return 0.5 * (a + b);
+}
+
+// Cross-shift torque of the exact integrals at psi = v/u, sliding along x, divided by ky.
+double exact_cross_torque(const ExactModel<double>& shifted, const ExactModel<double>& plain,
+                          double R, double psi) {
+  const Kinematics<double> k{psi, 0.0, 1.0 / R};
+  const double with = exact_resultants(shifted, k, {1e-11}).resultants.Mz;
+  const double without = exact_resultants(plain, k, {1e-11}).resultants.Mz;
+  return (with - without) / value_of(shifted.ky);
+}
+
+}  // namespace
+
+FractionalLaw<double> fractional_law_from_patch(const ContactPatch& patch) {
+  validate(patch);
+  const ProfileMoments A = moments_of(patch.profile);
+  if (!(A.A0 > 0.0 && A.A1 > 0.0 && A.A2 > 0.0 && A.A3 > 0.0 && A.A5 > 0.0))
+    throw InvalidArgument("profile", describe(patch.profile),
+                          "moments A^0..A^5 must be positive for the fractional law");
+  const double R = patch.radius_m, ps = patch.reference_pressure_pa;
+  const double f = patch.slip_speed_friction ? patch.slip_speed_friction->kinetic_coefficient
+                                             : patch.friction;
+  FractionalLaw<double> law;
+  law.radius = R;
+  law.F0 = f * 2.0 * std::numbers::pi * R * R * ps * A.A1;
+  law.M0 = 2.0 * std::numbers::pi * f * R * R * R * ps * A.A2;
+  law.a = std::pow(2.0 * A.A1 / A.A0, 2);
+  law.m = std::pow(2.0 * A.A2 / A.A3, 2);
+  law.c = std::pow(4.0 * A.A2 / A.A5, 2.0 / 3.0);
+  law.Mk = std::numbers::pi * f * R * R * R * ps * A.A3;
+  law.kx = patch.profile.kx;
+  law.ky = patch.profile.ky;
+  law.kappa = patch.kappa;
+  // a_k from the exact small-sliding asymptote Mz_k -> Mk ky psi^2 / a_k (psi = v/u << 1).
+  ContactPatch shifted = patch;
+  shifted.profile.kx = 0.0;
+  shifted.profile.ky = 0.1;
+  shifted.kappa = 1.0;
+  shifted.slip_speed_friction.reset();
+  shifted.friction = f > 0.0 ? f : 1.0;
+  ContactPatch plain = shifted;
+  plain.profile.ky = 0.0;
+  const ExactModel<double> ms = make_exact_model(shifted), mp = make_exact_model(plain);
+  const double psi = 1e-2;
+  const double mk_unit = std::numbers::pi * shifted.friction * R * R * R * ps * A.A3;
+  const double tq = exact_cross_torque(ms, mp, R, psi);
+  law.a_k = tq > 0.0 ? mk_unit * psi * psi / tq : 1.0;
+  return law;
+}
+
+FractionalLaw<double> fractional_law_fitted(const ContactPatch& patch, double psi_min,
+                                            double psi_max, int n) {
+  detail::require_positive("psi_min", psi_min);
+  if (!(psi_max > psi_min))
+    throw InvalidArgument("psi_max", detail::format_value(psi_max), "must exceed psi_min");
+  if (n < 3) throw InvalidArgument("n", std::to_string(n), "need at least 3 ratios");
+  FractionalLaw<double> law = fractional_law_from_patch(patch);
+  ContactPatch iso = patch;
+  iso.kappa = 1.0;
+  iso.profile.kx = iso.profile.ky = 0.0;
+  const ExactModel<double> model = make_exact_model(iso);
+  const double R = patch.radius_m;
+  std::vector<double> psi(n), fpar(n), mz(n);
+  for (int i = 0; i < n; ++i) {
+    psi[i] = psi_min * std::pow(psi_max / psi_min, static_cast<double>(i) / (n - 1));
+    const auto r = exact_resultants(model, Kinematics<double>{psi[i], 0.0, 1.0 / R}, {1e-10});
+    fpar[i] = -r.resultants.Fx;
+    mz[i] = -r.resultants.Mz;
+  }
+  const FractionalLaw<double> base = law;
+  auto sse = [&](double log_value, bool force) {
+    FractionalLaw<double> trial = base;
+    trial.kx = trial.ky = 0.0;
+    trial.kappa = 1.0;
+    (force ? trial.a : trial.m) = std::exp(log_value);
+    double s = 0.0;
+    for (int i = 0; i < n; ++i) {
+      const auto r = fractional_resultants(trial, Kinematics<double>{psi[i], 0.0, 1.0 / R});
+      const double e = force ? (-r.Fx - fpar[i]) / base.F0 : (-r.Mz - mz[i]) / base.M0;
+      s += e * e;
+    }
+    return s;
+  };
+  law.a = std::exp(golden_minimum([&](double x) { return sse(x, true); },
+                                  std::log(base.a) - 3.0, std::log(base.a) + 3.0));
+  law.m = std::exp(golden_minimum([&](double x) { return sse(x, false); },
+                                  std::log(base.m) - 3.0, std::log(base.m) + 3.0));
+  return law;
+}
+
+}  // namespace contensou
