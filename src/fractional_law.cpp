@@ -1,5 +1,6 @@
 #include "contensou/fractional_law.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <numbers>
 
@@ -24,8 +25,13 @@ void validate(const FractionalLaw<double>& p) {
 }
 
 FractionalWithJacobian fractional_resultants_with_jacobian(const FractionalLaw<double>& p,
-                                                           const Kinematics<double>& k) {
-  const double R = p.radius, e2 = p.regularization_speed * p.regularization_speed;
+                                                           const Kinematics<double>& k0) {
+  // Homogeneous of degree 0 in (v, u, eps): evaluate on scaled velocities, divide J by s.
+  const double R = p.radius;
+  const double sc = std::max({std::abs(k0.vx), std::abs(k0.vy), std::abs(k0.omega) * R,
+                              p.regularization_speed});
+  const Kinematics<double> k{k0.vx / sc, k0.vy / sc, k0.omega / sc};
+  const double e2 = (p.regularization_speed / sc) * (p.regularization_speed / sc);
   const double vx = k.vx, vy = k.vy, u = k.omega * R, U = u * u, q = vx * vx + vy * vy;
   FractionalWithJacobian out;
   Eigen::Matrix3d& J = out.jacobian;
@@ -77,17 +83,15 @@ FractionalWithJacobian fractional_resultants_with_jacobian(const FractionalLaw<d
     J(1, 1) -= hm * dH_dvy * vx;
     J(1, 2) -= hm * dH_dw * vx;
   }
-  // Cross-shift torque Mk W v / Sk2, W = vx ky - kappa vy kx.
-  const double v = std::sqrt(q + 1e-300), W = vx * p.ky - p.kappa * vy * p.kx;
-  const double Sk2 = q + p.a_k * U + e2;
-  mz += p.Mk * W * v / Sk2;
-  if (q > 0.0) {
-    J(2, 0) += p.Mk * (p.ky * v / Sk2 + W * (vx / v) / Sk2 - W * v * 2 * vx / (Sk2 * Sk2));
-    J(2, 1) += p.Mk * (-p.kappa * p.kx * v / Sk2 + W * (vy / v) / Sk2 -
-                       W * v * 2 * vy / (Sk2 * Sk2));
-  }
-  J(2, 2) += -p.Mk * W * v * 2 * p.a_k * u * R / (Sk2 * Sk2);
+  // Cross-shift torque Mk W q / Sk^3, W = vx ky - kappa vy kx.
+  const double W = vx * p.ky - p.kappa * vy * p.kx;
+  const double Sk2 = q + p.a_k * U + e2, Sk = std::sqrt(Sk2), Sk3 = Sk2 * Sk, Sk5 = Sk3 * Sk2;
+  mz += p.Mk * W * q / Sk3;
+  J(2, 0) += p.Mk * (p.ky * q / Sk3 + W * 2 * vx / Sk3 - 3 * W * q * vx / Sk5);
+  J(2, 1) += p.Mk * (-p.kappa * p.kx * q / Sk3 + W * 2 * vy / Sk3 - 3 * W * q * vy / Sk5);
+  J(2, 2) += -3 * p.Mk * W * q * p.a_k * u * R / Sk5;
   out.resultants = {Fx, Fy, mz};
+  J /= sc;
   return out;
 }
 
@@ -156,7 +160,7 @@ FractionalLaw<double> fractional_law_from_patch(const ContactPatch& patch) {
   law.kx = patch.profile.kx;
   law.ky = patch.profile.ky;
   law.kappa = patch.kappa;
-  // a_k from the exact small-sliding asymptote Mz_k -> Mk ky psi^2 / a_k (psi = v/u << 1).
+  // a_k from the exact small-sliding asymptote Mz_k -> Mk ky psi^3 / a_k^(3/2) (psi = v/u << 1).
   ContactPatch shifted = patch;
   shifted.profile.kx = 0.0;
   shifted.profile.ky = 0.1;
@@ -169,7 +173,7 @@ FractionalLaw<double> fractional_law_from_patch(const ContactPatch& patch) {
   const double psi = 1e-2;
   const double mk_unit = std::numbers::pi * shifted.friction * R * R * R * ps * A.A3;
   const double tq = exact_cross_torque(ms, mp, R, psi);
-  law.a_k = tq > 0.0 ? mk_unit * psi * psi / tq : 1.0;
+  law.a_k = tq > 0.0 ? std::pow(mk_unit * psi * psi * psi / tq, 2.0 / 3.0) : 1.0;
   return law;
 }
 

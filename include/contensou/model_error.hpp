@@ -5,6 +5,7 @@
 #include <vector>
 
 #include "contensou/contact_patch.hpp"
+#include "contensou/error.hpp"
 #include "contensou/fractional_law.hpp"
 
 namespace contensou {
