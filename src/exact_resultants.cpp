@@ -98,7 +98,7 @@ ExactModel<double> make_exact_model(const ContactPatch& patch) {
     m.friction_scale = patch.friction;
   }
   if (m.friction_scale == 0.0) m.friction_scale = 1.0;  // frictionless: tolerance scale only
-  m.inner_rule = gauss_legendre(static_cast<int>(m.chebyshev.size()) + 3);
+  update_chord_transforms(m);
   m.load_area = 2.0 * std::numbers::pi * patch.radius_m * patch.radius_m * moment(prof, 1);
   if (!(m.load_area > 0.0))
     throw InvalidArgument("profile", describe(prof), "its load integral A^1 must be positive");

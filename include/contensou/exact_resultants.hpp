@@ -5,16 +5,17 @@
 //   tau = -sigma(r) f(|vc|) diag(1, kappa) vc / |vc|,   vc = v + omega z x r.
 //
 // The integral is taken in polar coordinates (s, beta) about the instantaneous centre of
-// sliding r_c = (-vy, vx)/omega, where vc/|vc| = sign(omega) z x e(beta) depends on beta alone:
-//   F = -p* sign(omega) integral dbeta D (z x e) Q0(beta),   Q0 = integral f sigma/p* s ds,
-// and the same with x, y weights for Mz. Inner integrals along a ray are Gauss-Legendre rules
-// exact for the polynomial representation of p (or adaptive, for a Hertz edge or f(w)).
-// Outer integrals: centre inside (|v| < |omega| R): four quarters of beta, each mapped by
-// psi = b sinh(t), b = (R^2 - d^2)^(1/2)/d, which resolves the near-kink of the ray length at
-// beta - gamma = +-pi/2 when the centre approaches the rim; centre outside: the wedge of rays
-// that meet the disk, parametrised by the chord angle phi (sin theta = (R/d) sin phi, which
-// removes the square root at the tangent rays) and mapped the same way near the tangents.
-// omega = 0 (pure sliding) is in closed form.
+// sliding r_c = (-vy, vx)/omega, where vc/|vc| = sign(omega) z x e(beta) depends on beta alone.
+// Rays at beta and beta + pi make one chord and u(beta + pi) = -u(beta), so
+//   F = -p* sign(omega) integral dbeta D (z x e) integral_chord f sigma/p* (tau - tau_c) dtau
+// (and the same with weights x, y for Mz), tau the position on the chord, tau_c that of r_c.
+// With p a polynomial P in t = rho^2 (a Chebyshev fit to 1e-15, or exact), the chord integrals
+// are closed forms through two precomputed transforms of P (update_chord_transforms); only a
+// slip-speed-dependent f needs an adaptive inner rule. The outer integral over beta is adaptive
+// Gauss-Kronrod (G10K21): centre inside (|v| < |omega| R): beta - gamma in [0, pi] with a
+// breakpoint at the chord that nearly touches the rim as the centre nears it; centre outside:
+// the wedge of chords, parametrised by the chord angle phi (sin theta = (R/d) sin phi), which
+// removes the square root at the tangent rays. omega = 0 (pure sliding) is in closed form.
 #pragma once
 
 #include <array>
@@ -34,6 +35,10 @@ namespace contensou {
 
 // The integration-ready form of a ContactPatch. Build it once (make_exact_model), evaluate
 // many times: exact_resultants does no heap allocation.
+template <class T>
+struct ExactModel;
+template <class T>
+void update_chord_transforms(ExactModel<T>& m);
 template <class T = double>
 struct ExactModel {
   double radius = 0.0;  // integration radius [m] (the positive part of a clipped profile)
@@ -45,7 +50,7 @@ struct ExactModel {
   std::vector<T> chebyshev;
   bool sqrt_edge = false;
   std::optional<SlipSpeedFriction<T>> slip_speed;
-  GaussLegendreRule inner_rule;       // exact for the polynomial part along a ray
+  std::vector<T> chord_q0, chord_q2;  // chord transforms (update_chord_transforms)
   double representation_error = 0.0;  // bound on |p - representation| (dimensionless)
   double load_area = 0.0;             // N / p* = 2 pi R^2 A^1 [m^2]
   double friction_scale = 0.0;        // f, or max(f_s, f_k)
@@ -74,7 +79,8 @@ ExactModel<T> promote(const ExactModel<double>& m) {
     out.slip_speed = SlipSpeedFriction<T>{T(s.static_coefficient), T(s.kinetic_coefficient),
                                           T(s.reference_speed), T(s.exponent)};
   }
-  out.inner_rule = m.inner_rule;
+  for (double c : m.chord_q0) out.chord_q0.push_back(T(c));
+  for (double c : m.chord_q2) out.chord_q2.push_back(T(c));
   out.representation_error = m.representation_error;
   out.load_area = m.load_area;
   out.friction_scale = m.friction_scale;
@@ -97,9 +103,9 @@ struct ExactResult {
 namespace detail {
 
 // Clenshaw sum of a Chebyshev series in z = 2 t - 1.
-template <class T>
-T chebyshev_sum(const std::vector<T>& c, const T& t) {
-  const T z = 2.0 * t - 1.0;
+template <class T, class S>
+T chebyshev_sum(const std::vector<T>& c, const S& t) {
+  const S z = 2.0 * t - 1.0;
   T b1(0.0), b2(0.0);
   for (std::size_t k = c.size() - 1; k >= 1; --k) {
     const T b0 = c[k] + 2.0 * z * b1 - b2;
@@ -109,86 +115,120 @@ T chebyshev_sum(const std::vector<T>& c, const T& t) {
   return c[0] + z * b1 - b2;
 }
 
-// A ray or chord: points r = origin + tau e, tau in [tau_a, tau_b]; distance from the centre
-// of sliding s_c = s_offset + tau; the full chord through the disk is tau_mid +- half_chord.
+// A chord of the disk through the centre of sliding: points r = foot + tau e, tau in
+// [-h, h], the centre of sliding at tau_c. foot is the point of the chord nearest to O.
 template <class T>
 struct Chord {
-  T ox, oy, ex, ey;
-  T tau_a, tau_b, s_offset, tau_mid, half_chord;
-  double theta_a, theta_b;  // chord-angle range (values) for the adaptive inner rule
-  T theta_a_t;              // theta_a with derivatives (interior rays)
+  T fx, fy;    // foot
+  T ex, ey;    // unit direction
+  T h;         // half-length [m]
+  T tau_c;     // position of r_c on the chord [m]
+  T t_foot;    // |foot|^2 / R^2
 };
 
-template <class T>
-using Moments3 = std::array<T, 3>;  // integral sigma s_c ds, with weights 1, x, y
+}  // namespace detail
 
+// Recomputes the chord transforms Q0, Q2 of the model's profile polynomial:
+//   integral_{-h}^{h} p(t_f + w^2) {1, w^2} dw = {h^(1+e) Q0(t_f), h^(3+e) Q2(t_f)},
+// h = (1 - t_f)^(1/2), e = 1 with a Hertz edge (p = sqrt(1 - t) P(t)), else 0. Q0 and Q2 are
+// polynomials of the same degree as P; they are stored as Chebyshev series in t_f. Call after
+// changing `chebyshev` (make_exact_model does).
 template <class T>
-Moments3<T> chord_moments(const ExactModel<T>& m, const Chord<T>& c, const T& abs_omega,
-                          std::array<double, 3>& inner_error, const std::array<double, 3>& tol) {
+void update_chord_transforms(ExactModel<T>& m) {
+  const std::size_t deg = m.chebyshev.size() - 1, n = deg + 1;
+  // Rule in u on [-1, 1] exact for degree 2 deg + 2: Gauss-Legendre, or Gauss-Chebyshev of
+  // the second kind (weight sqrt(1 - u^2)) for a Hertz edge.
+  std::vector<double> un, uw;
+  const std::size_t nq = deg + 2;
+  if (m.sqrt_edge) {
+    for (std::size_t i = 1; i <= nq; ++i) {
+      const double a = std::numbers::pi * static_cast<double>(i) / static_cast<double>(nq + 1);
+      un.push_back(std::cos(a));
+      uw.push_back(std::numbers::pi / static_cast<double>(nq + 1) * std::sin(a) * std::sin(a));
+    }
+  } else {
+    const GaussLegendreRule g = gauss_legendre(static_cast<int>(nq));
+    un = g.nodes;
+    uw = g.weights;
+  }
+  std::vector<T> q0(n, T(0.0)), q2(n, T(0.0));
+  for (std::size_t j = 0; j < n; ++j) {
+    // Chebyshev points in t_f and the transforms there (h^2 = 1 - t_f).
+    const double zj = std::cos(std::numbers::pi * (static_cast<double>(j) + 0.5) /
+                               static_cast<double>(n));
+    const double tf = 0.5 * (1.0 + zj), h2 = 1.0 - tf;
+    T s0(0.0), s2(0.0);
+    for (std::size_t i = 0; i < un.size(); ++i) {
+      const T p = detail::chebyshev_sum(m.chebyshev, tf + h2 * un[i] * un[i]);
+      s0 += uw[i] * p;
+      s2 += (uw[i] * un[i] * un[i]) * p;
+    }
+    for (std::size_t k = 0; k < n; ++k) {
+      const double ck = (k == 0 ? 1.0 : 2.0) / static_cast<double>(n) *
+                        std::cos(std::numbers::pi * static_cast<double>(k) *
+                                 (static_cast<double>(j) + 0.5) / static_cast<double>(n));
+      q0[k] += ck * s0;
+      q2[k] += ck * s2;
+    }
+  }
+  m.chord_q0 = std::move(q0);
+  m.chord_q2 = std::move(q2);
+}
+
+namespace detail {
+
+// Moments of a chord: integral sigma (tau - tau_c) {1, x, y} dtau (times f(w) if the
+// friction depends on the slip speed w = |omega| |tau - tau_c|).
+template <class T>
+std::array<T, 3> chord_moments(const ExactModel<T>& m, const Chord<T>& c, const T& abs_omega,
+                               std::array<double, 3>& inner_error,
+                               const std::array<double, 3>& tol) {
   using std::cos;
   using std::sin;
   const double R = m.radius;
-  Moments3<T> I{T(0.0), T(0.0), T(0.0)};
   inner_error = {0.0, 0.0, 0.0};
-  if (!m.sqrt_edge && !m.slip_speed) {
-    // Exact: sigma s_c x is a polynomial in tau of degree <= 2 deg(P) + 3. The Clenshaw
-    // recurrence runs across a block of nodes at once: independent chains that vectorise.
-    constexpr std::size_t kBlock = 32;
-    const T mid = 0.5 * (c.tau_a + c.tau_b), half = 0.5 * (c.tau_b - c.tau_a);
-    const std::size_t n = m.inner_rule.nodes.size(), deg = m.chebyshev.size() - 1;
-    const T* cheb = m.chebyshev.data();
-    for (std::size_t start = 0; start < n; start += kBlock) {
-      const std::size_t len = std::min(kBlock, n - start);
-      std::array<T, kBlock> x, y, z, b1, b2;
-      for (std::size_t i = 0; i < len; ++i) {
-        const T tau = mid + half * m.inner_rule.nodes[start + i];
-        x[i] = c.ox + tau * c.ex;
-        y[i] = c.oy + tau * c.ey;
-        z[i] = 2.0 * (x[i] * x[i] + y[i] * y[i]) / (R * R) - 1.0;
-        b1[i] = T(0.0);
-        b2[i] = T(0.0);
-      }
-      for (std::size_t kk = deg; kk >= 1; --kk) {
-        for (std::size_t i = 0; i < len; ++i) {
-          const T b0 = cheb[kk] + 2.0 * z[i] * b1[i] - b2[i];
-          b2[i] = b1[i];
-          b1[i] = b0;
-        }
-      }
-      for (std::size_t i = 0; i < len; ++i) {
-        const double xi = m.inner_rule.nodes[start + i];
-        const T sigma = (cheb[0] + z[i] * b1[i] - b2[i]) * (1.0 + (m.kx * x[i] + m.ky * y[i]) / R);
-        const T v = (half * m.inner_rule.weights[start + i]) * sigma * (c.s_offset + mid + half * xi);
-        I[0] += v;
-        I[1] += v * x[i];
-        I[2] += v * y[i];
-      }
+  const T A = 1.0 + (m.kx * c.fx + m.ky * c.fy) / R;  // shift factor at the foot
+  const T B = m.kx * c.ex + m.ky * c.ey;              // its slope per unit w = tau / R
+  if (!m.slip_speed) {
+    // Closed form through the chord transforms (odd powers of w integrate to zero):
+    // sigma (tau - tau_c) = R p (A + B w)(w - w_c), x = fx + R ex w.
+    const T hp = c.h / R, wc = c.tau_c / R;
+    const T hp2 = hp * hp;
+    T M0 = hp * chebyshev_sum(m.chord_q0, c.t_foot);
+    T M2 = hp * hp2 * chebyshev_sum(m.chord_q2, c.t_foot);
+    if (m.sqrt_edge) {
+      M0 *= hp;
+      M2 *= hp;
     }
-    return I;
+    const T R2 = T(R * R);
+    const T odd = A - B * wc;  // coefficient of w in (A + B w)(w - w_c)
+    return {R2 * (B * M2 - A * wc * M0),
+            R2 * ((odd * R * c.ex + B * c.fx) * M2 - A * wc * c.fx * M0),
+            R2 * ((odd * R * c.ey + B * c.fy) * M2 - A * wc * c.fy * M0)};
   }
-  // Chord angle: tau = tau_mid + h sin(vartheta), so R^2 - |r|^2 = h^2 cos^2(vartheta).
-  // vartheta = theta_a + (pi/2 ... ) mapped from xi in [0, 1] so that limits carry derivatives.
-  const T th_a = c.theta_a_t;
-  const T th_span = T(c.theta_b) - th_a;
-  const T h = c.half_chord;
-  auto f = [&](double xi, int) {
+  // f(w) depends on the slip speed: adaptive rule in the chord angle, tau = h sin(theta)
+  // (so R^2 - |r|^2 = h^2 cos^2(theta)), split at the centre of sliding (a kink of |tau - tau_c|).
+  const double ratio = std::clamp(value_of(c.tau_c) / std::max(value_of(c.h), 1e-300), -1.0, 1.0);
+  const double th_c = std::asin(ratio);
+  auto f = [&](double th, int) {
     Sample<T, 3> out;
-    const T th = th_a + th_span * xi;
-    const T cs = cos(th);
-    const T tau = c.tau_mid + h * sin(th);
-    const T x = c.ox + tau * c.ex, y = c.oy + tau * c.ey;
-    const T edge = h * cs / R;  // sqrt(1 - t)
-    const T t = 1.0 - edge * edge;
-    T p = chebyshev_sum(m.chebyshev, t);
+    const double cs = std::cos(th);
+    const T tau = c.h * std::sin(th);
+    const T x = c.fx + tau * c.ex, y = c.fy + tau * c.ey;
+    const T edge = c.h * cs / R;  // sqrt(1 - t)
+    T p = chebyshev_sum(m.chebyshev, 1.0 - edge * edge);
     if (m.sqrt_edge) p *= edge;
-    const T sc = c.s_offset + tau;
-    T v = p * (1.0 + (m.kx * x + m.ky * y) / R) * sc * (h * cs) * th_span;
-    if (m.slip_speed) v *= friction_at(*m.slip_speed, abs_omega * sc);
+    const T arm = tau - c.tau_c;
+    const T w = abs_omega * (value_of(arm) < 0.0 ? -arm : arm);
+    const T v = p * (A + B * (tau / R)) * arm * friction_at(*m.slip_speed, w) * (c.h * cs);
     out.value = {v, v * x, v * y};
     return out;
   };
-  const TaggedInterval whole{0.0, 1.0, 0};
-  const auto r = integrate_adaptive<T, 3, 48>(f, &whole, 1, tol);
+  const TaggedInterval parts[2] = {{-0.5 * std::numbers::pi, th_c, 0},
+                                   {th_c, 0.5 * std::numbers::pi, 1}};
+  const int first = th_c > -0.5 * std::numbers::pi ? 0 : 1;
+  const int count = (th_c < 0.5 * std::numbers::pi ? 2 : 1) - first;
+  const auto r = integrate_adaptive<T, 3, 48>(f, parts + first, count, tol);
   inner_error = r.error;
   return r.value;
 }
@@ -198,7 +238,7 @@ template <class T>
 std::array<T, 2> representation_moments(const ExactModel<T>& m) {
   // t = rho^2; with a sqrt edge substitute t = 1 - u^2 (dt = 2u du) to keep it polynomial.
   std::array<T, 2> a{T(0.0), T(0.0)};
-  const auto& g = m.inner_rule;
+  const GaussLegendreRule g = gauss_legendre(static_cast<int>(m.chebyshev.size()) + 3);
   for (std::size_t i = 0; i < g.nodes.size(); ++i) {
     const double x = 0.5 * (1.0 + g.nodes[i]), w = 0.5 * g.weights[i];
     double t = x, jac = 1.0;
@@ -206,7 +246,7 @@ std::array<T, 2> representation_moments(const ExactModel<T>& m) {
       t = 1.0 - x * x;
       jac = 2.0 * x * x;  // sqrt(1 - t) = u, dt = 2 u du
     }
-    const T p = chebyshev_sum(m.chebyshev, T(t)) * (w * jac);
+    const T p = chebyshev_sum(m.chebyshev, t) * (w * jac);
     a[0] += 0.5 * p;
     a[1] += 0.5 * p * t;
   }
@@ -220,13 +260,6 @@ std::array<T, 2> representation_moments(const ExactModel<T>& m) {
 template <class T>
 ExactResult<T> exact_resultants(const ExactModel<T>& m, const Kinematics<T>& k,
                                 const ExactOptions& options = {}) {
-  using std::abs;
-  using std::asinh;
-  using std::atan2;
-  using std::cos;
-  using std::cosh;
-  using std::sin;
-  using std::sinh;
   using std::sqrt;
   detail::require_finite("vx", value_of(k.vx));
   detail::require_finite("vy", value_of(k.vy));
@@ -278,11 +311,11 @@ ExactResult<T> exact_resultants(const ExactModel<T>& m, const Kinematics<T>& k,
   // Tolerances in integrand units (the factor -f p* is applied at the end).
   const double unit = tol * m.load_area * (m.slip_speed ? fscale : 1.0);
   const std::array<double, 3> tol_out{unit, unit, unit * R};
-  // Inner integrals are summed over at most 2 pi of beta: keep their share small.
-  const double share = 1.0 / (40.0 * std::numbers::pi);
+  // Inner integrals are summed over at most pi of beta: keep their share small.
+  const double share = 1.0 / (20.0 * std::numbers::pi);
   const std::array<double, 3> tol_inner{unit * share, unit * share * R, unit * share * R};
 
-  auto ray_contribution = [&](const detail::Chord<T>& ch, const T& jac) {
+  auto chord_contribution = [&](const detail::Chord<T>& ch, const T& jac) {
     detail::Sample<T, 3> s;
     std::array<double, 3> ie{};
     const auto I = detail::chord_moments(m, ch, abs_omega, ie, tol_inner);
@@ -296,85 +329,49 @@ ExactResult<T> exact_resultants(const ExactModel<T>& m, const Kinematics<T>& k,
 
   detail::AdaptiveResult<T, 3> res;
   if (dv < R) {
-    // Interior centre: rays from r_c, theta = beta - gamma in four quarters about +-pi/2.
+    // Interior centre: the rays at beta and beta + pi form one chord, so
+    // F = integral_0^pi dbeta u(beta) integral_chord sigma (tau - tau_c) dtau, theta = beta - gamma.
+    // The chord through r_c nearly touches the rim at theta = pi/2 when r_c nears the rim
+    // (half-length (R^2 - d^2 + d^2 cos^2 theta)^(1/2)): a breakpoint there, then bisection.
     const T delta2 = (R - d) * (R + d);
-    const T delta = sqrt(delta2);
-    const double b = dv > 0.0 ? value_of(delta) / dv : 2.0;
-    const bool mapped = b < 1.0;
-    const double t_end = mapped ? std::asinh(0.5 * std::numbers::pi / b) : 0.5 * std::numbers::pi;
-    auto f = [&](double t, int quarter) {
-      double ct, st, jpsi = 1.0;
-      if (quarter >= 4) {  // plain theta = pi/2 + t
-        ct = -std::sin(t);
-        st = std::cos(t);
-      } else {
-        const double psi = mapped ? b * std::sinh(t) : t;
-        jpsi = mapped ? b * std::cosh(t) : 1.0;
-        const double sp = std::sin(psi), cp = std::cos(psi);
-        // (cos theta, sin theta) for theta = pi/2 -+ psi, 3pi/2 -+ psi.
-        ct = (quarter == 0 || quarter == 3) ? sp : -sp;
-        st = (quarter <= 1) ? cp : -cp;
-      }
+    auto f = [&](double theta, int) {
+      const double ct = std::cos(theta), st = std::sin(theta);
       detail::Chord<T> ch;
-      ch.ox = rcx;
-      ch.oy = rcy;
       ch.ex = ct * gx - st * gy;
       ch.ey = ct * gy + st * gx;
-      const T dc = d * ct;
-      const T h = sqrt(delta2 + dc * dc);
-      ch.tau_a = T(0.0);
-      ch.tau_b = ct > 0.0 ? delta2 / (h + dc) : h - dc;
-      ch.s_offset = T(0.0);
-      ch.tau_mid = -dc;
-      ch.half_chord = h;
-      if (m.sqrt_edge || m.slip_speed) {
-        ch.theta_a_t = atan2(dc, delta);
-        ch.theta_a = value_of(ch.theta_a_t);
-      }
-      ch.theta_b = 0.5 * std::numbers::pi;
-      return ray_contribution(ch, T(jpsi));
+      const T dc = d * ct, ds = d * st;
+      ch.tau_c = dc;             // r_c = foot + (d cos theta) e
+      ch.fx = rcx - dc * ch.ex;  // foot, at distance d |sin theta| from O
+      ch.fy = rcy - dc * ch.ey;
+      ch.h = sqrt(delta2 + dc * dc);
+      ch.t_foot = ds * ds / (R * R);
+      return chord_contribution(ch, T(1.0));
     };
-    if (mapped) {
-      const detail::TaggedInterval q[4] = {
-          {0.0, t_end, 0}, {0.0, t_end, 1}, {0.0, t_end, 2}, {0.0, t_end, 3}};
-      res = detail::integrate_adaptive<T, 3>(f, q, 4, tol_out);
-    } else {
-      // No near-kink: two halves theta in [0, pi], [pi, 2 pi] (tags 4, 5 -> theta = pi/2 + x).
-      const detail::TaggedInterval q[2] = {{-0.5 * std::numbers::pi, 0.5 * std::numbers::pi, 4},
-                                           {0.5 * std::numbers::pi, 1.5 * std::numbers::pi, 5}};
-      res = detail::integrate_adaptive<T, 3>(f, q, 2, tol_out);
-    }
+    const double half_pi = 0.5 * std::numbers::pi;
+    const detail::TaggedInterval q[2] = {{0.0, half_pi, 0}, {half_pi, std::numbers::pi, 0}};
+    res = detail::integrate_adaptive<T, 3>(f, q, 2, tol_out);
   } else {
-    // Exterior centre: chords of the wedge, phi = +-(pi/2 - psi), sin theta = (R/d) sin phi.
+    // Exterior centre: the wedge of chords through r_c, parametrised by the chord angle phi in
+    // [-pi/2, pi/2] (sin theta = (R/d) sin phi), which removes the square root of the chord
+    // length at the tangent rays; dtheta/dphi = R cos phi / (d cos theta).
     const T eps2 = (d - R) * (d + R);
-    const double b = std::max(std::sqrt(std::max(value_of(eps2), 0.0)) / R, 1e-7);
-    const bool mapped = b < 1.0;
-    const double t_end = mapped ? std::asinh(0.5 * std::numbers::pi / b) : 0.5 * std::numbers::pi;
-    auto f = [&](double t, int half) {
-      const double psi = mapped ? b * std::sinh(t) : t;
-      const double jpsi = mapped ? b * std::cosh(t) : 1.0;
-      const double cphi = std::sin(psi), sphi = half == 0 ? std::cos(psi) : -std::cos(psi);
+    auto f = [&](double phi, int) {
+      const double cphi = std::cos(phi), sphi = std::sin(phi);
       const T s_off = sqrt(eps2 + (R * cphi) * (R * cphi));  // d cos theta
       const T ct = s_off / d, st = (R / d) * sphi;
       // e = cos theta u0 + sin theta (z x u0), u0 = -g.
       detail::Chord<T> ch;
       ch.ex = -ct * gx + st * gy;
       ch.ey = -ct * gy - st * gx;
-      ch.ox = -(R * sphi) * ch.ey;  // foot of the perpendicular: (R sin phi) z x e
-      ch.oy = (R * sphi) * ch.ex;
-      const double hc = R * cphi;
-      ch.tau_a = T(-hc);
-      ch.tau_b = T(hc);
-      ch.s_offset = s_off;
-      ch.tau_mid = T(0.0);
-      ch.half_chord = T(hc);
-      ch.theta_a = -0.5 * std::numbers::pi;
-      ch.theta_a_t = T(ch.theta_a);
-      ch.theta_b = 0.5 * std::numbers::pi;
-      const T jac = (R * cphi) / s_off * jpsi;  // dtheta/dphi * dpsi/dt
-      return ray_contribution(ch, jac);
+      ch.fx = -(R * sphi) * ch.ey;  // foot of the perpendicular: (R sin phi) z x e
+      ch.fy = (R * sphi) * ch.ex;
+      ch.h = T(R * cphi);
+      ch.tau_c = -s_off;
+      ch.t_foot = T(sphi * sphi);
+      return chord_contribution(ch, (R * cphi) / s_off);
     };
-    const detail::TaggedInterval q[2] = {{0.0, t_end, 0}, {0.0, t_end, 1}};
+    const double half_pi = 0.5 * std::numbers::pi;
+    const detail::TaggedInterval q[2] = {{-half_pi, 0.0, 0}, {0.0, half_pi, 0}};
     res = detail::integrate_adaptive<T, 3>(f, q, 2, tol_out);
   }
   const T factor = -(m.slip_speed ? T(1.0) : m.friction) * m.pressure;

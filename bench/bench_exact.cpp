@@ -1,0 +1,190 @@
+// Exact resultants against a general-purpose baseline, and the fractional law.
+//
+// Baseline: libcubature's hcubature (h-adaptive, genz-malik) on the plain (r, theta)
+// parametrisation of the disk, at the same tolerance, capped at kBaselineMaxEval integrand
+// evaluations. Both report the error actually achieved against a reference computed by
+// contensou at 1e-13. After the run a table of medians and ratios is printed.
+#include <benchmark/benchmark.h>
+#include <cubature.h>
+
+#include <cmath>
+#include <cstdio>
+#include <map>
+#include <numbers>
+#include <string>
+
+#include "contensou/contensou.hpp"
+
+using namespace contensou;
+
+namespace {
+
+constexpr std::size_t kBaselineMaxEval = 2'000'000;
+
+struct Regime {
+  const char* name;
+  double ratio;  // |v| / (|omega| R): < 1 centre inside, > 1 outside
+};
+constexpr Regime kRegimes[] = {{"inside", 0.5},        {"rim_inside", 0.999}, {"rim", 1.0},
+                               {"rim_outside", 1.001}, {"outside", 2.0},      {"far", 100.0}};
+
+ContactPatch seed_patch() {
+  ContactPatch p;
+  p.radius_m = 0.087;
+  p.reference_pressure_pa = 2.1e5;
+  p.friction = 0.3;
+  p.profile = seed_tire_profile();
+  p.profile.kx = 0.14;
+  return p;
+}
+
+Kinematics<double> kinematics(double ratio, double R) {
+  const double w = 20.0, v = ratio * w * R;  // sliding at 35 degrees
+  return {v * std::cos(0.61), v * std::sin(0.61), w};
+}
+
+struct Data {
+  ContactPatch patch = seed_patch();
+  ExactModel<double> model = make_exact_model(patch);
+  double fN = patch.friction * normal_load(patch);
+};
+const Data& data() {
+  static const Data d;
+  return d;
+}
+
+double achieved(const Resultants<double>& r, const Resultants<double>& ref, double fN, double R) {
+  return std::max({std::abs(r.Fx - ref.Fx) / fN, std::abs(r.Fy - ref.Fy) / fN,
+                   std::abs(r.Mz - ref.Mz) / (fN * R)});
+}
+
+void BM_Exact(benchmark::State& state, Regime regime, double tol) {
+  const Data& d = data();
+  const Kinematics<double> k = kinematics(regime.ratio, d.patch.radius_m);
+  const auto ref = exact_resultants(d.model, k, {1e-13}).resultants;
+  ExactResult<double> r;
+  for (auto _ : state) {
+    r = exact_resultants(d.model, k, {tol});
+    benchmark::DoNotOptimize(r);
+  }
+  state.counters["evals"] = r.evaluations;
+  state.counters["achieved"] = achieved(r.resultants, ref, d.fN, d.patch.radius_m);
+  state.counters["estimate"] = std::max(r.error.Fx, r.error.Fy) / d.fN;
+}
+
+struct BaselineData {
+  const ContactPatch* patch;
+  Kinematics<double> k;
+  std::size_t evals = 0;
+};
+
+int baseline_integrand(unsigned, const double* x, void* p, unsigned, double* f) {
+  auto* b = static_cast<BaselineData*>(p);
+  const ContactPatch& c = *b->patch;
+  const double R = c.radius_m, r = x[0], th = x[1];
+  const double px = r * std::cos(th), py = r * std::sin(th);
+  const double sigma = c.reference_pressure_pa * shape_value(c.profile, r / R) *
+                       (1 + c.profile.kx * px / R + c.profile.ky * py / R);
+  const double cx = b->k.vx - b->k.omega * py, cy = b->k.vy + b->k.omega * px;
+  const double w = std::hypot(cx, cy);
+  ++b->evals;
+  if (w == 0.0) {
+    f[0] = f[1] = f[2] = 0.0;
+    return 0;
+  }
+  const double tx = -c.friction * sigma * cx / w, ty = -c.friction * c.kappa * sigma * cy / w;
+  f[0] = tx * r;
+  f[1] = ty * r;
+  f[2] = (px * ty - py * tx) * r;
+  return 0;
+}
+
+void BM_Baseline(benchmark::State& state, Regime regime, double tol) {
+  const Data& d = data();
+  const double R = d.patch.radius_m;
+  BaselineData b{&d.patch, kinematics(regime.ratio, R)};
+  const auto ref = exact_resultants(d.model, b.k, {1e-13}).resultants;
+  const double lo[2] = {0.0, 0.0}, hi[2] = {R, 2 * std::numbers::pi};
+  double val[3], err[3];
+  for (auto _ : state) {
+    b.evals = 0;
+    hcubature(3, baseline_integrand, &b, 2, lo, hi, kBaselineMaxEval, tol * d.fN * R, 0.0,
+              ERROR_INDIVIDUAL, val, err);
+    benchmark::DoNotOptimize(val);
+  }
+  state.counters["evals"] = double(b.evals);
+  state.counters["achieved"] = achieved({val[0], val[1], val[2]}, ref, d.fN, R);
+  state.counters["estimate"] = std::max(err[0], err[1]) / d.fN;
+}
+
+void BM_Fractional(benchmark::State& state) {
+  const FractionalLaw<double> law = fractional_law_from_patch(data().patch);
+  Kinematics<double> k{1.3, 0.4, 25.0};
+  for (auto _ : state) {
+    benchmark::DoNotOptimize(k);
+    benchmark::DoNotOptimize(fractional_resultants(law, k));
+  }
+}
+
+void BM_FractionalWithJacobian(benchmark::State& state) {
+  const FractionalLaw<double> law = fractional_law_from_patch(data().patch);
+  Kinematics<double> k{1.3, 0.4, 25.0};
+  for (auto _ : state) {
+    benchmark::DoNotOptimize(k);
+    benchmark::DoNotOptimize(fractional_resultants_with_jacobian(law, k));
+  }
+}
+
+// Collects the runs so that main can print ratios against the baseline.
+class TableReporter : public benchmark::ConsoleReporter {
+ public:
+  std::map<std::string, Run> runs;
+  void ReportRuns(const std::vector<Run>& report) override {
+    for (const Run& r : report) {
+      std::string name = r.benchmark_name();
+      const auto it = name.find("/iterations:");
+      if (it != std::string::npos) name.erase(it);
+      runs[name] = r;
+    }
+    ConsoleReporter::ReportRuns(report);
+  }
+};
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  for (double tol : {1e-6, 1e-10}) {
+    for (const Regime& r : kRegimes) {
+      const std::string suffix = std::string(r.name) + "/tol:" + (tol > 1e-8 ? "1e-6" : "1e-10");
+      benchmark::RegisterBenchmark(("exact/" + suffix).c_str(), BM_Exact, r, tol)
+          ->Unit(benchmark::kMicrosecond);
+      benchmark::RegisterBenchmark(("hcubature/" + suffix).c_str(), BM_Baseline, r, tol)
+          ->Unit(benchmark::kMillisecond)
+          ->Iterations(tol > 1e-8 ? 20 : 2);
+    }
+  }
+  benchmark::RegisterBenchmark("fractional", BM_Fractional)->Unit(benchmark::kNanosecond);
+  benchmark::RegisterBenchmark("fractional+jacobian", BM_FractionalWithJacobian)
+      ->Unit(benchmark::kNanosecond);
+  benchmark::Initialize(&argc, argv);
+  TableReporter reporter;
+  benchmark::RunSpecifiedBenchmarks(&reporter);
+  std::printf("\n| regime | tol | contensou [us] | rays | achieved | hcubature [ms] | evals | "
+              "achieved | speed-up |\n|---|---|---|---|---|---|---|---|---|\n");
+  for (const auto& [name, run] : reporter.runs) {
+    if (name.rfind("exact/", 0) != 0) continue;
+    const std::string rest = name.substr(6);
+    const auto it = reporter.runs.find("hcubature/" + rest);
+    if (it == reporter.runs.end()) continue;
+    const double ours = run.GetAdjustedRealTime() * 1e-6;          // us -> s
+    const double base = it->second.GetAdjustedRealTime() * 1e-3;   // ms -> s
+    const auto slash = rest.find('/');
+    std::printf("| %s | %s | %.1f | %.0f | %.1e | %.1f | %.0f | %.1e | %.0fx |\n",
+                rest.substr(0, slash).c_str(), rest.substr(slash + 5).c_str(), ours * 1e6,
+                run.counters.at("evals").value, run.counters.at("achieved").value, base * 1e3,
+                it->second.counters.at("evals").value, it->second.counters.at("achieved").value,
+                base / ours);
+  }
+  benchmark::Shutdown();
+  return 0;
+}
