@@ -169,15 +169,16 @@ int main(int argc, char** argv) {
   benchmark::Initialize(&argc, argv);
   TableReporter reporter;
   benchmark::RunSpecifiedBenchmarks(&reporter);
-  std::printf("\n| regime | tol | contensou [us] | rays | achieved | hcubature [ms] | evals | "
-              "achieved | speed-up |\n|---|---|---|---|---|---|---|---|---|\n");
+  std::printf(
+      "\n| regime | tol | contensou [us] | rays | achieved | hcubature [ms] | evals | "
+      "achieved | speed-up |\n|---|---|---|---|---|---|---|---|---|\n");
   for (const auto& [name, run] : reporter.runs) {
     if (name.rfind("exact/", 0) != 0) continue;
     const std::string rest = name.substr(6);
     const auto it = reporter.runs.find("hcubature/" + rest);
     if (it == reporter.runs.end()) continue;
-    const double ours = run.GetAdjustedRealTime() * 1e-6;          // us -> s
-    const double base = it->second.GetAdjustedRealTime() * 1e-3;   // ms -> s
+    const double ours = run.GetAdjustedRealTime() * 1e-6;         // us -> s
+    const double base = it->second.GetAdjustedRealTime() * 1e-3;  // ms -> s
     const auto slash = rest.find('/');
     std::printf("| %s | %s | %.1f | %.0f | %.1e | %.1f | %.0f | %.1e | %.0fx |\n",
                 rest.substr(0, slash).c_str(), rest.substr(slash + 5).c_str(), ours * 1e6,

@@ -8,8 +8,8 @@ namespace contensou {
 
 double normal_load(const ContactPatch& patch) {
   validate(patch);
-  return 2.0 * std::numbers::pi * patch.radius_m * patch.radius_m *
-         patch.reference_pressure_pa * moment(patch.profile, 1);
+  return 2.0 * std::numbers::pi * patch.radius_m * patch.radius_m * patch.reference_pressure_pa *
+         moment(patch.profile, 1);
 }
 
 void validate(const ContactPatch& patch) {

@@ -29,8 +29,8 @@ std::vector<Field> split(const std::string& line) {
   std::size_t start = 0;
   while (true) {
     const std::size_t comma = line.find(',', start);
-    const std::string raw = line.substr(start, comma == std::string::npos ? std::string::npos
-                                                                           : comma - start);
+    const std::string raw =
+        line.substr(start, comma == std::string::npos ? std::string::npos : comma - start);
     std::size_t lead = 0;
     std::string t = trim(raw, &lead);
     out.push_back({t, static_cast<int>(start + lead + 1)});
@@ -39,7 +39,6 @@ std::vector<Field> split(const std::string& line) {
   }
   return out;
 }
-
 
 }  // namespace
 
@@ -66,7 +65,8 @@ CsvTable parse_csv(const std::string& text, const std::string& name) {
       for (const Field& f : fields) {
         if (f.text.empty()) throw ParseError(name, lineno, f.column, "empty column name in header");
         for (const std::string& h : table.header)
-          if (h == f.text) throw ParseError(name, lineno, f.column, "duplicate column '" + f.text + "'");
+          if (h == f.text)
+            throw ParseError(name, lineno, f.column, "duplicate column '" + f.text + "'");
         table.header.push_back(f.text);
       }
       continue;

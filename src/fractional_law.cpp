@@ -27,71 +27,78 @@ void validate(const FractionalLaw<double>& p) {
 FractionalWithJacobian fractional_resultants_with_jacobian(const FractionalLaw<double>& p,
                                                            const Kinematics<double>& k0) {
   // Homogeneous of degree 0 in (v, u, eps): evaluate on scaled velocities, divide J by s.
+  // One reciprocal per square root; everything else is multiplication.
   const double R = p.radius;
   const double sc = std::max({std::abs(k0.vx), std::abs(k0.vy), std::abs(k0.omega) * R,
                               p.regularization_speed});
-  const Kinematics<double> k{k0.vx / sc, k0.vy / sc, k0.omega / sc};
-  const double e2 = (p.regularization_speed / sc) * (p.regularization_speed / sc);
-  const double vx = k.vx, vy = k.vy, u = k.omega * R, U = u * u, q = vx * vx + vy * vy;
+  const double isc = 1.0 / sc;
+  const double vx = k0.vx * isc, vy = k0.vy * isc, u = k0.omega * R * isc;
+  const double e = p.regularization_speed * isc, e2 = e * e;
+  const double U = u * u, q = vx * vx + vy * vy;
   FractionalWithJacobian out;
   Eigen::Matrix3d& J = out.jacobian;
-  J.setZero();
   // Sliding force -F0 (vx, kappa vy) / Sa.
-  const double Sa2 = q + p.a * U + e2, Sa = std::sqrt(Sa2), Sa3 = Sa2 * Sa;
-  const double fx = -p.F0 * vx / Sa, fy = -p.F0 * p.kappa * vy / Sa;
-  J(0, 0) = -p.F0 * (1.0 / Sa - vx * vx / Sa3);
-  J(0, 1) = p.F0 * vx * vy / Sa3;
-  J(1, 0) = p.F0 * p.kappa * vx * vy / Sa3;
-  J(1, 1) = -p.F0 * p.kappa * (1.0 / Sa - vy * vy / Sa3);
-  J(0, 2) = p.F0 * vx * p.a * u * R / Sa3;
-  J(1, 2) = p.F0 * p.kappa * vy * p.a * u * R / Sa3;
+  const double iSa = 1.0 / std::sqrt(q + p.a * U + e2), iSa3 = iSa * iSa * iSa;
+  const double F0k = p.F0 * p.kappa;
+  double Fx = -p.F0 * vx * iSa, Fy = -F0k * vy * iSa;
+  J(0, 0) = -p.F0 * (iSa - vx * vx * iSa3);
+  J(0, 1) = p.F0 * vx * vy * iSa3;
+  J(1, 0) = F0k * vx * vy * iSa3;
+  J(1, 1) = -F0k * (iSa - vy * vy * iSa3);
+  J(0, 2) = p.F0 * vx * p.a * u * R * iSa3;
+  J(1, 2) = F0k * vy * p.a * u * R * iSa3;
   // Spin torque -M0 (1 + kappa)/2 u / Sm.
-  const double ks = 0.5 * (1.0 + p.kappa);
-  const double Sm2 = U + p.m * q + e2, Sm = std::sqrt(Sm2), Sm3 = Sm2 * Sm;
-  double mz = -p.M0 * ks * u / Sm;
-  J(2, 0) = p.M0 * ks * u * p.m * vx / Sm3;
-  J(2, 1) = p.M0 * ks * u * p.m * vy / Sm3;
-  J(2, 2) = -p.M0 * ks * R * (p.m * q + e2) / Sm3;
-  // Shift forces -(M0/2R) [g2 (z x k) + (g1 - g2) (k.v)(z x v)/q].
-  const double hm = p.M0 / (2.0 * R);
-  const double S12 = U + 0.25 * p.m * q + e2, S1 = std::sqrt(S12), S13 = S12 * S1;
-  const double S22 = U + p.c * q + e2, S2 = std::sqrt(S22), S25 = S22 * S22 * S2;
-  const double g1 = u / S1, g2 = U * u / (S22 * S2);
-  const double dg1_dq = -0.125 * p.m * u / S13;  // d g1 / d(q), q = v^2
-  const double dg1_du = (0.25 * p.m * q + e2) / S13;
-  const double dg2_dq = -1.5 * p.c * U * u / S25;
-  const double dg2_du = 3.0 * U * (p.c * q + e2) / S25;
-  double Fx = fx + hm * g2 * p.ky, Fy = fy - hm * g2 * p.kx;
-  for (int j = 0; j < 3; ++j) {
-    const double dg2 = j == 0 ? 2 * vx * dg2_dq : j == 1 ? 2 * vy * dg2_dq : R * dg2_du;
-    J(0, j) += hm * dg2 * p.ky;
-    J(1, j) -= hm * dg2 * p.kx;
+  const double Mks = p.M0 * 0.5 * (1.0 + p.kappa);
+  const double iSm = 1.0 / std::sqrt(U + p.m * q + e2), iSm3 = iSm * iSm * iSm;
+  double Mz = -Mks * u * iSm;
+  J(2, 0) = Mks * u * p.m * vx * iSm3;
+  J(2, 1) = Mks * u * p.m * vy * iSm3;
+  J(2, 2) = -Mks * R * (p.m * q + e2) * iSm3;
+  if (p.kx != 0.0 || p.ky != 0.0) {
+    // Shift forces -(M0/2R) [g2 (z x k) + (g1 - g2) (k.v)(z x v)/q].
+    const double hm = p.M0 / (2.0 * R);
+    const double iS1 = 1.0 / std::sqrt(U + 0.25 * p.m * q + e2), iS13 = iS1 * iS1 * iS1;
+    const double iS2 = 1.0 / std::sqrt(U + p.c * q + e2), iS23 = iS2 * iS2 * iS2;
+    const double iS25 = iS23 * iS2 * iS2;
+    const double g1 = u * iS1, g2 = U * u * iS23;
+    const double dg1_dq = -0.125 * p.m * u * iS13;  // d g1 / d(q), q = v^2
+    const double dg1_du = (0.25 * p.m * q + e2) * iS13;
+    const double dg2_dq = -1.5 * p.c * U * u * iS25;
+    const double dg2_du = 3.0 * U * (p.c * q + e2) * iS25;
+    Fx += hm * g2 * p.ky;
+    Fy -= hm * g2 * p.kx;
+    const double dg2[3] = {2 * vx * dg2_dq, 2 * vy * dg2_dq, R * dg2_du};
+    for (int j = 0; j < 3; ++j) {
+      J(0, j) += hm * dg2[j] * p.ky;
+      J(1, j) -= hm * dg2[j] * p.kx;
+    }
+    if (q > 1e-30 * (U + e2)) {
+      const double iq = 1.0 / q;
+      const double kv = p.kx * vx + p.ky * vy, G = g1 - g2, H = G * kv * iq;
+      Fx += hm * H * vy;
+      Fy -= hm * H * vx;
+      const double dG_dq = dg1_dq - dg2_dq, dG_du = dg1_du - dg2_du;
+      const double dH_dvx = (2 * vx * dG_dq * kv + G * p.kx) * iq - 2 * vx * H * iq;
+      const double dH_dvy = (2 * vy * dG_dq * kv + G * p.ky) * iq - 2 * vy * H * iq;
+      const double dH_dw = R * dG_du * kv * iq;
+      J(0, 0) += hm * dH_dvx * vy;
+      J(0, 1) += hm * (dH_dvy * vy + H);
+      J(0, 2) += hm * dH_dw * vy;
+      J(1, 0) -= hm * (dH_dvx * vx + H);
+      J(1, 1) -= hm * dH_dvy * vx;
+      J(1, 2) -= hm * dH_dw * vx;
+    }
+    // Cross-shift torque Mk W q / Sk^3, W = vx ky - kappa vy kx.
+    const double W = vx * p.ky - p.kappa * vy * p.kx;
+    const double iSk = 1.0 / std::sqrt(q + p.a_k * U + e2), iSk2 = iSk * iSk;
+    const double iSk3 = iSk2 * iSk, iSk5 = iSk3 * iSk2;
+    Mz += p.Mk * W * q * iSk3;
+    J(2, 0) += p.Mk * ((p.ky * q + W * 2 * vx) * iSk3 - 3 * W * q * vx * iSk5);
+    J(2, 1) += p.Mk * ((-p.kappa * p.kx * q + W * 2 * vy) * iSk3 - 3 * W * q * vy * iSk5);
+    J(2, 2) += -3 * p.Mk * W * q * p.a_k * u * R * iSk5;
   }
-  if (q > 1e-30 * (U + e2)) {
-    const double kv = p.kx * vx + p.ky * vy, G = g1 - g2, H = G * kv / q;
-    Fx += hm * H * vy;
-    Fy -= hm * H * vx;
-    // dH/dvx etc.
-    const double dG_dq = dg1_dq - dg2_dq, dG_du = dg1_du - dg2_du;
-    const double dH_dvx = (2 * vx * dG_dq) * kv / q + G * p.kx / q - 2 * vx * G * kv / (q * q);
-    const double dH_dvy = (2 * vy * dG_dq) * kv / q + G * p.ky / q - 2 * vy * G * kv / (q * q);
-    const double dH_dw = R * dG_du * kv / q;
-    J(0, 0) += hm * dH_dvx * vy;
-    J(0, 1) += hm * (dH_dvy * vy + H);
-    J(0, 2) += hm * dH_dw * vy;
-    J(1, 0) -= hm * (dH_dvx * vx + H);
-    J(1, 1) -= hm * dH_dvy * vx;
-    J(1, 2) -= hm * dH_dw * vx;
-  }
-  // Cross-shift torque Mk W q / Sk^3, W = vx ky - kappa vy kx.
-  const double W = vx * p.ky - p.kappa * vy * p.kx;
-  const double Sk2 = q + p.a_k * U + e2, Sk = std::sqrt(Sk2), Sk3 = Sk2 * Sk, Sk5 = Sk3 * Sk2;
-  mz += p.Mk * W * q / Sk3;
-  J(2, 0) += p.Mk * (p.ky * q / Sk3 + W * 2 * vx / Sk3 - 3 * W * q * vx / Sk5);
-  J(2, 1) += p.Mk * (-p.kappa * p.kx * q / Sk3 + W * 2 * vy / Sk3 - 3 * W * q * vy / Sk5);
-  J(2, 2) += -3 * p.Mk * W * q * p.a_k * u * R / Sk5;
-  out.resultants = {Fx, Fy, mz};
-  J /= sc;
+  out.resultants = {Fx, Fy, Mz};
+  J *= isc;
   return out;
 }
 
@@ -147,8 +154,8 @@ FractionalLaw<double> fractional_law_from_patch(const ContactPatch& patch) {
     throw InvalidArgument("profile", describe(patch.profile),
                           "moments A^0..A^5 must be positive for the fractional law");
   const double R = patch.radius_m, ps = patch.reference_pressure_pa;
-  const double f = patch.slip_speed_friction ? patch.slip_speed_friction->kinetic_coefficient
-                                             : patch.friction;
+  const double f =
+      patch.slip_speed_friction ? patch.slip_speed_friction->kinetic_coefficient : patch.friction;
   FractionalLaw<double> law;
   law.radius = R;
   law.F0 = f * 2.0 * std::numbers::pi * R * R * ps * A.A1;
@@ -210,10 +217,10 @@ FractionalLaw<double> fractional_law_fitted(const ContactPatch& patch, double ps
     }
     return s;
   };
-  law.a = std::exp(golden_minimum([&](double x) { return sse(x, true); },
-                                  std::log(base.a) - 3.0, std::log(base.a) + 3.0));
-  law.m = std::exp(golden_minimum([&](double x) { return sse(x, false); },
-                                  std::log(base.m) - 3.0, std::log(base.m) + 3.0));
+  law.a = std::exp(golden_minimum([&](double x) { return sse(x, true); }, std::log(base.a) - 3.0,
+                                  std::log(base.a) + 3.0));
+  law.m = std::exp(golden_minimum([&](double x) { return sse(x, false); }, std::log(base.m) - 3.0,
+                                  std::log(base.m) + 3.0));
   return law;
 }
 

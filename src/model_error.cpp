@@ -24,7 +24,8 @@ ModelErrorReport model_error_report(const ContactPatch& patch, double psi_min, d
   std::vector<Resultants<double>> exact(points);
   for (int i = 0; i < points; ++i) {
     psi[i] = psi_min * std::pow(psi_max / psi_min, static_cast<double>(i) / (points - 1));
-    exact[i] = exact_resultants(model, Kinematics<double>{psi[i] * u, 0.0, u / R}, {1e-10}).resultants;
+    exact[i] =
+        exact_resultants(model, Kinematics<double>{psi[i] * u, 0.0, u / R}, {1e-10}).resultants;
   }
   const bool lateral = patch.profile.kx != 0.0;
   for (int which = 0; which < 2; ++which) {

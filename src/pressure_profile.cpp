@@ -107,41 +107,41 @@ double raw_value(const PressureProfile& profile, double rho) {
 // integral_lo^hi p(rho) rho^n d rho of the unclipped shape, exact for each kind.
 double raw_moment(const PressureProfile& profile, int n, double lo, double hi) {
   return std::visit(
-      Overloaded{
-          [&](const UniformShape&) {
-            return (std::pow(hi, n + 1) - std::pow(lo, n + 1)) / (n + 1);
-          },
-          [&](const HertzShape&) {
-            // Only whole-range moments are needed: a Hertz shape never goes negative.
-            // integral_0^1 sqrt(1 - r^2) r^n dr = (sqrt(pi)/4) Gamma((n+1)/2) / Gamma(n/2 + 2).
-            return std::sqrt(std::numbers::pi) / 4.0 *
-                   std::exp(std::lgamma((n + 1) / 2.0) - std::lgamma(n / 2.0 + 2.0));
-          },
-          [&](const CosineSeriesShape& c) {
-            double s = 0.0;
-            for (std::size_t k = 0; k < c.a.size(); ++k) {
-              const double freq = std::numbers::pi * static_cast<double>(k) * c.w;
-              s += c.a[k] * (cos_moment(freq, n, hi) - cos_moment(freq, n, lo));
-            }
-            return s;
-          },
-          [&](const TabulatedShape& t) {
-            // Gauss-Legendre on each cubic piece, exact for degree 3 + n.
-            const GaussLegendreRule g = gauss_legendre(std::max(2, (n + 5) / 2));
-            std::vector<double> knots{lo};
-            for (double r : t.rho)
-              if (r > lo && r < hi) knots.push_back(r);
-            knots.push_back(hi);
-            double s = 0.0;
-            for (std::size_t k = 0; k + 1 < knots.size(); ++k) {
-              const double a = knots[k], b = knots[k + 1];
-              for (std::size_t i = 0; i < g.nodes.size(); ++i) {
-                const double r = 0.5 * (a + b) + 0.5 * (b - a) * g.nodes[i];
-                s += 0.5 * (b - a) * g.weights[i] * pchip_value(t, r) * std::pow(r, n);
-              }
-            }
-            return s;
-          }},
+      Overloaded{[&](const UniformShape&) {
+                   return (std::pow(hi, n + 1) - std::pow(lo, n + 1)) / (n + 1);
+                 },
+                 [&](const HertzShape&) {
+                   // Only whole-range moments are needed: a Hertz shape never goes negative.
+                   // integral_0^1 sqrt(1 - r^2) r^n dr = (sqrt(pi)/4) Gamma((n+1)/2) / Gamma(n/2 +
+                   // 2).
+                   return std::sqrt(std::numbers::pi) / 4.0 *
+                          std::exp(std::lgamma((n + 1) / 2.0) - std::lgamma(n / 2.0 + 2.0));
+                 },
+                 [&](const CosineSeriesShape& c) {
+                   double s = 0.0;
+                   for (std::size_t k = 0; k < c.a.size(); ++k) {
+                     const double freq = std::numbers::pi * static_cast<double>(k) * c.w;
+                     s += c.a[k] * (cos_moment(freq, n, hi) - cos_moment(freq, n, lo));
+                   }
+                   return s;
+                 },
+                 [&](const TabulatedShape& t) {
+                   // Gauss-Legendre on each cubic piece, exact for degree 3 + n.
+                   const GaussLegendreRule g = gauss_legendre(std::max(2, (n + 5) / 2));
+                   std::vector<double> knots{lo};
+                   for (double r : t.rho)
+                     if (r > lo && r < hi) knots.push_back(r);
+                   knots.push_back(hi);
+                   double s = 0.0;
+                   for (std::size_t k = 0; k + 1 < knots.size(); ++k) {
+                     const double a = knots[k], b = knots[k + 1];
+                     for (std::size_t i = 0; i < g.nodes.size(); ++i) {
+                       const double r = 0.5 * (a + b) + 0.5 * (b - a) * g.nodes[i];
+                       s += 0.5 * (b - a) * g.weights[i] * pchip_value(t, r) * std::pow(r, n);
+                     }
+                   }
+                   return s;
+                 }},
       profile.shape);
 }
 
@@ -158,7 +158,10 @@ std::vector<double> sign_changes(const PressureProfile& profile) {
       const bool neg_a = f0 < 0.0;
       for (int it = 0; it < 80 && b - a > 1e-16; ++it) {
         const double m = 0.5 * (a + b);
-        if ((raw_value(profile, m) < 0.0) == neg_a) a = m; else b = m;
+        if ((raw_value(profile, m) < 0.0) == neg_a)
+          a = m;
+        else
+          b = m;
       }
       roots.push_back(0.5 * (a + b));
     }
@@ -170,7 +173,9 @@ std::vector<double> sign_changes(const PressureProfile& profile) {
 
 }  // namespace
 
-PressureProfile uniform_profile() { return {}; }
+PressureProfile uniform_profile() {
+  return {};
+}
 
 PressureProfile hertz_profile() {
   PressureProfile p;
@@ -202,9 +207,9 @@ PressureProfile tabulated_profile(std::vector<double> rho, std::vector<double> p
     if (rho[k] < 0.0 || rho[k] > 1.0 + 1e-12)
       throw InvalidArgument(name, detail::format_value(rho[k]), "must lie in [0, 1]");
     if (k > 0 && !(rho[k] > rho[k - 1]))
-      throw InvalidArgument(name, detail::format_value(rho[k]),
-                            "rho must be strictly increasing (previous " +
-                                detail::format_value(rho[k - 1]) + ")");
+      throw InvalidArgument(
+          name, detail::format_value(rho[k]),
+          "rho must be strictly increasing (previous " + detail::format_value(rho[k - 1]) + ")");
   }
   if (rho.back() < 1.0 - 1e-9)
     throw InvalidArgument("rho[last]", detail::format_value(rho.back()),

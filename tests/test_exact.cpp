@@ -132,8 +132,8 @@ TEST(ExactResultants, AsymptotesGiveTheMomentFormulas) {
   for (const Case& c : cases) {
     const ExactModel<double> model = make_exact_model(c.patch);
     const double R = c.patch.radius_m, F0 = c.patch.friction * normal_load(c.patch);
-    const double M0 = 2 * kPi * c.patch.friction * std::pow(R, 3) *
-                      c.patch.reference_pressure_pa * moment(c.patch.profile, 2);
+    const double M0 = 2 * kPi * c.patch.friction * std::pow(R, 3) * c.patch.reference_pressure_pa *
+                      moment(c.patch.profile, 2);
     const double psi = 1e-4;
     const auto slow = exact_resultants(model, {psi, 0.0, 1.0 / R}, {1e-12}).resultants;
     const auto fast = exact_resultants(model, {1.0 / psi, 0.0, 1.0 / R}, {1e-12}).resultants;
@@ -340,13 +340,21 @@ TEST(ExactResultants, BadInputNamesParameterAndValue) {
   p.profile.kx = 1.2;
   EXPECT_NE(message([&] { make_exact_model(p); }).find("1.2"), std::string::npos);
   const ExactModel<double> m = make_exact_model(uniform_patch());
-  EXPECT_NE(message([&] { exact_resultants(m, {NAN, 0.0, 1.0}); }).find("vx = nan"),
+  EXPECT_NE(message([&] {
+              exact_resultants(m, {NAN, 0.0, 1.0});
+            }).find("vx = nan"),
             std::string::npos);
-  EXPECT_NE(message([&] { exact_resultants(m, {0.0, INFINITY, 1.0}); }).find("vy = inf"),
+  EXPECT_NE(message([&] {
+              exact_resultants(m, {0.0, INFINITY, 1.0});
+            }).find("vy = inf"),
             std::string::npos);
-  EXPECT_NE(message([&] { exact_resultants(m, {0.0, 1.0, -INFINITY}); }).find("omega = -inf"),
+  EXPECT_NE(message([&] {
+              exact_resultants(m, {0.0, 1.0, -INFINITY});
+            }).find("omega = -inf"),
             std::string::npos);
-  EXPECT_NE(message([&] { exact_resultants(m, {0.0, 1.0, 1.0}, {0.0}); }).find("tolerance"),
+  EXPECT_NE(message([&] {
+              exact_resultants(m, {0.0, 1.0, 1.0}, {0.0});
+            }).find("tolerance"),
             std::string::npos);
   EXPECT_EQ(exact_resultants(m, {0.0, 0.0, 0.0}).resultants.Fx, 0.0);
 }

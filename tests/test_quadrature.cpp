@@ -9,7 +9,9 @@
 using namespace contensou;
 
 // Oracle: integral_{-1}^{1} x^k dx = 2/(k+1) for even k, 0 for odd k.
-double monomial_integral(int k) { return k % 2 ? 0.0 : 2.0 / (k + 1); }
+double monomial_integral(int k) {
+  return k % 2 ? 0.0 : 2.0 / (k + 1);
+}
 
 TEST(GaussLegendre, ExactForDegree2nMinus1) {
   for (int n : {1, 2, 5, 10, 26, 64}) {

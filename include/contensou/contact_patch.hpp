@@ -30,11 +30,11 @@ T friction_at(const SlipSpeedFriction<T>& law, const T& w) {
 // Everything the exact model needs: sigma = p* p(rho) (1 + kx x/R + ky y/R) on a disk of radius
 // R, orthotropic Coulomb friction diag(f, kappa f) (seed eq. 1), f optionally f(w).
 struct ContactPatch {
-  double radius_m = 0.087;                 // R [m]
-  double reference_pressure_pa = 2.1e5;   // p* [Pa]
-  double friction = 0.3;                   // f (longitudinal)
-  double kappa = 1.0;                      // lateral / longitudinal friction ratio
-  PressureProfile profile;                 // shape p(rho) and shift kx, ky
+  double radius_m = 0.087;               // R [m]
+  double reference_pressure_pa = 2.1e5;  // p* [Pa]
+  double friction = 0.3;                 // f (longitudinal)
+  double kappa = 1.0;                    // lateral / longitudinal friction ratio
+  PressureProfile profile;               // shape p(rho) and shift kx, ky
   std::optional<SlipSpeedFriction<double>> slip_speed_friction;  // replaces `friction` if set
 };
 

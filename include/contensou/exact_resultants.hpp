@@ -119,11 +119,11 @@ T chebyshev_sum(const std::vector<T>& c, const S& t) {
 // [-h, h], the centre of sliding at tau_c. foot is the point of the chord nearest to O.
 template <class T>
 struct Chord {
-  T fx, fy;    // foot
-  T ex, ey;    // unit direction
-  T h;         // half-length [m]
-  T tau_c;     // position of r_c on the chord [m]
-  T t_foot;    // |foot|^2 / R^2
+  T fx, fy;  // foot
+  T ex, ey;  // unit direction
+  T h;       // half-length [m]
+  T tau_c;   // position of r_c on the chord [m]
+  T t_foot;  // |foot|^2 / R^2
 };
 
 }  // namespace detail
@@ -154,8 +154,8 @@ void update_chord_transforms(ExactModel<T>& m) {
   std::vector<T> q0(n, T(0.0)), q2(n, T(0.0));
   for (std::size_t j = 0; j < n; ++j) {
     // Chebyshev points in t_f and the transforms there (h^2 = 1 - t_f).
-    const double zj = std::cos(std::numbers::pi * (static_cast<double>(j) + 0.5) /
-                               static_cast<double>(n));
+    const double zj =
+        std::cos(std::numbers::pi * (static_cast<double>(j) + 0.5) / static_cast<double>(n));
     const double tf = 0.5 * (1.0 + zj), h2 = 1.0 - tf;
     T s0(0.0), s2(0.0);
     for (std::size_t i = 0; i < un.size(); ++i) {
@@ -330,8 +330,8 @@ ExactResult<T> exact_resultants(const ExactModel<T>& m, const Kinematics<T>& k,
   detail::AdaptiveResult<T, 3> res;
   if (dv < R) {
     // Interior centre: the rays at beta and beta + pi form one chord, so
-    // F = integral_0^pi dbeta u(beta) integral_chord sigma (tau - tau_c) dtau, theta = beta - gamma.
-    // The chord through r_c nearly touches the rim at theta = pi/2 when r_c nears the rim
+    // F = integral_0^pi dbeta u(beta) integral_chord sigma (tau - tau_c) dtau, theta = beta -
+    // gamma. The chord through r_c nearly touches the rim at theta = pi/2 when r_c nears the rim
     // (half-length (R^2 - d^2 + d^2 cos^2 theta)^(1/2)): a breakpoint there, then bisection.
     const T delta2 = (R - d) * (R + d);
     auto f = [&](double theta, int) {

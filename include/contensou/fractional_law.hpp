@@ -29,16 +29,16 @@ namespace contensou {
 
 template <class T = double>
 struct FractionalLaw {
-  T F0{0};             // sliding force scale f N [N]
-  T M0{0};             // spin torque scale 2 pi f R^3 p* A^2 [N m]
-  T a{1};              // sliding shape (2 A^1/A^0)^2
-  T m{64.0 / 9.0};     // spin shape (2 A^2/A^3)^2
-  T kx{0}, ky{0};      // pressure shift (seed eq. 9)
-  T kappa{1};          // lateral / longitudinal friction ratio
-  T c{4};              // shape of the cross-shift force, (4 A^2/A^5)^(2/3)
-  T Mk{0};             // cross-shift sliding torque pi f R^3 p* A^3 [N m]
-  T a_k{1};            // shape of the cross-shift torque (exact small-sliding asymptote)
-  double radius = 0.1;                  // R [m]
+  T F0{0};              // sliding force scale f N [N]
+  T M0{0};              // spin torque scale 2 pi f R^3 p* A^2 [N m]
+  T a{1};               // sliding shape (2 A^1/A^0)^2
+  T m{64.0 / 9.0};      // spin shape (2 A^2/A^3)^2
+  T kx{0}, ky{0};       // pressure shift (seed eq. 9)
+  T kappa{1};           // lateral / longitudinal friction ratio
+  T c{4};               // shape of the cross-shift force, (4 A^2/A^5)^(2/3)
+  T Mk{0};              // cross-shift sliding torque pi f R^3 p* A^3 [N m]
+  T a_k{1};             // shape of the cross-shift torque (exact small-sliding asymptote)
+  double radius = 0.1;  // R [m]
   double regularization_speed = 1e-4;  // eps [m/s]
 };
 

@@ -38,8 +38,8 @@ using ProfileShape = std::variant<UniformShape, HertzShape, CosineSeriesShape, T
 // A pressure profile: the radial shape, the linear shift and the explicit clipping option.
 struct PressureProfile {
   ProfileShape shape = UniformShape{};
-  double kx = 0.0;            // shift along x (seed eq. 9; 0.14 for the seed's rolling tire)
-  double ky = 0.0;            // shift along y
+  double kx = 0.0;             // shift along x (seed eq. 9; 0.14 for the seed's rolling tire)
+  double ky = 0.0;             // shift along y
   bool clip_negative = false;  // if true, p is replaced by max(p, 0)
 };
 

@@ -22,9 +22,9 @@ GaussLegendreRule gauss_legendre(int n);
 namespace detail {
 
 struct KronrodNode {
-  double x;         // node in [0, 1]
-  double kronrod;   // weight in the 21-point Kronrod rule
-  double gauss;     // weight in the embedded 10-point Gauss rule (0 if Kronrod-only)
+  double x;        // node in [0, 1]
+  double kronrod;  // weight in the 21-point Kronrod rule
+  double gauss;    // weight in the embedded 10-point Gauss rule (0 if Kronrod-only)
 };
 
 // Gauss-Kronrod G10K21 on [-1, 1]; the symmetric half. Generated to 20 digits by

@@ -1,0 +1,26 @@
+#!/usr/bin/env bash
+# Installs every dependency from Debian 12's packages, builds contensou in ./build and runs the
+# main job on the built-in data. Usage: scripts/setup.sh   (CONTENSOU_WERROR=ON for CI)
+set -euo pipefail
+cd "$(dirname "$0")/.."
+
+packages=(build-essential cmake ninja-build pkg-config
+  libeigen3-dev libceres-dev libsundials-dev libgtest-dev libgmock-dev libbenchmark-dev
+  libcubature-dev libcli11-dev nlohmann-json3-dev gnuplot-nox clang-format)
+missing=()
+for p in "${packages[@]}"; do
+  dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
+done
+if ((${#missing[@]})); then
+  SUDO=""
+  [ "$(id -u)" -ne 0 ] && SUDO="sudo"
+  echo "setup: installing ${missing[*]}"
+  $SUDO apt-get update -qq
+  DEBIAN_FRONTEND=noninteractive $SUDO apt-get install -y -qq --no-install-recommends "${missing[@]}"
+fi
+
+cmake -S . -B build -G Ninja -DCMAKE_BUILD_TYPE=Release \
+  -DCONTENSOU_WERROR="${CONTENSOU_WERROR:-OFF}"
+cmake --build build --parallel
+echo
+./build/examples/contensou-model-error

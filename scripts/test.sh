@@ -1,0 +1,16 @@
+#!/usr/bin/env bash
+# Runs the whole test suite on the build made by scripts/setup.sh.
+#   scripts/test.sh             the Release build in ./build
+#   scripts/test.sh --sanitize  builds ./build-asan with ASan+UBSan and runs the tests there
+set -euo pipefail
+cd "$(dirname "$0")/.."
+dir=build
+if [ "${1:-}" = "--sanitize" ]; then
+  dir=build-asan
+  cmake -S . -B "$dir" -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo -DCONTENSOU_SANITIZE=ON \
+    -DCONTENSOU_WERROR=ON -DCONTENSOU_BUILD_BENCHMARKS=OFF
+  cmake --build "$dir" --parallel
+  export ASAN_OPTIONS=detect_leaks=1:abort_on_error=1 UBSAN_OPTIONS=print_stacktrace=1
+fi
+[ -d "$dir" ] || { echo "test: no $dir; run scripts/setup.sh first" >&2; exit 1; }
+ctest --test-dir "$dir" --output-on-failure --parallel 2
