@@ -29,8 +29,8 @@ FractionalWithJacobian fractional_resultants_with_jacobian(const FractionalLaw<d
   // Homogeneous of degree 0 in (v, u, eps): evaluate on scaled velocities, divide J by s.
   // One reciprocal per square root; everything else is multiplication.
   const double R = p.radius;
-  const double sc = std::max({std::abs(k0.vx), std::abs(k0.vy), std::abs(k0.omega) * R,
-                              p.regularization_speed});
+  const double sc =
+      std::max({std::abs(k0.vx), std::abs(k0.vy), std::abs(k0.omega) * R, p.regularization_speed});
   const double isc = 1.0 / sc;
   const double vx = k0.vx * isc, vy = k0.vy * isc, u = k0.omega * R * isc;
   const double e = p.regularization_speed * isc, e2 = e * e;

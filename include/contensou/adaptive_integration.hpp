@@ -32,12 +32,16 @@ struct TaggedInterval {
   int tag;
 };
 
-// Integrates f(x, tag) (returning Sample<T, Dim>) over the union of the given intervals until
-// the estimated absolute error of every component c is <= tolerance[c], bisecting the
-// interval with the largest scaled error. Capacity bounds the number of intervals kept.
+// Number of nodes of the G10K21 rule.
+inline constexpr int kKronrodPoints = 21;
+
+// Integrates a batch integrand f(const double* x, int n, int tag, Sample<T, Dim>* out), which
+// evaluates n <= 21 points at once, over the union of the given intervals until the estimated
+// absolute error of every component c is <= tolerance[c], bisecting the interval with the
+// largest scaled error. Capacity bounds the number of intervals kept.
 template <class T, int Dim, int Capacity = 160, class F>
-AdaptiveResult<T, Dim> integrate_adaptive(F&& f, const TaggedInterval* initial, int n_initial,
-                                          const std::array<double, Dim>& tolerance) {
+AdaptiveResult<T, Dim> integrate_adaptive_batch(F&& f, const TaggedInterval* initial, int n_initial,
+                                                const std::array<double, Dim>& tolerance) {
   struct Piece {
     double a, b;
     int tag;
@@ -53,15 +57,22 @@ AdaptiveResult<T, Dim> integrate_adaptive(F&& f, const TaggedInterval* initial, 
     const double mid = 0.5 * (a + b), half = 0.5 * (b - a);
     std::array<T, Dim> kron{}, gauss{};
     std::array<double, Dim> kron_d{}, inner{}, absdev{};
-    std::array<std::array<double, Dim>, 21> plain{};
+    std::array<std::array<double, Dim>, kKronrodPoints> plain{};
+    std::array<double, kKronrodPoints> xs{};
+    std::array<Sample<T, Dim>, kKronrodPoints> ys{};
     for (auto& v : kron) v = T(0);
     for (auto& v : gauss) v = T(0);
     int idx = 0;
     for (const KronrodNode& node : kGK21) {
+      xs[idx++] = mid + half * node.x;
+      if (node.x != 0.0) xs[idx++] = mid - half * node.x;
+    }
+    f(xs.data(), kKronrodPoints, tag, ys.data());
+    idx = 0;
+    for (const KronrodNode& node : kGK21) {
       const int signs = node.x == 0.0 ? 1 : 2;
       for (int s = 0; s < signs; ++s) {
-        const double x = s == 0 ? mid + half * node.x : mid - half * node.x;
-        const Sample<T, Dim> y = f(x, tag);
+        const Sample<T, Dim>& y = ys[idx];
         for (int c = 0; c < Dim; ++c) {
           kron[c] += node.kronrod * y.value[c];
           if (node.gauss != 0.0) gauss[c] += node.gauss * y.value[c];
@@ -133,6 +144,16 @@ AdaptiveResult<T, Dim> integrate_adaptive(F&& f, const TaggedInterval* initial, 
     for (int c = 0; c < Dim; ++c) out.value[c] += pieces[i].value[c];
   out.intervals = n;
   return out;
+}
+
+// The same for a point integrand f(double x, int tag) -> Sample<T, Dim>.
+template <class T, int Dim, int Capacity = 160, class F>
+AdaptiveResult<T, Dim> integrate_adaptive(F&& f, const TaggedInterval* initial, int n_initial,
+                                          const std::array<double, Dim>& tolerance) {
+  auto batch = [&f](const double* x, int n, int tag, Sample<T, Dim>* out) {
+    for (int i = 0; i < n; ++i) out[i] = f(x[i], tag);
+  };
+  return integrate_adaptive_batch<T, Dim, Capacity>(batch, initial, n_initial, tolerance);
 }
 
 }  // namespace contensou::detail

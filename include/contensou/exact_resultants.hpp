@@ -51,6 +51,7 @@ struct ExactModel {
   bool sqrt_edge = false;
   std::optional<SlipSpeedFriction<T>> slip_speed;
   std::vector<T> chord_q0, chord_q2;  // chord transforms (update_chord_transforms)
+  std::vector<double> chord_tail;     // sum_{j >= k} |q0_j| + |q2_j|: truncation bound
   double representation_error = 0.0;  // bound on |p - representation| (dimensionless)
   double load_area = 0.0;             // N / p* = 2 pi R^2 A^1 [m^2]
   double friction_scale = 0.0;        // f, or max(f_s, f_k)
@@ -81,6 +82,7 @@ ExactModel<T> promote(const ExactModel<double>& m) {
   }
   for (double c : m.chord_q0) out.chord_q0.push_back(T(c));
   for (double c : m.chord_q2) out.chord_q2.push_back(T(c));
+  out.chord_tail = m.chord_tail;
   out.representation_error = m.representation_error;
   out.load_area = m.load_area;
   out.friction_scale = m.friction_scale;
@@ -171,41 +173,72 @@ void update_chord_transforms(ExactModel<T>& m) {
       q2[k] += ck * s2;
     }
   }
+  m.chord_tail.assign(n + 1, 0.0);
+  for (std::size_t k = n; k-- > 0;)
+    m.chord_tail[k] = m.chord_tail[k + 1] + std::abs(value_of(q0[k])) + std::abs(value_of(q2[k]));
   m.chord_q0 = std::move(q0);
   m.chord_q2 = std::move(q2);
 }
 
 namespace detail {
 
-// Moments of a chord: integral sigma (tau - tau_c) {1, x, y} dtau (times f(w) if the
-// friction depends on the slip speed w = |omega| |tau - tau_c|).
+// Closed-form moments of n <= 21 chords at once (no slip-speed law): the Clenshaw sums of
+// the two chord transforms run across the chords, independent chains that vectorise.
+//   sigma (tau - tau_c) = R p (A + B w)(w - w_c), x = fx + R ex w, w = tau / R.
+// Only the first `terms` coefficients of the transforms are summed.
 template <class T>
-std::array<T, 3> chord_moments(const ExactModel<T>& m, const Chord<T>& c, const T& abs_omega,
-                               std::array<double, 3>& inner_error,
-                               const std::array<double, 3>& tol) {
+void chord_moments_closed_form(const ExactModel<T>& m, std::size_t terms, const Chord<T>* c, int n,
+                               std::array<T, 3>* I) {
+  constexpr int kMax = kKronrodPoints;
+  const double R = m.radius;
+  std::array<T, kMax> z, a1, a2, b1, b2;
+  for (int i = 0; i < n; ++i) {
+    z[i] = 2.0 * c[i].t_foot - 1.0;
+    a1[i] = a2[i] = b1[i] = b2[i] = T(0.0);
+  }
+  const T* q0 = m.chord_q0.data();
+  const T* q2 = m.chord_q2.data();
+  for (std::size_t k = terms - 1; k >= 1; --k) {
+    for (int i = 0; i < n; ++i) {
+      const T a0 = q0[k] + 2.0 * z[i] * a1[i] - a2[i];
+      const T b0 = q2[k] + 2.0 * z[i] * b1[i] - b2[i];
+      a2[i] = a1[i];
+      a1[i] = a0;
+      b2[i] = b1[i];
+      b1[i] = b0;
+    }
+  }
+  for (int i = 0; i < n; ++i) {
+    const Chord<T>& ch = c[i];
+    const T hp = ch.h / R, wc = ch.tau_c / R;
+    T M0 = hp * (q0[0] + z[i] * a1[i] - a2[i]);
+    T M2 = hp * hp * hp * (q2[0] + z[i] * b1[i] - b2[i]);
+    if (m.sqrt_edge) {
+      M0 *= hp;
+      M2 *= hp;
+    }
+    const T A = 1.0 + (m.kx * ch.fx + m.ky * ch.fy) / R;  // shift factor at the foot
+    const T B = m.kx * ch.ex + m.ky * ch.ey;              // its slope per unit w
+    const T odd = A - B * wc;                             // coefficient of w in (A + B w)(w - w_c)
+    const double R2 = R * R;
+    I[i] = {R2 * (B * M2 - A * wc * M0),
+            R2 * ((odd * R * ch.ex + B * ch.fx) * M2 - A * wc * ch.fx * M0),
+            R2 * ((odd * R * ch.ey + B * ch.fy) * M2 - A * wc * ch.fy * M0)};
+  }
+}
+
+// Moments of a chord with a slip-speed law: integral sigma f(w) (tau - tau_c) {1, x, y} dtau,
+// w = |omega| |tau - tau_c|, by an adaptive rule.
+template <class T>
+std::array<T, 3> chord_moments_adaptive(const ExactModel<T>& m, const Chord<T>& c,
+                                        const T& abs_omega, std::array<double, 3>& inner_error,
+                                        const std::array<double, 3>& tol) {
   using std::cos;
   using std::sin;
   const double R = m.radius;
   inner_error = {0.0, 0.0, 0.0};
   const T A = 1.0 + (m.kx * c.fx + m.ky * c.fy) / R;  // shift factor at the foot
   const T B = m.kx * c.ex + m.ky * c.ey;              // its slope per unit w = tau / R
-  if (!m.slip_speed) {
-    // Closed form through the chord transforms (odd powers of w integrate to zero):
-    // sigma (tau - tau_c) = R p (A + B w)(w - w_c), x = fx + R ex w.
-    const T hp = c.h / R, wc = c.tau_c / R;
-    const T hp2 = hp * hp;
-    T M0 = hp * chebyshev_sum(m.chord_q0, c.t_foot);
-    T M2 = hp * hp2 * chebyshev_sum(m.chord_q2, c.t_foot);
-    if (m.sqrt_edge) {
-      M0 *= hp;
-      M2 *= hp;
-    }
-    const T R2 = T(R * R);
-    const T odd = A - B * wc;  // coefficient of w in (A + B w)(w - w_c)
-    return {R2 * (B * M2 - A * wc * M0),
-            R2 * ((odd * R * c.ex + B * c.fx) * M2 - A * wc * c.fx * M0),
-            R2 * ((odd * R * c.ey + B * c.fy) * M2 - A * wc * c.fy * M0)};
-  }
   // f(w) depends on the slip speed: adaptive rule in the chord angle, tau = h sin(theta)
   // (so R^2 - |r|^2 = h^2 cos^2(theta)), split at the centre of sliding (a kink of |tau - tau_c|).
   const double ratio = std::clamp(value_of(c.tau_c) / std::max(value_of(c.h), 1e-300), -1.0, 1.0);
@@ -315,16 +348,39 @@ ExactResult<T> exact_resultants(const ExactModel<T>& m, const Kinematics<T>& k,
   const double share = 1.0 / (20.0 * std::numbers::pi);
   const std::array<double, 3> tol_inner{unit * share, unit * share * R, unit * share * R};
 
-  auto chord_contribution = [&](const detail::Chord<T>& ch, const T& jac) {
-    detail::Sample<T, 3> s;
-    std::array<double, 3> ie{};
-    const auto I = detail::chord_moments(m, ch, abs_omega, ie, tol_inner);
-    // u = sign(omega) z x e;  D u = (u_x, kappa u_y).
-    const T ux = -sgn * ch.ey, uy = sgn * ch.ex * m.kappa;
-    s.value = {ux * I[0] * jac, uy * I[0] * jac, (uy * I[1] - ux * I[2]) * jac};
-    const double j = std::abs(value_of(jac));
-    s.inner_error = {ie[0] * j, ie[1] * j, ie[2] * j};
-    return s;
+  // Truncate the chord transforms where their tail is far below the tolerance; the dropped
+  // tail bounds the chord moments' error by 2 R^2 (1 + |k|) tail, over at most pi of beta.
+  std::size_t terms = m.chord_q0.size();
+  const double shift = 1.0 + std::hypot(value_of(m.kx), value_of(m.ky));
+  const double tail_scale = 2.0 * std::numbers::pi * R * R * shift;
+  while (terms > 1 && m.chord_tail[terms - 1] * tail_scale <= 1e-3 * unit) --terms;
+  if (!m.slip_speed) {
+    const double dropped =
+        std::abs(value_of(m.friction) * value_of(m.pressure)) * m.chord_tail[terms] * tail_scale;
+    out.error.Fx += dropped;
+    out.error.Fy += dropped;
+    out.error.Mz += dropped * R;
+  }
+
+  // Outer integrand for a batch of chords with Jacobians jac: u = sign(omega) z x e,
+  // D u = (u_x, kappa u_y); F ~ D u I0, Mz ~ (D u)_y Ix - (D u)_x Iy.
+  auto chords_to_samples = [&](const detail::Chord<T>* ch, const T* jac, int n,
+                               detail::Sample<T, 3>* out_samples) {
+    std::array<std::array<T, 3>, detail::kKronrodPoints> I;
+    std::array<std::array<double, 3>, detail::kKronrodPoints> ie{};
+    if (m.slip_speed) {
+      for (int i = 0; i < n; ++i)
+        I[i] = detail::chord_moments_adaptive(m, ch[i], abs_omega, ie[i], tol_inner);
+    } else {
+      detail::chord_moments_closed_form(m, terms, ch, n, I.data());
+    }
+    for (int i = 0; i < n; ++i) {
+      const T ux = -sgn * ch[i].ey, uy = sgn * ch[i].ex * m.kappa;
+      out_samples[i].value = {ux * I[i][0] * jac[i], uy * I[i][0] * jac[i],
+                              (uy * I[i][1] - ux * I[i][2]) * jac[i]};
+      const double j = std::abs(value_of(jac[i]));
+      out_samples[i].inner_error = {ie[i][0] * j, ie[i][1] * j, ie[i][2] * j};
+    }
   };
 
   detail::AdaptiveResult<T, 3> res;
@@ -334,45 +390,55 @@ ExactResult<T> exact_resultants(const ExactModel<T>& m, const Kinematics<T>& k,
     // gamma. The chord through r_c nearly touches the rim at theta = pi/2 when r_c nears the rim
     // (half-length (R^2 - d^2 + d^2 cos^2 theta)^(1/2)): a breakpoint there, then bisection.
     const T delta2 = (R - d) * (R + d);
-    auto f = [&](double theta, int) {
-      const double ct = std::cos(theta), st = std::sin(theta);
-      detail::Chord<T> ch;
-      ch.ex = ct * gx - st * gy;
-      ch.ey = ct * gy + st * gx;
-      const T dc = d * ct, ds = d * st;
-      ch.tau_c = dc;             // r_c = foot + (d cos theta) e
-      ch.fx = rcx - dc * ch.ex;  // foot, at distance d |sin theta| from O
-      ch.fy = rcy - dc * ch.ey;
-      ch.h = sqrt(delta2 + dc * dc);
-      ch.t_foot = ds * ds / (R * R);
-      return chord_contribution(ch, T(1.0));
+    auto f = [&](const double* theta, int n, int, detail::Sample<T, 3>* out_samples) {
+      std::array<detail::Chord<T>, detail::kKronrodPoints> chords;
+      std::array<T, detail::kKronrodPoints> jac;
+      for (int i = 0; i < n; ++i) {
+        const double ct = std::cos(theta[i]), st = std::sin(theta[i]);
+        detail::Chord<T>& ch = chords[i];
+        ch.ex = ct * gx - st * gy;
+        ch.ey = ct * gy + st * gx;
+        const T dc = d * ct, ds = d * st;
+        ch.tau_c = dc;             // r_c = foot + (d cos theta) e
+        ch.fx = rcx - dc * ch.ex;  // foot, at distance d |sin theta| from O
+        ch.fy = rcy - dc * ch.ey;
+        ch.h = sqrt(delta2 + dc * dc);
+        ch.t_foot = ds * ds / (R * R);
+        jac[i] = T(1.0);
+      }
+      chords_to_samples(chords.data(), jac.data(), n, out_samples);
     };
     const double half_pi = 0.5 * std::numbers::pi;
     const detail::TaggedInterval q[2] = {{0.0, half_pi, 0}, {half_pi, std::numbers::pi, 0}};
-    res = detail::integrate_adaptive<T, 3>(f, q, 2, tol_out);
+    res = detail::integrate_adaptive_batch<T, 3>(f, q, 2, tol_out);
   } else {
     // Exterior centre: the wedge of chords through r_c, parametrised by the chord angle phi in
     // [-pi/2, pi/2] (sin theta = (R/d) sin phi), which removes the square root of the chord
     // length at the tangent rays; dtheta/dphi = R cos phi / (d cos theta).
     const T eps2 = (d - R) * (d + R);
-    auto f = [&](double phi, int) {
-      const double cphi = std::cos(phi), sphi = std::sin(phi);
-      const T s_off = sqrt(eps2 + (R * cphi) * (R * cphi));  // d cos theta
-      const T ct = s_off / d, st = (R / d) * sphi;
-      // e = cos theta u0 + sin theta (z x u0), u0 = -g.
-      detail::Chord<T> ch;
-      ch.ex = -ct * gx + st * gy;
-      ch.ey = -ct * gy - st * gx;
-      ch.fx = -(R * sphi) * ch.ey;  // foot of the perpendicular: (R sin phi) z x e
-      ch.fy = (R * sphi) * ch.ex;
-      ch.h = T(R * cphi);
-      ch.tau_c = -s_off;
-      ch.t_foot = T(sphi * sphi);
-      return chord_contribution(ch, (R * cphi) / s_off);
+    auto f = [&](const double* phi, int n, int, detail::Sample<T, 3>* out_samples) {
+      std::array<detail::Chord<T>, detail::kKronrodPoints> chords;
+      std::array<T, detail::kKronrodPoints> jac;
+      for (int i = 0; i < n; ++i) {
+        const double cphi = std::cos(phi[i]), sphi = std::sin(phi[i]);
+        const T s_off = sqrt(eps2 + (R * cphi) * (R * cphi));  // d cos theta
+        const T ct = s_off / d, st = (R / d) * sphi;
+        // e = cos theta u0 + sin theta (z x u0), u0 = -g.
+        detail::Chord<T>& ch = chords[i];
+        ch.ex = -ct * gx + st * gy;
+        ch.ey = -ct * gy - st * gx;
+        ch.fx = -(R * sphi) * ch.ey;  // foot of the perpendicular: (R sin phi) z x e
+        ch.fy = (R * sphi) * ch.ex;
+        ch.h = T(R * cphi);
+        ch.tau_c = -s_off;
+        ch.t_foot = T(sphi * sphi);
+        jac[i] = (R * cphi) / s_off;  // dtheta/dphi
+      }
+      chords_to_samples(chords.data(), jac.data(), n, out_samples);
     };
     const double half_pi = 0.5 * std::numbers::pi;
     const detail::TaggedInterval q[2] = {{-half_pi, 0.0, 0}, {0.0, half_pi, 0}};
-    res = detail::integrate_adaptive<T, 3>(f, q, 2, tol_out);
+    res = detail::integrate_adaptive_batch<T, 3>(f, q, 2, tol_out);
   }
   const T factor = -(m.slip_speed ? T(1.0) : m.friction) * m.pressure;
   out.resultants.Fx = factor * res.value[0];
