@@ -3,7 +3,8 @@
 // Baseline: libcubature's hcubature (h-adaptive, genz-malik) on the plain (r, theta)
 // parametrisation of the disk, at the same tolerance, capped at kBaselineMaxEval integrand
 // evaluations. Both report the error actually achieved against a reference computed by
-// contensou at 1e-13. After the run a table of medians and ratios is printed.
+// contensou at 1e-13. After the run a table of times (medians with --benchmark_repetitions)
+// and ratios is printed.
 #include <benchmark/benchmark.h>
 #include <cubature.h>
 
@@ -141,7 +142,8 @@ class TableReporter : public benchmark::ConsoleReporter {
   std::map<std::string, Run> runs;
   void ReportRuns(const std::vector<Run>& report) override {
     for (const Run& r : report) {
-      std::string name = r.benchmark_name();
+      if (!r.aggregate_name.empty() && r.aggregate_name != "median") continue;
+      std::string name = r.run_name.str();
       const auto it = name.find("/iterations:");
       if (it != std::string::npos) name.erase(it);
       runs[name] = r;
