@@ -1,0 +1,49 @@
+// Synthetic friction diagrams (the seed's "simulated test diagrams", section 5), for planning
+// tests and for checking identification.
+#pragma once
+
+#include <cstdint>
+#include <string>
+
+#include "contensou/exact_resultants.hpp"
+#include "contensou/fractional_law.hpp"
+#include "contensou/measured_data.hpp"
+
+namespace contensou {
+
+enum class SimulatedNoise {
+  none,
+  relative_uniform,   // y (1 + level U(-1, 1)): the seed's "random distribution with amplitude"
+  relative_gaussian,  // y (1 + level N(0, 1))
+  additive_gaussian,  // y + level max|y_c| N(0, 1), per channel c
+};
+
+// Points at log-spaced psi = v/u in [psi_min, psi_max], u = |omega| R = spin_speed_mps, sliding
+// in the direction direction_rad; the time stamp t_s is the point's index times time_step_s.
+struct DiagramSpec {
+  double radius_m = 0.087;
+  double psi_min = 1e-2;
+  double psi_max = 1e2;
+  int points = 40;
+  double spin_speed_mps = 1.0;
+  double direction_rad = 0.0;
+  SimulatedNoise noise = SimulatedNoise::additive_gaussian;
+  double noise_level = 0.01;
+  std::uint64_t seed = 1;
+  double time_step_s = 0.0;  // 0: no t_s column
+};
+
+// Clean kinematics of the spec (forces unset).
+MeasuredData diagram_kinematics(const DiagramSpec& spec);
+
+// Diagrams from the fractional law or from the exact integrals (tolerance 1e-10), with noise.
+MeasuredData simulate_diagrams(const FractionalLaw<double>& law, const DiagramSpec& spec);
+MeasuredData simulate_diagrams(const ExactModel<double>& model, const DiagramSpec& spec);
+
+// Adds the spec's noise to every measured value, in place (deterministic for a seed).
+void add_noise(MeasuredData& data, const DiagramSpec& spec);
+
+SimulatedNoise parse_noise(const std::string& name);  // throws InvalidArgument
+std::string noise_name(SimulatedNoise noise);
+
+}  // namespace contensou
