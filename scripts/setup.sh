@@ -24,3 +24,7 @@ cmake -S . -B build -G Ninja -DCMAKE_BUILD_TYPE=Release \
 cmake --build build --parallel
 echo
 ./build/examples/contensou-model-error
+echo
+# Identification on the bundled diagrams: table on stdout, pictures and JSON in out/identify.
+./build/apps/contensou-identify data/seed_tire_diagrams.csv --radius 0.087 --normal-load 4535 \
+  --plots out/identify --json out/identify/report.json

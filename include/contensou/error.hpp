@@ -1,8 +1,8 @@
 // Errors raised for bad input: each names the parameter and the offending value.
 #pragma once
 
+#include <charconv>
 #include <cmath>
-#include <sstream>
 #include <stdexcept>
 #include <string>
 
@@ -23,8 +23,9 @@ class InvalidArgument : public std::invalid_argument {
 class ParseError : public std::runtime_error {
  public:
   ParseError(const std::string& file, int line, int column, const std::string& message)
-      : std::runtime_error(file + ":" + std::to_string(line) + ":" + std::to_string(column) + ": " +
-                           message),
+      : std::runtime_error(line > 0 ? file + ":" + std::to_string(line) + ":" +
+                                          std::to_string(column) + ": " + message
+                                    : file + ": " + message),
         line_(line),
         column_(column) {}
   int line() const noexcept { return line_; }
@@ -37,11 +38,13 @@ class ParseError : public std::runtime_error {
 
 namespace detail {
 
+// Shortest text that reads back as the same double ("-0.1", "nan", "inf").
 inline std::string format_value(double v) {
-  std::ostringstream s;
-  s.precision(17);
-  s << v;
-  return s.str();
+  if (std::isnan(v)) return "nan";
+  if (std::isinf(v)) return v > 0 ? "inf" : "-inf";
+  char buf[32];
+  const auto r = std::to_chars(buf, buf + sizeof buf, v);
+  return std::string(buf, r.ptr);
 }
 
 inline void require_finite(const char* name, double v) {

@@ -1,0 +1,220 @@
+// contensou-identify: fit the fractional law to measured friction diagrams (and simulate them).
+#include <CLI/CLI.hpp>
+#include <cstdio>
+#include <filesystem>
+#include <sstream>
+
+#include "contensou/contensou.hpp"
+#include "contensou/identification.hpp"
+#include "contensou/simulation.hpp"
+#include "gnuplot.hpp"
+#include "report.hpp"
+
+using namespace contensou;
+
+namespace {
+
+constexpr const char* kName = "contensou-identify";
+
+struct ProfileChoice {
+  PressureProfile profile;
+  std::optional<double> reference_pressure;  // from a CSV profile
+};
+
+// A profile CSV path or a built-in name: uniform, hertz, seed-tire.
+ProfileChoice load_profile(const std::string& spec) {
+  if (spec == "uniform") return {uniform_profile(), std::nullopt};
+  if (spec == "hertz") return {hertz_profile(), std::nullopt};
+  if (spec == "seed-tire") return {seed_tire_profile(), std::nullopt};
+  if (!std::filesystem::exists(spec))
+    throw std::runtime_error("--profile " + spec +
+                             ": no such file (or use uniform, hertz, seed-tire)");
+  const MeasuredProfile m = read_profile_csv(spec);
+  return {m.profile, m.reference_pressure_pa};
+}
+
+std::pair<std::string, double> parse_fix(const std::string& s) {
+  const auto eq = s.find('=');
+  if (eq == std::string::npos || eq == 0)
+    throw std::runtime_error("--fix " + s + ": expected NAME=VALUE, e.g. --fix a=1.03");
+  const std::string value = s.substr(eq + 1);
+  std::size_t used = 0;
+  double v = 0.0;
+  try {
+    v = std::stod(value, &used);
+  } catch (const std::exception&) {
+    used = 0;
+  }
+  if (used != value.size() || !std::isfinite(v))
+    throw std::runtime_error("--fix " + s + ": '" + value + "' is not a finite number");
+  return {s.substr(0, eq), v};
+}
+
+int run_fit(const std::string& data_path, double radius, std::optional<double> load,
+            const std::string& profile_spec, std::optional<double> pressure,
+            const std::vector<std::string>& fixes, const std::string& loss, double loss_scale,
+            const std::string& noise_model, const std::vector<double>& noise_scale,
+            const std::string& json_path, const std::string& plots_dir) {
+  IdentificationOptions o;
+  o.radius_m = radius;
+  detail::require_positive("--radius", radius);
+  if (load) detail::require_positive("--normal-load", *load);
+  o.normal_load_n = load;
+  if (!profile_spec.empty()) {
+    const ProfileChoice p = load_profile(profile_spec);
+    o.profile = p.profile;
+    const std::optional<double> ps = p.reference_pressure ? p.reference_pressure : pressure;
+    if (ps) {
+      ContactPatch patch;
+      patch.radius_m = radius;
+      patch.reference_pressure_pa = *ps;
+      patch.profile = p.profile;
+      o.normal_load_n = normal_load(patch);
+    }
+  }
+  for (const std::string& f : fixes) o.fixed.insert(parse_fix(f));
+  o.loss = loss == "huber"    ? RobustLoss::huber
+           : loss == "cauchy" ? RobustLoss::cauchy
+                              : RobustLoss::none;
+  o.loss_scale = loss_scale;
+  o.noise_model = noise_model == "relative" ? NoiseModel::relative : NoiseModel::additive;
+  if (!noise_scale.empty()) {
+    if (noise_scale.size() != 3)
+      throw std::runtime_error("--noise-scale needs three values: Fx,Fy,Mz");
+    o.noise_scale = std::array<double, 3>{noise_scale[0], noise_scale[1], noise_scale[2]};
+  }
+  const MeasuredData data = read_measured_csv(data_path);
+  const FitReport fit = fit_fractional_law(data, o);
+  app::RunInfo info{data_path, static_cast<int>(data.points.size()),
+                    data.count(0) + data.count(1) + data.count(2), radius, o.normal_load_n};
+  std::printf("%s %s: fractional law (seed eqs. 5-7)\n%s", kName, kVersion,
+              app::format_table(info, fit).c_str());
+  if (!plots_dir.empty()) {
+    if (app::write_plots(plots_dir, data, fit, radius))
+      std::printf("pictures: %s/fit_*.png\n", plots_dir.c_str());
+  }
+  if (!json_path.empty()) {
+    app::write_file_atomically(json_path, app::report_json(info, fit).dump(2) + "\n");
+    std::printf("report: %s\n", json_path.c_str());
+  }
+  return 0;
+}
+
+struct SimulateArgs {
+  std::string out;
+  double radius = 0.087;
+  std::string profile = "seed-tire";
+  std::optional<double> pressure;
+  double friction = 0.3, kx = 0.14, ky = 0.0, kappa = 1.0;
+  std::string model = "exact";
+  DiagramSpec spec;
+  std::string noise = "additive-gaussian";
+};
+
+int run_simulate(SimulateArgs a) {
+  const ProfileChoice p = load_profile(a.profile);
+  ContactPatch patch;
+  patch.radius_m = a.radius;
+  patch.reference_pressure_pa =
+      p.reference_pressure ? *p.reference_pressure : a.pressure.value_or(2.1e5);
+  patch.friction = a.friction;
+  patch.kappa = a.kappa;
+  patch.profile = p.profile;
+  patch.profile.kx = a.kx;
+  patch.profile.ky = a.ky;
+  validate(patch);
+  a.spec.radius_m = a.radius;
+  a.spec.noise = parse_noise(a.noise);
+  MeasuredData d;
+  if (a.model == "exact")
+    d = simulate_diagrams(make_exact_model(patch), a.spec);
+  else
+    d = simulate_diagrams(fractional_law_from_patch(patch), a.spec);
+  std::ostringstream c;
+  c << "simulated by " << kName << " " << kVersion << ": " << a.model << " model, profile "
+    << a.profile << ", R = " << a.radius << " m, p* = " << patch.reference_pressure_pa
+    << " Pa (N = " << normal_load(patch) << " N), f = " << a.friction << ", kx = " << a.kx
+    << ", ky = " << a.ky << ", kappa = " << a.kappa << "\nnoise " << a.noise << " level "
+    << a.spec.noise_level << ", seed " << a.spec.seed << ", psi in [" << a.spec.psi_min << ", "
+    << a.spec.psi_max << "], u = omega R = " << a.spec.spin_speed_mps << " m/s";
+  write_measured_csv(a.out, d, c.str());
+  std::printf("wrote %s: %zu points (N = %.1f N)\n", a.out.c_str(), d.points.size(),
+              normal_load(patch));
+  return 0;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  CLI::App app{
+      "Fits the coupled dry-friction law (Kireenkov & Zhavoronok 2020, eqs. 5-7) to measured\n"
+      "diagrams Fx, Fy, Mz against the sliding velocity and spin (CSV, theory.md section 6),\n"
+      "and reports the parameters with 95 % confidence intervals."};
+  app.set_version_flag("--version", std::string(kName) + " " + kVersion);
+  std::string data_path, json_path, plots_dir, profile_spec, loss = "none",
+                                                             noise_model = "additive";
+  double radius = 0.0, loss_scale = 2.0;
+  std::optional<double> load, pressure;
+  std::vector<std::string> fixes;
+  std::vector<double> noise_scale;
+  app.add_option("data", data_path,
+                 "measured diagrams (CSV: vx_mps, vy_mps, omega_radps, Fx_N, ...)");
+  app.add_option("--radius", radius, "patch radius R [m]");
+  auto* load_opt =
+      app.add_option("--normal-load", load, "normal load N [N] (f = F0/N is reported)");
+  app.add_option("--profile", profile_spec,
+                 "pressure profile: CSV rho,pressure_Pa or uniform|hertz|seed-tire (fixes the "
+                 "shape constants; with a CSV or --pressure it also gives N)")
+      ->excludes(load_opt);
+  app.add_option("--pressure", pressure, "reference pressure p* [Pa] for a built-in profile");
+  app.add_option("--json", json_path, "write the report as JSON (whole or not at all)");
+  app.add_option("--plots", plots_dir, "write pictures (PNG via gnuplot) and their data here");
+  app.add_option("--fix", fixes, "hold a parameter fixed: NAME=VALUE (F0_N, a, M0_Nm, m, kx)");
+  app.add_option("--loss", loss, "robust loss")->check(CLI::IsMember({"none", "huber", "cauchy"}));
+  app.add_option("--loss-scale", loss_scale, "robust loss threshold in noise scales")
+      ->check(CLI::PositiveNumber);
+  app.add_option("--noise-model", noise_model, "noise: additive (constant per channel) or relative")
+      ->check(CLI::IsMember({"additive", "relative"}));
+  app.add_option("--noise-scale", noise_scale, "given noise scales Fx,Fy,Mz (else estimated)")
+      ->delimiter(',');
+
+  SimulateArgs sim;
+  auto* simulate =
+      app.add_subcommand("simulate", "write synthetic diagrams in the same CSV format");
+  simulate->add_option("--out", sim.out, "output CSV")->required();
+  simulate->add_option("--radius", sim.radius, "patch radius R [m]");
+  simulate->add_option("--profile", sim.profile, "CSV rho,pressure_Pa or uniform|hertz|seed-tire");
+  simulate->add_option("--pressure", sim.pressure, "reference pressure p* [Pa] (built-in profile)");
+  simulate->add_option("--friction", sim.friction, "friction coefficient f");
+  simulate->add_option("--kx", sim.kx, "pressure shift along x");
+  simulate->add_option("--ky", sim.ky, "pressure shift along y");
+  simulate->add_option("--kappa", sim.kappa, "lateral/longitudinal friction ratio");
+  simulate->add_option("--model", sim.model, "exact integrals or fractional law")
+      ->check(CLI::IsMember({"exact", "fractional"}));
+  simulate->add_option("--points", sim.spec.points, "number of points");
+  simulate->add_option("--psi-min", sim.spec.psi_min, "smallest psi = v/(omega R)");
+  simulate->add_option("--psi-max", sim.spec.psi_max, "largest psi");
+  simulate->add_option("--spin-speed", sim.spec.spin_speed_mps, "u = omega R [m/s]");
+  simulate->add_option("--direction", sim.spec.direction_rad, "sliding direction [rad]");
+  simulate->add_option("--noise", sim.noise,
+                       "none|relative-uniform|relative-gaussian|additive-gaussian");
+  simulate->add_option("--noise-level", sim.spec.noise_level, "noise amplitude (relative)");
+  simulate->add_option("--seed", sim.spec.seed, "random seed");
+  simulate->add_option("--time-step", sim.spec.time_step_s, "t_s step between points [s]");
+
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::ParseError& e) {
+    return app.exit(e);
+  }
+  try {
+    if (simulate->parsed()) return run_simulate(sim);
+    if (data_path.empty()) throw std::runtime_error("no data file given (see --help)");
+    if (radius == 0.0) throw std::runtime_error("--radius is required (patch radius in m)");
+    return run_fit(data_path, radius, load, profile_spec, pressure, fixes, loss, loss_scale,
+                   noise_model, noise_scale, json_path, plots_dir);
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "%s: error: %s\n", kName, e.what());
+    return 1;
+  }
+}

@@ -1,0 +1,34 @@
+// Presentation of an identification: the table on stdout, the JSON report, the pictures.
+#pragma once
+
+#include <nlohmann/json.hpp>
+#include <string>
+
+#include "contensou/identification.hpp"
+
+namespace contensou::app {
+
+struct RunInfo {
+  std::string file;
+  int points = 0;
+  int values = 0;
+  double radius_m = 0.0;
+  std::optional<double> normal_load_n;
+};
+
+// The fitted model as a JSON object (the MODEL of the report schema).
+nlohmann::json model_json(const std::string& name, const std::vector<std::string>& effects,
+                          const FitReport& fit);
+
+// The whole report: input, base, steps, accepted_effects, final, error_before, error_after.
+nlohmann::json report_json(const RunInfo& info, const FitReport& base);
+
+// A readable table of parameters and fit quality.
+std::string format_table(const RunInfo& info, const FitReport& fit);
+
+// Writes dir/fit.dat and one PNG per measured channel (measured and fitted against psi or
+// 1/psi on a log axis, residuals below). Returns false if the pictures could not be drawn.
+bool write_plots(const std::string& dir, const MeasuredData& data, const FitReport& fit,
+                 double radius_m);
+
+}  // namespace contensou::app

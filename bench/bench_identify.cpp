@@ -1,0 +1,38 @@
+// Time to fit the fractional law to a 120-value set (40 points x Fx, Fy, Mz), against the
+// same fit with the noise scales given (a single Ceres solve, no scale iteration) as the
+// in-process baseline.
+#include <benchmark/benchmark.h>
+
+#include "contensou/identification.hpp"
+#include "contensou/simulation.hpp"
+
+using namespace contensou;
+
+namespace {
+
+MeasuredData data_set() {
+  ContactPatch p;
+  p.profile = seed_tire_profile();
+  p.profile.kx = 0.14;
+  DiagramSpec s;
+  s.radius_m = p.radius_m;
+  s.points = 40;
+  s.noise_level = 0.01;
+  return simulate_diagrams(fractional_law_from_patch(p), s);
+}
+
+void BM_Fit(benchmark::State& state, bool given_scales) {
+  const MeasuredData d = data_set();
+  IdentificationOptions o;
+  o.radius_m = 0.087;
+  o.normal_load_n = 4535;
+  if (given_scales) o.noise_scale = std::array<double, 3>{13.6, 0.95, 0.72};
+  for (auto _ : state) benchmark::DoNotOptimize(fit_fractional_law(d, o));
+  state.counters["values"] = d.count(0) + d.count(1) + d.count(2);
+}
+
+}  // namespace
+
+BENCHMARK_CAPTURE(BM_Fit, estimated_noise_scales, false)->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(BM_Fit, given_noise_scales_baseline, true)->Unit(benchmark::kMillisecond);
+BENCHMARK_MAIN();

@@ -1,0 +1,66 @@
+#!/usr/bin/env bash
+# contensou-identify on bad input: a one-line error on stderr naming the problem, a non-zero
+# exit, and no report file. Usage: identify_bad_input.sh PATH/TO/contensou-identify
+set -u
+app="$1"
+dir=$(mktemp -d)
+trap 'rm -rf "$dir"' EXIT
+fails=0
+good="$dir/good.csv"
+"$app" simulate --out "$good" --points 12 --noise-level 0.01 > /dev/null || { echo "simulate failed"; exit 1; }
+
+# expect NAME EXPECTED_STDERR_FRAGMENT ARGS...
+expect() {
+  local name="$1" fragment="$2"
+  shift 2
+  rm -f "$dir/report.json"
+  "$@" > "$dir/out" 2> "$dir/err"
+  local rc=$?
+  local lines
+  lines=$(wc -l < "$dir/err")
+  if [ "$rc" -eq 0 ] || ! grep -qF -- "$fragment" "$dir/err" || [ "$lines" -ne 1 ] || [ -e "$dir/report.json" ]; then
+    echo "FAIL $name: rc=$rc, stderr ($lines lines): $(cat "$dir/err")"
+    fails=$((fails + 1))
+  else
+    echo "ok   $name: $(cat "$dir/err")"
+  fi
+}
+
+printf 'vx_mps,vy_mps,omega_radps,Fx_N\n1,0,10,-5\n1,0,abc,-5\n' > "$dir/malformed.csv"
+expect "malformed cell" "malformed.csv:3:5: not a number: 'abc'" \
+  "$app" "$dir/malformed.csv" --radius 0.1 --json "$dir/report.json"
+printf 'vx_mps,omega_radps,Fx_N\n1,10,-5\n' > "$dir/missing.csv"
+expect "missing column" "missing required column 'vy_mps'" \
+  "$app" "$dir/missing.csv" --radius 0.1 --json "$dir/report.json"
+printf 'vx_mps,vy_mps,omega_radps,Fx_N\n1,0,10,-5\n1,0,10,nan\n' > "$dir/nonfinite.csv"
+expect "non-finite value" "nonfinite.csv:3:8: non-finite value" \
+  "$app" "$dir/nonfinite.csv" --radius 0.1 --json "$dir/report.json"
+printf 'vx_mps,vy_mps,omega_radps,Fx_N\n1,0,10,-5\n2,0,10,-6\n' > "$dir/few.csv"
+expect "fewer points than parameters" "need more measured values than free parameters" \
+  "$app" "$dir/few.csv" --radius 0.1 --json "$dir/report.json"
+expect "zero radius" "--radius is required" "$app" "$good" --radius 0 --json "$dir/report.json"
+expect "negative radius" "radius = -0.1:" "$app" "$good" --radius -0.1 --json "$dir/report.json"
+expect "negative load" "normal-load = -4000" \
+  "$app" "$good" --radius 0.087 --normal-load -4000 --json "$dir/report.json"
+expect "unreadable profile" "no such file" \
+  "$app" "$good" --radius 0.087 --profile "$dir/nope.csv" --json "$dir/report.json"
+printf 'rho,pressure_Pa\n0,1\n0.5,x\n1,1\n' > "$dir/badprofile.csv"
+expect "malformed profile" "badprofile.csv:3:5: not a number" \
+  "$app" "$good" --radius 0.087 --profile "$dir/badprofile.csv" --json "$dir/report.json"
+expect "missing data file" "cannot open file" \
+  "$app" "$dir/absent.csv" --radius 0.087 --json "$dir/report.json"
+expect "bad --fix" "expected NAME=VALUE" \
+  "$app" "$good" --radius 0.087 --fix a --json "$dir/report.json"
+expect "unknown --fix" "fix = bogus" \
+  "$app" "$good" --radius 0.087 --fix bogus=1 --json "$dir/report.json"
+
+# And the good file gives a complete report.
+if "$app" "$good" --radius 0.087 --normal-load 4535 --json "$dir/report.json" > /dev/null &&
+   grep -q '"accepted_effects"' "$dir/report.json" && grep -q '"F0_N"' "$dir/report.json"; then
+  echo "ok   good input writes the report"
+else
+  echo "FAIL good input"
+  fails=$((fails + 1))
+fi
+echo "$((13 - fails)) passed, $fails failed"
+[ "$fails" -eq 0 ]
