@@ -9,6 +9,7 @@
 #include <numbers>
 #include <numeric>
 
+#include "contensou/effect_model.hpp"
 #include "contensou/error.hpp"
 #include "contensou/statistics.hpp"
 
@@ -16,60 +17,19 @@ namespace contensou {
 namespace {
 
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
-
-// Constants of the law that the diagrams do not identify: shapes of the cross-shift terms.
-struct ShapeConstants {
-  double c = 4.0, a_k = 1.0, mk_ratio = 0.375;  // uniform pressure: (4 A2/A5)^(2/3), 1, A3/(2A2)
-  double a = 1.0, m = 64.0 / 9.0;               // start values
-};
-
-ShapeConstants shape_constants(const IdentificationOptions& o) {
-  ShapeConstants s;
-  if (!o.profile) return s;
-  ContactPatch patch;
-  patch.radius_m = o.radius_m;
-  patch.profile = *o.profile;
-  patch.profile.kx = patch.profile.ky = 0.0;
-  const FractionalLaw<double> law = fractional_law_from_patch(patch);
-  s.c = law.c;
-  s.a_k = law.a_k;
-  s.mk_ratio = law.Mk / law.M0;
-  s.a = law.a;
-  s.m = law.m;
-  return s;
-}
-
-template <class T>
-FractionalLaw<T> law_from(const T* theta, const ShapeConstants& s, double R, double eps) {
-  FractionalLaw<T> law;
-  law.F0 = theta[0];
-  law.a = theta[1];
-  law.M0 = theta[2];
-  law.m = theta[3];
-  law.kx = theta[4];
-  law.ky = T(0.0);
-  law.kappa = T(1.0);
-  law.c = T(s.c);
-  law.a_k = T(s.a_k);
-  law.Mk = theta[2] * s.mk_ratio;
-  law.radius = R;
-  law.regularization_speed = eps;
-  return law;
-}
+constexpr int K = kModelParameters;
 
 // Weighted residuals of one point: w_c (y_c - yhat_c) for each measured channel c.
 struct PointResidual {
+  const ModelSpec* spec;
   Kinematics<double> k;
   std::array<double, kChannels> y{};
   std::array<double, kChannels> w{};  // 0 = not measured
   std::array<int, kChannels> slot{};  // residual index of each measured channel
-  ShapeConstants shape;
-  double R, eps;
 
   template <class T>
   bool operator()(const T* theta, T* r) const {
-    const FractionalLaw<T> law = law_from(theta, shape, R, eps);
-    const Resultants<T> f = fractional_resultants(law, Kinematics<T>{T(k.vx), T(k.vy), T(k.omega)});
+    const Resultants<T> f = evaluate_model(*spec, theta, k);
     const T model[kChannels] = {f.Fx, f.Fy, f.Mz};
     for (int c = 0; c < kChannels; ++c)
       if (w[c] != 0.0) r[slot[c]] = w[c] * (y[c] - model[c]);
@@ -84,13 +44,87 @@ double channel_peak(const MeasuredData& d, int c) {
   return m;
 }
 
-int parameter_index(const std::string& name) {
-  for (int i = 0; i < kLawParameters; ++i)
-    if (name == kLawParameterNames[i]) return i;
-  return -1;
+// Bounds that keep the model physical.
+void set_bounds(ceres::Problem& problem, double* theta) {
+  for (int i : {kF0, kA, kM0, kMShape}) problem.SetParameterLowerBound(theta, i, 1e-12);
+  problem.SetParameterLowerBound(theta, kKappa, 0.05);
+  problem.SetParameterLowerBound(theta, kSpeedRef, 1e-3);
+  problem.SetParameterLowerBound(theta, kSpeedDrop, -0.9);
+  problem.SetParameterUpperBound(theta, kSpeedDrop, 0.95);
+  for (int i : {kProfileB1, kProfileB2}) {
+    problem.SetParameterLowerBound(theta, i, -0.45);
+    problem.SetParameterUpperBound(theta, i, 0.45);
+  }
+  for (int i : {kKx, kKy}) {
+    problem.SetParameterLowerBound(theta, i, -0.95);
+    problem.SetParameterUpperBound(theta, i, 0.95);
+  }
+}
+
+std::vector<Resultants<double>> evaluate_all(const ModelSpec& spec, const double* theta,
+                                             const MeasuredData& d) {
+  std::vector<Resultants<double>> out;
+  out.reserve(d.points.size());
+  for (const MeasuredPoint& p : d.points) out.push_back(evaluate_model(spec, theta, p.kinematics));
+  return out;
+}
+
+// Whether a parameter belongs in the report of a model.
+bool reported(const ModelSpec& s, int i) {
+  if (s.exact_only && (i == kA || i == kM0 || i == kMShape || i == kShapeBlend)) return false;
+  if ((i == kProfileB1 || i == kProfileB2) && (s.profile_model || !s.uses_exact())) return false;
+  if (i == kSpeedRef) return s.free[kSpeedDrop] || s.value[kSpeedDrop] != 0.0;
+  return s.free[i] || i <= kKx || s.value[i] != parameter_info(i).null_value;
 }
 
 }  // namespace
+
+ModelSpec base_spec_for(const MeasuredData& data, const IdentificationOptions& o) {
+  detail::require_positive("radius", o.radius_m);
+  if (o.normal_load_n) detail::require_positive("normal load", *o.normal_load_n);
+  ModelSpec s = base_model_spec(o.radius_m, o.normal_load_n);
+  s.regularization_speed = o.regularization_speed;
+  if (o.profile) {
+    ContactPatch patch;
+    patch.radius_m = o.radius_m;
+    patch.profile = *o.profile;
+    patch.profile.kx = patch.profile.ky = 0.0;
+    const FractionalLaw<double> law = fractional_law_from_patch(patch);
+    s.c = law.c;
+    s.a_k = law.a_k;
+    s.mk_ratio = law.Mk / law.M0;
+    s.value[kA] = law.a;
+    s.value[kMShape] = law.m;
+    patch.friction = 1.0;
+    s.profile_model = make_exact_model(patch);
+  }
+  double f0 = 0.0, m0 = 0.0;
+  for (const MeasuredPoint& p : data.points) {
+    f0 = std::max(f0, std::hypot(p.force[0].value_or(0.0), p.force[1].value_or(0.0)));
+    m0 = std::max(m0, std::abs(p.force[2].value_or(0.0)));
+  }
+  s.value[kF0] = f0 > 0.0 ? f0 : 1.0;
+  s.value[kM0] = m0 > 0.0 ? m0 : 0.3 * s.value[kF0] * o.radius_m;
+  for (const auto& [name, value] : o.fixed) {
+    const int i = parameter_index_by_name(name);
+    if (i < 0 || i > kKx)
+      throw InvalidArgument("fix", name, "unknown parameter (use F0_N, a, M0_Nm, m or kx)");
+    detail::require_finite(name.c_str(), value);
+    s.free[i] = false;
+    s.value[i] = value;
+  }
+  return s;
+}
+
+NoiseSettings noise_settings_for(const IdentificationOptions& o) {
+  NoiseSettings n;
+  n.model = o.noise_model;
+  n.given = o.noise_scale;
+  n.loss = o.loss;
+  n.loss_scale = o.loss_scale;
+  n.iterations = o.noise_iterations;
+  return n;
+}
 
 const ParameterEstimate* FitReport::parameter(const std::string& name) const {
   for (const ParameterEstimate& p : parameters)
@@ -162,52 +196,30 @@ std::vector<ChannelDiagnostics> residual_diagnostics(const MeasuredData& data,
   return out;
 }
 
-FitReport fit_fractional_law(const MeasuredData& data, const IdentificationOptions& o) {
-  detail::require_positive("radius", o.radius_m);
-  if (o.normal_load_n) detail::require_positive("normal load", *o.normal_load_n);
-  std::array<bool, kLawParameters> is_fixed{};
-  double theta[kLawParameters];
-  for (const auto& [name, value] : o.fixed) {
-    const int i = parameter_index(name);
-    if (i < 0)
-      throw InvalidArgument("fix", name, "unknown parameter (use F0_N, a, M0_Nm, m or kx)");
-    detail::require_finite(name.c_str(), value);
-    is_fixed[i] = true;
-    theta[i] = value;
-  }
-  const ShapeConstants shape = shape_constants(o);
+FitReport fit_model(const MeasuredData& data, const ModelSpec& spec, const NoiseSettings& noise,
+                    std::array<double, K>* estimate, const std::vector<char>& use) {
+  detail::require_positive("radius", spec.radius_m);
+  auto used = [&](std::size_t i) { return use.empty() || use[i]; };
   std::array<int, kChannels> counts{};
   int n = 0;
-  for (int c = 0; c < kChannels; ++c) n += counts[c] = data.count(c);
-  const int p_free =
-      kLawParameters - static_cast<int>(std::count(is_fixed.begin(), is_fixed.end(), true));
+  for (std::size_t i = 0; i < data.points.size(); ++i)
+    if (used(i))
+      for (int c = 0; c < kChannels; ++c) counts[c] += data.points[i].force[c].has_value();
+  for (int c = 0; c < kChannels; ++c) n += counts[c];
+  const int p_free = static_cast<int>(std::count(spec.free.begin(), spec.free.end(), true));
   if (n <= p_free)
     throw InvalidArgument(
         "data", std::to_string(n) + " measured values",
         "need more measured values than free parameters (" + std::to_string(p_free) + ")");
+  std::array<double, K> theta = spec.value;
   std::array<double, kChannels> peak{};
   for (int c = 0; c < kChannels; ++c) peak[c] = channel_peak(data, c);
-
-  // Start values.
-  if (!is_fixed[0]) {
-    double f0 = 0.0;
-    for (const MeasuredPoint& p : data.points)
-      f0 = std::max(f0, std::hypot(p.force[0].value_or(0.0), p.force[1].value_or(0.0)));
-    theta[0] = f0 > 0.0 ? f0 : 1.0;
-  }
-  if (!is_fixed[1]) theta[1] = shape.a;
-  if (!is_fixed[2]) theta[2] = peak[2] > 0.0 ? peak[2] : 0.3 * theta[0] * o.radius_m;
-  if (!is_fixed[3]) theta[3] = shape.m;
-  if (!is_fixed[4]) theta[4] = 0.0;
-
-  // Noise scales: given, or estimated (start at 5 % of each channel's peak).
   std::array<double, kChannels> scale{};
   for (int c = 0; c < kChannels; ++c)
-    scale[c] =
-        o.noise_scale
-            ? (*o.noise_scale)[c]
-            : (o.noise_model == NoiseModel::relative ? 0.05 : 0.05 * std::max(peak[c], 1e-12));
-  if (o.noise_scale)
+    scale[c] = noise.given
+                   ? (*noise.given)[c]
+                   : (noise.model == NoiseModel::relative ? 0.05 : 0.05 * std::max(peak[c], 1e-12));
+  if (noise.given)
     for (int c = 0; c < kChannels; ++c)
       if (counts[c] > 0) detail::require_positive("noise scale", scale[c]);
   std::array<double, kChannels> floor_rel{};
@@ -217,25 +229,28 @@ FitReport fit_fractional_law(const MeasuredData& data, const IdentificationOptio
   FitReport report;
   ceres::Solver::Summary summary;
   const int rounds =
-      o.noise_scale && o.noise_model == NoiseModel::additive ? 1 : std::max(1, o.noise_iterations);
+      noise.given && noise.model == NoiseModel::additive ? 1 : std::max(1, noise.iterations);
   std::unique_ptr<ceres::Problem> problem;
+  std::vector<int> constant;
+  for (int i = 0; i < K; ++i)
+    if (!spec.free[i]) constant.push_back(i);
   for (int round = 0; round < rounds; ++round) {
     problem = std::make_unique<ceres::Problem>();
-    problem->AddParameterBlock(theta, kLawParameters);
+    problem->AddParameterBlock(theta.data(), K);
     for (std::size_t i = 0; i < data.points.size(); ++i) {
+      if (!used(i)) continue;
       const MeasuredPoint& pt = data.points[i];
-      auto* f =
-          new PointResidual{pt.kinematics, {}, {}, {}, shape, o.radius_m, o.regularization_speed};
+      auto* f = new PointResidual{&spec, pt.kinematics, {}, {}, {}};
       int m = 0;
       for (int c = 0; c < kChannels; ++c) {
         if (!pt.force[c]) continue;
         f->y[c] = *pt.force[c];
-        double s = scale[c];
-        if (o.noise_model == NoiseModel::relative) {
+        double sc = scale[c];
+        if (noise.model == NoiseModel::relative) {
           const double yh = prev.empty() ? *pt.force[c] : prev[i].vector()(c);
-          s *= std::max(std::abs(yh), floor_rel[c]);
+          sc *= std::max(std::abs(yh), floor_rel[c]);
         }
-        f->w[c] = 1.0 / s;
+        f->w[c] = 1.0 / sc;
         f->slot[c] = m++;
       }
       if (m == 0) {
@@ -243,44 +258,39 @@ FitReport fit_fractional_law(const MeasuredData& data, const IdentificationOptio
         continue;
       }
       ceres::LossFunction* loss = nullptr;
-      if (o.loss == RobustLoss::huber) loss = new ceres::HuberLoss(o.loss_scale);
-      if (o.loss == RobustLoss::cauchy) loss = new ceres::CauchyLoss(o.loss_scale);
+      if (noise.loss == RobustLoss::huber) loss = new ceres::HuberLoss(noise.loss_scale);
+      if (noise.loss == RobustLoss::cauchy) loss = new ceres::CauchyLoss(noise.loss_scale);
       problem->AddResidualBlock(
-          new ceres::AutoDiffCostFunction<PointResidual, ceres::DYNAMIC, kLawParameters>(f, m),
-          loss, theta);
+          new ceres::AutoDiffCostFunction<PointResidual, ceres::DYNAMIC, K>(f, m), loss,
+          theta.data());
     }
-    for (int i : {0, 1, 2, 3}) problem->SetParameterLowerBound(theta, i, 1e-12);
-    std::vector<int> constant;
-    for (int i = 0; i < kLawParameters; ++i)
-      if (is_fixed[i]) constant.push_back(i);
+    set_bounds(*problem, theta.data());
     if (!constant.empty())
-      problem->SetManifold(theta, new ceres::SubsetManifold(kLawParameters, constant));
+      problem->SetManifold(theta.data(), new ceres::SubsetManifold(K, constant));
     ceres::Solver::Options opt;
     opt.linear_solver_type = ceres::DENSE_QR;
     opt.max_num_iterations = 200;
-    opt.function_tolerance = 1e-14;
-    opt.gradient_tolerance = 1e-14;
-    opt.parameter_tolerance = 1e-12;
+    opt.function_tolerance = 1e-12;
+    opt.gradient_tolerance = 1e-12;
+    opt.parameter_tolerance = 1e-10;
     opt.logging_type = ceres::SILENT;
     ceres::Solve(opt, problem.get(), &summary);
 
-    report.law = law_from(theta, shape, o.radius_m, o.regularization_speed);
-    prev = predict(report.law, data);
-    if (o.noise_scale && o.noise_model == NoiseModel::additive) break;
-    // Re-estimate each channel's scatter with its share of the degrees of freedom.
+    prev = evaluate_all(spec, theta.data(), data);
+    if (noise.given && noise.model == NoiseModel::additive) break;
     double change = 0.0;
     for (int c = 0; c < kChannels; ++c) {
-      if (counts[c] == 0 || o.noise_scale) continue;
+      if (counts[c] == 0 || noise.given) continue;
       double ss = 0.0;
       for (std::size_t i = 0; i < data.points.size(); ++i) {
         const auto& y = data.points[i].force[c];
-        if (!y) continue;
+        if (!y || !used(i)) continue;
         double e = *y - prev[i].vector()(c);
-        if (o.noise_model == NoiseModel::relative)
+        if (noise.model == NoiseModel::relative)
           e /= std::max(std::abs(prev[i].vector()(c)), floor_rel[c]);
         ss += e * e;
       }
-      const double dof_c = counts[c] * (1.0 - double(p_free) / n);
+      const double dof_c = counts[c] * (1.0 - static_cast<double>(p_free) / n);
       const double s_new = std::sqrt(ss / std::max(dof_c, 1.0));
       if (s_new > 0.0) {
         change = std::max(change, std::abs(s_new - scale[c]) / scale[c]);
@@ -298,8 +308,8 @@ FitReport fit_fractional_law(const MeasuredData& data, const IdentificationOptio
   double cost = 0.0;
   problem->Evaluate(ceres::Problem::EvaluateOptions(), &cost, &residuals, nullptr, &crs);
   std::vector<int> free_index;
-  for (int i = 0; i < kLawParameters; ++i)
-    if (!is_fixed[i]) free_index.push_back(i);
+  for (int i = 0; i < K; ++i)
+    if (spec.free[i]) free_index.push_back(i);
   Eigen::MatrixXd J = Eigen::MatrixXd::Zero(crs.num_rows, crs.num_cols);
   for (int r = 0; r < crs.num_rows; ++r)
     for (int k = crs.rows[r]; k < crs.rows[r + 1]; ++k) J(r, crs.cols[k]) = crs.values[k];
@@ -308,7 +318,7 @@ FitReport fit_fractional_law(const MeasuredData& data, const IdentificationOptio
   for (double r : residuals) report.chi2 += r * r;
 
   // Parameters the data cannot determine: zero columns or the null space of J.
-  std::array<bool, kLawParameters> undetermined{};
+  std::array<bool, K> undetermined{};
   if (J.cols() > 0) {
     Eigen::VectorXd norms = J.colwise().norm();
     Eigen::MatrixXd Jn = J;
@@ -318,37 +328,35 @@ FitReport fit_fractional_law(const MeasuredData& data, const IdentificationOptio
     const Eigen::VectorXd sv = svd.singularValues();
     for (int j = 0; j < J.cols(); ++j)
       if (!(norms(j) > 1e-12 * norms.maxCoeff())) undetermined[free_index[j]] = true;
-    for (int s = 0; s < sv.size(); ++s) {
-      if (sv(s) > 1e-7 * sv(0)) continue;
+    for (int sidx = 0; sidx < sv.size(); ++sidx) {
+      if (sv(sidx) > 1e-7 * sv(0)) continue;
       for (int j = 0; j < J.cols(); ++j)
-        if (std::abs(svd.matrixV()(j, s)) > 0.3) undetermined[free_index[j]] = true;
+        if (std::abs(svd.matrixV()(j, sidx)) > 0.3) undetermined[free_index[j]] = true;
     }
   }
   std::vector<int> est;  // free and determined
   for (int i : free_index)
     if (!undetermined[i]) est.push_back(i);
   report.free_parameters = static_cast<int>(est.size());
-  // Each estimated noise scale uses up a degree of freedom too.
-  int estimated_scales = 0;
-  for (int c = 0; c < kChannels; ++c) estimated_scales += counts[c] > 0 && !o.noise_scale;
+  int estimated_scales = 0;  // each estimated noise scale uses up a degree of freedom too
+  for (int c = 0; c < kChannels; ++c) estimated_scales += counts[c] > 0 && !noise.given;
   report.degrees_of_freedom = report.residuals - report.free_parameters - estimated_scales;
 
-  Eigen::MatrixXd cov = Eigen::MatrixXd::Zero(kLawParameters, kLawParameters);
+  Eigen::MatrixXd cov = Eigen::MatrixXd::Zero(K, K);
   bool have_cov = false;
   if (!est.empty() && report.degrees_of_freedom > 0) {
-    std::vector<int> constant;
-    for (int i = 0; i < kLawParameters; ++i)
-      if (std::find(est.begin(), est.end(), i) == est.end()) constant.push_back(i);
-    if (!constant.empty())
-      problem->SetManifold(theta, new ceres::SubsetManifold(kLawParameters, constant));
+    std::vector<int> hold;
+    for (int i = 0; i < K; ++i)
+      if (std::find(est.begin(), est.end(), i) == est.end()) hold.push_back(i);
+    if (!hold.empty()) problem->SetManifold(theta.data(), new ceres::SubsetManifold(K, hold));
     ceres::Covariance::Options copt;
     copt.algorithm_type = ceres::DENSE_SVD;
     copt.null_space_rank = -1;
     ceres::Covariance covariance(copt);
-    std::vector<std::pair<const double*, const double*>> blocks{{theta, theta}};
+    std::vector<std::pair<const double*, const double*>> blocks{{theta.data(), theta.data()}};
     if (covariance.Compute(blocks, problem.get())) {
       std::vector<double> c(est.size() * est.size());
-      covariance.GetCovarianceBlockInTangentSpace(theta, theta, c.data());
+      covariance.GetCovarianceBlockInTangentSpace(theta.data(), theta.data(), c.data());
       const double s2 = report.chi2 / (report.residuals - report.free_parameters);
       for (std::size_t a = 0; a < est.size(); ++a)
         for (std::size_t b = 0; b < est.size(); ++b)
@@ -358,53 +366,78 @@ FitReport fit_fractional_law(const MeasuredData& data, const IdentificationOptio
   }
   const double tq =
       report.degrees_of_freedom > 0 ? student_t_quantile(0.975, report.degrees_of_freedom) : kNaN;
-  for (int i = 0; i < kLawParameters; ++i) {
+  for (int i = 0; i < K; ++i) {
+    if (!reported(spec, i)) continue;
     ParameterEstimate e;
-    e.name = kLawParameterNames[i];
-    e.unit = kLawParameterUnits[i];
+    e.name = parameter_info(i).name;
+    e.unit = parameter_info(i).unit;
     e.value = theta[i];
-    e.fixed = is_fixed[i];
-    e.determined = !undetermined[i] && !is_fixed[i];
+    e.fixed = !spec.free[i];
+    e.determined = spec.free[i] && !undetermined[i];
     if (e.determined && have_cov && cov(i, i) >= 0.0) {
       e.std_error = std::sqrt(cov(i, i));
       e.ci95 = std::array<double, 2>{e.value - tq * e.std_error, e.value + tq * e.std_error};
-    } else if (!is_fixed[i]) {
+    } else {
       e.determined = false;
     }
     report.parameters.push_back(e);
   }
-  if (o.normal_load_n) {
+  if (spec.normal_load_n) {
     const ParameterEstimate& F0 = report.parameters[0];
-    ParameterEstimate f{"f",         "1",           F0.value / *o.normal_load_n,
-                        F0.fixed,    F0.determined, F0.std_error / *o.normal_load_n,
+    const double N = *spec.normal_load_n;
+    ParameterEstimate f{"f",         "1", F0.value / N, F0.fixed, F0.determined, F0.std_error / N,
                         std::nullopt};
-    if (F0.ci95)
-      f.ci95 =
-          std::array<double, 2>{(*F0.ci95)[0] / *o.normal_load_n, (*F0.ci95)[1] / *o.normal_load_n};
+    if (F0.ci95) f.ci95 = std::array<double, 2>{(*F0.ci95)[0] / N, (*F0.ci95)[1] / N};
     report.parameters.push_back(f);
   }
   report.correlation = Eigen::MatrixXd::Identity(est.size(), est.size());
   for (std::size_t a = 0; a < est.size(); ++a) {
-    report.correlation_names.push_back(kLawParameterNames[est[a]]);
+    report.correlation_names.push_back(parameter_info(est[a]).name);
     for (std::size_t b = 0; b < est.size(); ++b)
       if (have_cov && cov(est[a], est[a]) > 0 && cov(est[b], est[b]) > 0)
         report.correlation(a, b) =
             cov(est[a], est[b]) / std::sqrt(cov(est[a], est[a]) * cov(est[b], est[b]));
   }
+  if (!spec.exact_only) {
+    FractionalLaw<double>& law = report.law;
+    law.F0 = theta[kF0];
+    law.a = theta[kA];
+    law.M0 = theta[kM0];
+    law.m = theta[kMShape];
+    law.kx = theta[kKx];
+    law.ky = theta[kKy];
+    law.kappa = theta[kKappa];
+    law.c = spec.c;
+    law.a_k = spec.a_k;
+    law.Mk = theta[kM0] * spec.mk_ratio;
+    law.radius = spec.radius_m;
+    law.regularization_speed = spec.regularization_speed;
+  }
 
-  // Quality: per-channel diagnostics, AIC/BIC of the Gaussian likelihood with the noise scales.
-  report.channels = residual_diagnostics(data, prev, o.radius_m, scale);
+  // Quality on the used points: diagnostics, Gaussian -2 log L with the noise scales.
+  MeasuredData subset;
+  std::vector<Resultants<double>> sub_pred;
+  for (std::size_t i = 0; i < data.points.size(); ++i)
+    if (used(i)) {
+      subset.points.push_back(data.points[i]);
+      sub_pred.push_back(prev[i]);
+    }
+  report.prediction = prev;
+  report.noise_scale = scale;
+  report.channels = residual_diagnostics(subset, sub_pred, spec.radius_m, scale);
   report.residual_white = std::all_of(report.channels.begin(), report.channels.end(),
                                       [](const ChannelDiagnostics& d) { return d.white; });
   double log_det = 0.0, err2 = 0.0;
-  for (std::size_t i = 0; i < data.points.size(); ++i)
+  for (std::size_t i = 0; i < data.points.size(); ++i) {
+    if (!used(i)) continue;
     for (int c = 0; c < kChannels; ++c) {
       if (!data.points[i].force[c]) continue;
-      double s = scale[c];
-      if (o.noise_model == NoiseModel::relative)
-        s *= std::max(std::abs(prev[i].vector()(c)), floor_rel[c]);
-      log_det += std::log(2.0 * std::numbers::pi * s * s);
+      double sc = scale[c];
+      if (noise.model == NoiseModel::relative)
+        sc *= std::max(std::abs(prev[i].vector()(c)), floor_rel[c]);
+      log_det += std::log(2.0 * std::numbers::pi * sc * sc);
     }
+  }
   const int measured = static_cast<int>(report.channels.size());
   for (int c = 0, k = 0; c < kChannels; ++c) {
     if (counts[c] == 0) continue;
@@ -412,11 +445,16 @@ FitReport fit_fractional_law(const MeasuredData& data, const IdentificationOptio
     err2 += rel * rel;
   }
   report.error = std::sqrt(err2 / std::max(measured, 1));
-  const int k_params = report.free_parameters + (o.noise_scale ? 0 : measured);
-  const double m2ll = log_det + report.chi2;
-  report.aic = m2ll + 2.0 * k_params;
-  report.bic = m2ll + k_params * std::log(static_cast<double>(report.residuals));
+  const int k_params = report.free_parameters + (noise.given ? 0 : measured);
+  report.m2ll = log_det + report.chi2;
+  report.aic = report.m2ll + 2.0 * k_params;
+  report.bic = report.m2ll + k_params * std::log(static_cast<double>(report.residuals));
+  if (estimate) *estimate = theta;
   return report;
+}
+
+FitReport fit_fractional_law(const MeasuredData& data, const IdentificationOptions& o) {
+  return fit_model(data, base_spec_for(data, o), noise_settings_for(o));
 }
 
 }  // namespace contensou

@@ -130,7 +130,7 @@ bool write_plots(const std::string& dir, const MeasuredData& data, const FitRepo
                  double radius_m) {
   std::filesystem::create_directories(dir);
   const std::vector<double> psi = sliding_spin_ratio(data, radius_m);
-  const std::vector<Resultants<double>> model = predict(fit.law, data);
+  const std::vector<Resultants<double>>& model = fit.prediction;
   std::vector<std::size_t> order(psi.size());
   std::iota(order.begin(), order.end(), 0);
   std::sort(order.begin(), order.end(),

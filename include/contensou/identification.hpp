@@ -19,6 +19,7 @@
 #include <string>
 #include <vector>
 
+#include "contensou/effect_model.hpp"
 #include "contensou/fractional_law.hpp"
 #include "contensou/measured_data.hpp"
 #include "contensou/pressure_profile.hpp"
@@ -75,8 +76,11 @@ struct FitReport {
   std::vector<ParameterEstimate> parameters;   // F0_N, a, M0_Nm, m, kx, then f if N is known
   std::vector<std::string> correlation_names;  // free, determined parameters
   Eigen::MatrixXd correlation;
-  std::vector<ChannelDiagnostics> channels;  // measured channels only
-  FractionalLaw<double> law;                 // the fitted law
+  std::vector<ChannelDiagnostics> channels;    // measured channels only
+  FractionalLaw<double> law;                   // the fitted law (base model)
+  std::vector<Resultants<double>> prediction;  // model at each data point
+  std::array<double, kChannels> noise_scale{};
+  double m2ll = 0.0;  // -2 log likelihood (Gaussian, with the noise scales)
   int residuals = 0;
   int free_parameters = 0;
   int degrees_of_freedom = 0;
@@ -95,6 +99,25 @@ struct FitReport {
 // Fits the fractional law to the data. Throws InvalidArgument for a non-positive radius or
 // load, an unknown --fix name, and for fewer measured values than free parameters.
 FitReport fit_fractional_law(const MeasuredData& data, const IdentificationOptions& options);
+
+// How a fit treats the noise (shared by the base fit and the closed loop).
+struct NoiseSettings {
+  NoiseModel model = NoiseModel::additive;
+  std::optional<std::array<double, kChannels>> given;  // fixed scales (else estimated)
+  RobustLoss loss = RobustLoss::none;
+  double loss_scale = 2.0;
+  int iterations = 6;
+};
+
+// Fits a general model (effect_model.hpp): its free parameters, from spec.value as start.
+// `use` selects the points (empty: all). Used by fit_fractional_law and the closed loop.
+FitReport fit_model(const MeasuredData& data, const ModelSpec& spec, const NoiseSettings& noise,
+                    std::array<double, kModelParameters>* estimate = nullptr,
+                    const std::vector<char>& use = {});
+
+// The spec of the base fit for the options (law, start values, fixed parameters).
+ModelSpec base_spec_for(const MeasuredData& data, const IdentificationOptions& options);
+NoiseSettings noise_settings_for(const IdentificationOptions& options);
 
 // Predictions of a law at the data's kinematics.
 std::vector<Resultants<double>> predict(const FractionalLaw<double>& law, const MeasuredData& data);

@@ -1,0 +1,101 @@
+// Implementation of evaluate_model (templated for ceres::Jet).
+#pragma once
+
+#include <cmath>
+#include <numbers>
+
+namespace contensou {
+
+namespace detail {
+
+// Chebyshev series integral: A^1 = (1/2) integral_0^1 P(t) dt, integral of T_k(2t - 1) over
+// [0, 1] = 1 / (1 - k^2) for even k, 0 for odd k.
+template <class T>
+T first_moment(const std::vector<T>& c) {
+  T s(0.0);
+  for (std::size_t k = 0; k < c.size(); k += 2) s += c[k] / (1.0 - static_cast<double>(k * k));
+  return 0.5 * s;
+}
+
+// Friction falling with slip speed, relative to its value at rest: 1 - beta (1 - e^(-w/w_s)).
+template <class T>
+T speed_factor(const T& beta, const T& w_ref, const T& w) {
+  using std::exp;
+  return 1.0 - beta * (1.0 - exp(-w / w_ref));
+}
+
+}  // namespace detail
+
+template <class T>
+Resultants<T> evaluate_model(const ModelSpec& s, const T* th, const Kinematics<double>& k) {
+  using std::sqrt;
+  const double R = s.radius_m;
+  const T lambda = s.exact_only ? T(1.0) : th[kShapeBlend];
+  Resultants<T> y{T(0.0), T(0.0), T(0.0)};
+  if (!s.exact_only) {
+    FractionalLaw<T> law;
+    law.F0 = th[kF0];
+    law.a = th[kA];
+    law.M0 = th[kM0];
+    law.m = th[kMShape];
+    law.kx = th[kKx];
+    law.ky = th[kKy];
+    law.kappa = th[kKappa];
+    law.c = T(s.c);
+    law.a_k = T(s.a_k);
+    law.Mk = th[kM0] * s.mk_ratio;
+    law.radius = R;
+    law.regularization_speed = s.regularization_speed;
+    const double u = std::abs(k.omega) * R;
+    const double w_eff = std::sqrt(k.vx * k.vx + k.vy * k.vy + (2.0 * u / 3.0) * (2.0 * u / 3.0));
+    const T phi = detail::speed_factor(th[kSpeedDrop], th[kSpeedRef], T(w_eff));
+    law.F0 *= phi;
+    law.M0 *= phi;
+    law.Mk *= phi;
+    const Resultants<T> r = fractional_resultants(law, Kinematics<T>{T(k.vx), T(k.vy), T(k.omega)});
+    const T wl = 1.0 - lambda;
+    y = {wl * r.Fx, wl * r.Fy, wl * r.Mz};
+  }
+  if (s.uses_exact()) {
+    ExactModel<T> m;
+    if (s.profile_model) {
+      m = promote<T>(*s.profile_model);
+    } else {
+      m = promote<T>(ExactModel<double>{});
+      m.radius = R;
+      m.chebyshev = {T(1.0), th[kProfileB1], th[kProfileB2]};
+      update_chord_transforms(m);
+      m.load_area = 2.0 * std::numbers::pi * R * R * 0.5;
+    }
+    const T load_area = s.profile_model
+                            ? T(s.profile_model->load_area)
+                            : 2.0 * std::numbers::pi * R * R * detail::first_moment(m.chebyshev);
+    m.friction = T(1.0);
+    m.friction_scale = 1.0;
+    m.pressure = th[kF0] / load_area;  // f p* with f folded in: F0 = f p* (N / p*)
+    m.kx = th[kKx] * (m.radius / R);
+    m.ky = th[kKy] * (m.radius / R);
+    m.kappa = th[kKappa];
+    if (s.speed_in_exact) {
+      // f(w) = 1 - beta (1 - exp(-w / w_s)): the law's Stribeck form with exponent 1.
+      m.slip_speed = SlipSpeedFriction<T>{T(1.0), 1.0 - th[kSpeedDrop], th[kSpeedRef], T(1.0)};
+    }
+    const Resultants<T> r =
+        exact_resultants(m, Kinematics<T>{T(k.vx), T(k.vy), T(k.omega)}, {s.exact_tolerance})
+            .resultants;
+    y.Fx += lambda * r.Fx;
+    y.Fy += lambda * r.Fy;
+    y.Mz += lambda * r.Mz;
+  }
+  // Rig: offsets and crosstalk.
+  const T base[3] = {y.Fx, y.Fy, y.Mz};
+  T out[3];
+  for (int c = 0; c < 3; ++c) {
+    out[c] = base[c] + th[offset_parameter(c)];
+    for (int d = 0; d < 3; ++d)
+      if (d != c) out[c] += th[crosstalk_parameter(c, d)] * base[d];
+  }
+  return {out[0], out[1], out[2]};
+}
+
+}  // namespace contensou
