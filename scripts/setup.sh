@@ -25,6 +25,7 @@ cmake --build build --parallel
 echo
 ./build/examples/contensou-model-error
 echo
-# Identification on the bundled diagrams: table on stdout, pictures and JSON in out/identify.
-./build/apps/contensou-identify data/seed_tire_diagrams.csv --radius 0.087 --normal-load 4535 \
-  --plots out/identify --json out/identify/report.json
+# Identification and the closed loop on the bundled diagrams: tables on stdout, pictures and
+# the JSON report in out/identify.
+./build/apps/contensou-identify data/seed_tire_diagrams.csv --radius 0.087 \
+  --profile seed-tire --pressure 2.1e5 --plots out/identify --json out/identify/report.json

@@ -19,23 +19,32 @@ namespace {
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 constexpr int K = kModelParameters;
 
-// Weighted residuals of one point: w_c (y_c - yhat_c) for each measured channel c.
+// Weighted residuals of one point, w_c (y_c - yhat_c) for each measured channel c, as a
+// function of the active parameters only (packed); the others are held at theta_const.
 struct PointResidual {
   const ModelSpec* spec;
   Kinematics<double> k;
   std::array<double, kChannels> y{};
   std::array<double, kChannels> w{};  // 0 = not measured
   std::array<int, kChannels> slot{};  // residual index of each measured channel
+  const std::vector<int>* active = nullptr;
+  const std::array<double, K>* theta_const = nullptr;
 
   template <class T>
-  bool operator()(const T* theta, T* r) const {
-    const Resultants<T> f = evaluate_model(*spec, theta, k);
+  bool operator()(T const* const* packed, T* r) const {
+    std::array<T, K> theta;
+    for (int i = 0; i < K; ++i) theta[i] = T((*theta_const)[i]);
+    for (std::size_t j = 0; j < active->size(); ++j) theta[(*active)[j]] = packed[0][j];
+    const Resultants<T> f = evaluate_model(*spec, theta.data(), k);
     const T model[kChannels] = {f.Fx, f.Fy, f.Mz};
     for (int c = 0; c < kChannels; ++c)
       if (w[c] != 0.0) r[slot[c]] = w[c] * (y[c] - model[c]);
     return true;
   }
 };
+
+// Derivatives in passes of 8 parameters (ceres::Jet<double, 8>).
+using PointCost = ceres::DynamicAutoDiffCostFunction<PointResidual, 8>;
 
 double channel_peak(const MeasuredData& d, int c) {
   double m = 0.0;
@@ -44,21 +53,86 @@ double channel_peak(const MeasuredData& d, int c) {
   return m;
 }
 
-// Bounds that keep the model physical.
-void set_bounds(ceres::Problem& problem, double* theta) {
-  for (int i : {kF0, kA, kM0, kMShape}) problem.SetParameterLowerBound(theta, i, 1e-12);
-  problem.SetParameterLowerBound(theta, kKappa, 0.05);
-  problem.SetParameterLowerBound(theta, kSpeedRef, 1e-3);
-  problem.SetParameterLowerBound(theta, kSpeedDrop, -0.9);
-  problem.SetParameterUpperBound(theta, kSpeedDrop, 0.95);
-  for (int i : {kProfileB1, kProfileB2}) {
-    problem.SetParameterLowerBound(theta, i, -0.45);
-    problem.SetParameterUpperBound(theta, i, 0.45);
+// Bounds that keep the model physical, on the packed active parameters.
+void set_bounds(ceres::Problem& problem, double* packed, const std::vector<int>& active) {
+  for (std::size_t j = 0; j < active.size(); ++j) {
+    const int i = active[j], jj = static_cast<int>(j);
+    auto bound = [&](double lo, double hi) {
+      problem.SetParameterLowerBound(packed, jj, lo);
+      problem.SetParameterUpperBound(packed, jj, hi);
+    };
+    switch (i) {
+      case kF0:
+      case kA:
+      case kM0:
+      case kMShape:
+        problem.SetParameterLowerBound(packed, jj, 1e-12);
+        break;
+      case kKappa:
+        bound(0.05, 20.0);
+        break;
+      case kSpeedRef:
+        problem.SetParameterLowerBound(packed, jj, 1e-3);
+        break;
+      case kSpeedDrop:
+        bound(-0.9, 0.95);
+        break;
+      case kProfileB1:
+      case kProfileB2:
+        bound(-0.45, 0.45);
+        break;
+      case kKx:
+      case kKy:
+        bound(-0.95, 0.95);
+        break;
+      case kShapeBlend:
+        bound(0.0, 1.0);
+        break;
+      default:
+        break;
+    }
   }
-  for (int i : {kKx, kKy}) {
-    problem.SetParameterLowerBound(theta, i, -0.95);
-    problem.SetParameterUpperBound(theta, i, 0.95);
+}
+
+// Adds one residual block per point with measured values (weights from scale, and from the
+// prediction for relative noise); returns the number of residuals.
+int add_points(ceres::Problem& problem, const MeasuredData& data, const ModelSpec& spec,
+               const std::vector<int>& active, const std::array<double, K>& theta_const,
+               double* packed, const std::array<double, kChannels>& scale, NoiseModel noise,
+               const std::array<double, kChannels>& floor_rel,
+               const std::vector<Resultants<double>>& prediction, const std::vector<char>& use,
+               RobustLoss loss_kind, double loss_scale) {
+  int total = 0;
+  for (std::size_t i = 0; i < data.points.size(); ++i) {
+    if (!use.empty() && !use[i]) continue;
+    const MeasuredPoint& pt = data.points[i];
+    auto* f = new PointResidual{&spec, pt.kinematics, {}, {}, {}, &active, &theta_const};
+    int m = 0;
+    for (int c = 0; c < kChannels; ++c) {
+      if (!pt.force[c]) continue;
+      f->y[c] = *pt.force[c];
+      double sc = scale[c];
+      if (noise == NoiseModel::relative) {
+        const double yh = prediction.empty() ? *pt.force[c] : prediction[i].vector()(c);
+        sc *= std::max(std::abs(yh), floor_rel[c]);
+      }
+      f->w[c] = 1.0 / sc;
+      f->slot[c] = m++;
+    }
+    if (m == 0) {
+      delete f;
+      continue;
+    }
+    auto* cost = new PointCost(f);
+    cost->AddParameterBlock(static_cast<int>(active.size()));
+    cost->SetNumResiduals(m);
+    ceres::LossFunction* loss = nullptr;
+    if (loss_kind == RobustLoss::huber) loss = new ceres::HuberLoss(loss_scale);
+    if (loss_kind == RobustLoss::cauchy) loss = new ceres::CauchyLoss(loss_scale);
+    problem.AddResidualBlock(cost, loss, packed);
+    total += m;
   }
+  return total;
 }
 
 std::vector<Resultants<double>> evaluate_all(const ModelSpec& spec, const double* theta,
@@ -231,42 +305,20 @@ FitReport fit_model(const MeasuredData& data, const ModelSpec& spec, const Noise
   const int rounds =
       noise.given && noise.model == NoiseModel::additive ? 1 : std::max(1, noise.iterations);
   std::unique_ptr<ceres::Problem> problem;
-  std::vector<int> constant;
+  std::vector<int> active;
   for (int i = 0; i < K; ++i)
-    if (!spec.free[i]) constant.push_back(i);
+    if (spec.free[i]) active.push_back(i);
+  std::vector<double> packed(active.size());
+  for (std::size_t j = 0; j < active.size(); ++j) packed[j] = theta[active[j]];
+  const std::array<double, K> theta_const = theta;
+  auto unpack = [&] {
+    for (std::size_t j = 0; j < active.size(); ++j) theta[active[j]] = packed[j];
+  };
   for (int round = 0; round < rounds; ++round) {
     problem = std::make_unique<ceres::Problem>();
-    problem->AddParameterBlock(theta.data(), K);
-    for (std::size_t i = 0; i < data.points.size(); ++i) {
-      if (!used(i)) continue;
-      const MeasuredPoint& pt = data.points[i];
-      auto* f = new PointResidual{&spec, pt.kinematics, {}, {}, {}};
-      int m = 0;
-      for (int c = 0; c < kChannels; ++c) {
-        if (!pt.force[c]) continue;
-        f->y[c] = *pt.force[c];
-        double sc = scale[c];
-        if (noise.model == NoiseModel::relative) {
-          const double yh = prev.empty() ? *pt.force[c] : prev[i].vector()(c);
-          sc *= std::max(std::abs(yh), floor_rel[c]);
-        }
-        f->w[c] = 1.0 / sc;
-        f->slot[c] = m++;
-      }
-      if (m == 0) {
-        delete f;
-        continue;
-      }
-      ceres::LossFunction* loss = nullptr;
-      if (noise.loss == RobustLoss::huber) loss = new ceres::HuberLoss(noise.loss_scale);
-      if (noise.loss == RobustLoss::cauchy) loss = new ceres::CauchyLoss(noise.loss_scale);
-      problem->AddResidualBlock(
-          new ceres::AutoDiffCostFunction<PointResidual, ceres::DYNAMIC, K>(f, m), loss,
-          theta.data());
-    }
-    set_bounds(*problem, theta.data());
-    if (!constant.empty())
-      problem->SetManifold(theta.data(), new ceres::SubsetManifold(K, constant));
+    add_points(*problem, data, spec, active, theta_const, packed.data(), scale, noise.model,
+               floor_rel, prev, use, noise.loss, noise.loss_scale);
+    set_bounds(*problem, packed.data(), active);
     ceres::Solver::Options opt;
     opt.linear_solver_type = ceres::DENSE_QR;
     opt.max_num_iterations = 200;
@@ -275,7 +327,7 @@ FitReport fit_model(const MeasuredData& data, const ModelSpec& spec, const Noise
     opt.parameter_tolerance = 1e-10;
     opt.logging_type = ceres::SILENT;
     ceres::Solve(opt, problem.get(), &summary);
-
+    unpack();
     prev = evaluate_all(spec, theta.data(), data);
     if (noise.given && noise.model == NoiseModel::additive) break;
     double change = 0.0;
@@ -307,9 +359,7 @@ FitReport fit_model(const MeasuredData& data, const ModelSpec& spec, const Noise
   std::vector<double> residuals;
   double cost = 0.0;
   problem->Evaluate(ceres::Problem::EvaluateOptions(), &cost, &residuals, nullptr, &crs);
-  std::vector<int> free_index;
-  for (int i = 0; i < K; ++i)
-    if (spec.free[i]) free_index.push_back(i);
+  const std::vector<int>& free_index = active;
   Eigen::MatrixXd J = Eigen::MatrixXd::Zero(crs.num_rows, crs.num_cols);
   for (int r = 0; r < crs.num_rows; ++r)
     for (int k = crs.rows[r]; k < crs.rows[r + 1]; ++k) J(r, crs.cols[k]) = crs.values[k];
@@ -345,18 +395,20 @@ FitReport fit_model(const MeasuredData& data, const ModelSpec& spec, const Noise
   Eigen::MatrixXd cov = Eigen::MatrixXd::Zero(K, K);
   bool have_cov = false;
   if (!est.empty() && report.degrees_of_freedom > 0) {
-    std::vector<int> hold;
-    for (int i = 0; i < K; ++i)
-      if (std::find(est.begin(), est.end(), i) == est.end()) hold.push_back(i);
-    if (!hold.empty()) problem->SetManifold(theta.data(), new ceres::SubsetManifold(K, hold));
+    std::vector<int> hold;  // packed positions of undetermined parameters
+    for (std::size_t j = 0; j < active.size(); ++j)
+      if (undetermined[active[j]]) hold.push_back(static_cast<int>(j));
+    if (!hold.empty())
+      problem->SetManifold(packed.data(),
+                           new ceres::SubsetManifold(static_cast<int>(active.size()), hold));
     ceres::Covariance::Options copt;
     copt.algorithm_type = ceres::DENSE_SVD;
     copt.null_space_rank = -1;
     ceres::Covariance covariance(copt);
-    std::vector<std::pair<const double*, const double*>> blocks{{theta.data(), theta.data()}};
+    std::vector<std::pair<const double*, const double*>> blocks{{packed.data(), packed.data()}};
     if (covariance.Compute(blocks, problem.get())) {
       std::vector<double> c(est.size() * est.size());
-      covariance.GetCovarianceBlockInTangentSpace(theta.data(), theta.data(), c.data());
+      covariance.GetCovarianceBlockInTangentSpace(packed.data(), packed.data(), c.data());
       const double s2 = report.chi2 / (report.residuals - report.free_parameters);
       for (std::size_t a = 0; a < est.size(); ++a)
         for (std::size_t b = 0; b < est.size(); ++b)
@@ -451,6 +503,46 @@ FitReport fit_model(const MeasuredData& data, const ModelSpec& spec, const Noise
   report.bic = report.m2ll + k_params * std::log(static_cast<double>(report.residuals));
   if (estimate) *estimate = theta;
   return report;
+}
+
+void weighted_jacobian(const MeasuredData& data, const ModelSpec& spec,
+                       const std::array<double, K>& theta_in,
+                       const std::array<double, kChannels>& scale, NoiseModel noise,
+                       Eigen::VectorXd* r, Eigen::MatrixXd* J, const std::vector<char>& use,
+                       std::vector<int>* row_point) {
+  std::array<double, K> theta = theta_in;
+  std::array<double, kChannels> floor_rel{};
+  for (int c = 0; c < kChannels; ++c) floor_rel[c] = 0.05 * std::max(channel_peak(data, c), 1e-12);
+  const std::vector<Resultants<double>> pred = evaluate_all(spec, theta.data(), data);
+  // Columns for the parameters that are free or scored (non-null or listed as free); the
+  // others get zero columns.
+  std::vector<int> active;
+  for (int i = 0; i < K; ++i)
+    if (spec.free[i] || spec.value[i] != parameter_info(i).null_value || i <= kKx ||
+        (i >= kKy && i <= kXMzFy) || i == kShapeBlend)
+      active.push_back(i);
+  std::vector<double> packed(active.size());
+  for (std::size_t j = 0; j < active.size(); ++j) packed[j] = theta[active[j]];
+  ceres::Problem problem;
+  add_points(problem, data, spec, active, theta, packed.data(), scale, noise, floor_rel, pred, use,
+             RobustLoss::none, 1.0);
+  if (row_point) {
+    row_point->clear();
+    for (std::size_t i = 0; i < data.points.size(); ++i) {
+      if (!use.empty() && !use[i]) continue;
+      for (int c = 0; c < kChannels; ++c)
+        if (data.points[i].force[c]) row_point->push_back(static_cast<int>(i));
+    }
+  }
+  ceres::CRSMatrix crs;
+  std::vector<double> res;
+  double cost = 0.0;
+  problem.Evaluate(ceres::Problem::EvaluateOptions(), &cost, &res, nullptr, &crs);
+  *r = Eigen::Map<Eigen::VectorXd>(res.data(), static_cast<Eigen::Index>(res.size()));
+  *J = Eigen::MatrixXd::Zero(crs.num_rows, K);
+  for (int row = 0; row < crs.num_rows; ++row)
+    for (int k = crs.rows[row]; k < crs.rows[row + 1]; ++k)
+      (*J)(row, active[crs.cols[k]]) = crs.values[k];
 }
 
 FitReport fit_fractional_law(const MeasuredData& data, const IdentificationOptions& o) {

@@ -1,6 +1,7 @@
 #include "contensou/simulation.hpp"
 
 #include <cmath>
+#include <numbers>
 #include <random>
 
 #include "contensou/error.hpp"
@@ -64,7 +65,18 @@ MeasuredData simulate_with(const DiagramSpec& s, Eval&& eval) {
   MeasuredData d = diagram_kinematics(s);
   for (MeasuredPoint& p : d.points) {
     const Resultants<double> r = eval(p.kinematics);
-    p.force = {r.Fx, r.Fy, r.Mz};
+    const double t = p.time.value_or(0.0);
+    const double y[kChannels] = {
+        r.Fx,
+        r.Fy + s.rig.periodic_amplitude_n *
+                   std::sin(2.0 * std::numbers::pi * t / s.rig.periodic_period_s),
+        r.Mz - s.rig.viscous_torque * p.kinematics.omega};
+    for (int c = 0; c < kChannels; ++c) {
+      double v = y[c] + s.rig.offset[c];
+      for (int src = 0; src < kChannels; ++src)
+        if (src != c) v += s.rig.crosstalk[c][src] * y[src];
+      p.force[c] = v;
+    }
   }
   add_noise(d, s);
   return d;

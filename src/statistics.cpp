@@ -117,3 +117,43 @@ double durbin_watson(const std::vector<double>& x) {
 }
 
 }  // namespace contensou
+
+namespace contensou {
+
+double upper_incomplete_gamma(double a, double x) {
+  detail::require_positive("a", a);
+  if (x <= 0.0) return 1.0;
+  const double log_front = -x + a * std::log(x) - std::lgamma(a);
+  if (x < a + 1.0) {  // series for P(a, x)
+    double term = 1.0 / a, sum = term;
+    for (int n = 1; n < 1000; ++n) {
+      term *= x / (a + n);
+      sum += term;
+      if (std::abs(term) < 1e-16 * std::abs(sum)) break;
+    }
+    return 1.0 - sum * std::exp(log_front);
+  }
+  // Continued fraction for Q(a, x) (modified Lentz).
+  constexpr double tiny = 1e-300;
+  double b = x + 1.0 - a, c = 1.0 / tiny, d = 1.0 / b, h = d;
+  for (int i = 1; i < 1000; ++i) {
+    const double an = -i * (i - a);
+    b += 2.0;
+    d = an * d + b;
+    if (std::abs(d) < tiny) d = tiny;
+    c = b + an / c;
+    if (std::abs(c) < tiny) c = tiny;
+    d = 1.0 / d;
+    const double del = d * c;
+    h *= del;
+    if (std::abs(del - 1.0) < 1e-16) break;
+  }
+  return std::exp(log_front) * h;
+}
+
+double chi2_survival(double x, double k) {
+  detail::require_positive("k", k);
+  return upper_incomplete_gamma(0.5 * k, 0.5 * x);
+}
+
+}  // namespace contensou

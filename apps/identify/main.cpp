@@ -1,4 +1,6 @@
 // contensou-identify: fit the fractional law to measured friction diagrams (and simulate them).
+#include <unistd.h>
+
 #include <CLI/CLI.hpp>
 #include <cstdio>
 #include <filesystem>
@@ -54,7 +56,8 @@ int run_fit(const std::string& data_path, double radius, std::optional<double> l
             const std::string& profile_spec, std::optional<double> pressure,
             const std::vector<std::string>& fixes, const std::string& loss, double loss_scale,
             const std::string& noise_model, const std::vector<double>& noise_scale,
-            const std::string& json_path, const std::string& plots_dir) {
+            const std::string& json_path, const std::string& plots_dir, bool loop_on, double alpha,
+            bool speed_inside) {
   IdentificationOptions o;
   o.radius_m = radius;
   detail::require_positive("--radius", radius);
@@ -84,17 +87,45 @@ int run_fit(const std::string& data_path, double radius, std::optional<double> l
     o.noise_scale = std::array<double, 3>{noise_scale[0], noise_scale[1], noise_scale[2]};
   }
   const MeasuredData data = read_measured_csv(data_path);
-  const FitReport fit = fit_fractional_law(data, o);
   app::RunInfo info{data_path, static_cast<int>(data.points.size()),
                     data.count(0) + data.count(1) + data.count(2), radius, o.normal_load_n};
-  std::printf("%s %s: fractional law (seed eqs. 5-7)\n%s", kName, kVersion,
-              app::format_table(info, fit).c_str());
-  if (!plots_dir.empty()) {
-    if (app::write_plots(plots_dir, data, fit, radius))
+  if (!loop_on) {
+    const FitReport fit = fit_fractional_law(data, o);
+    std::printf("%s %s: fractional law (seed eqs. 5-7)\n%s", kName, kVersion,
+                app::format_table(info, fit).c_str());
+    if (!plots_dir.empty() && app::write_plots(plots_dir, data, fit, radius))
       std::printf("pictures: %s/fit_*.png\n", plots_dir.c_str());
+    if (!json_path.empty()) {
+      app::write_file_atomically(json_path, app::report_json(info, fit).dump(2) + "\n");
+      std::printf("report: %s\n", json_path.c_str());
+    }
+    return 0;
+  }
+  ClosedLoopOptions lo;
+  lo.alpha = alpha;
+  lo.speed_inside_integrals = speed_inside;
+  if (isatty(fileno(stderr)))  // progress for people; in scripts stderr keeps errors only
+    lo.progress = [](const std::string& line) {
+      std::fprintf(stderr, "[closed loop] %s\n", line.c_str());
+    };
+  const ClosedLoopReport loop = close_the_loop(data, o, lo);
+  std::printf("%s %s: base model, the fractional law (seed eqs. 5-7)\n%s", kName, kVersion,
+              app::format_table(info, loop.base).c_str());
+  std::printf("%s", app::format_loop(loop).c_str());
+  if (!loop.accepted_effects.empty())
+    std::printf(
+        "\nfinal model (%s):\n%s",
+        loop.final_spec.uses_exact() ? "exact integrals over the profile" : "fractional law",
+        app::format_table(info, loop.final_fit).c_str());
+  if (!plots_dir.empty()) {
+    const bool a = app::write_plots(plots_dir, data, loop.final_fit, radius);
+    const bool b = app::write_loop_plots(plots_dir, data, loop, radius);
+    if (a && b)
+      std::printf("pictures: %s/fit_*.png (final model), %s/loop_step_*.png\n", plots_dir.c_str(),
+                  plots_dir.c_str());
   }
   if (!json_path.empty()) {
-    app::write_file_atomically(json_path, app::report_json(info, fit).dump(2) + "\n");
+    app::write_file_atomically(json_path, app::loop_report_json(info, loop).dump(2) + "\n");
     std::printf("report: %s\n", json_path.c_str());
   }
   return 0;
@@ -109,6 +140,8 @@ struct SimulateArgs {
   std::string model = "exact";
   DiagramSpec spec;
   std::string noise = "additive-gaussian";
+  double speed_drop = 0.0, speed_ref = 5.0;
+  std::vector<double> offset;
 };
 
 int run_simulate(SimulateArgs a) {
@@ -122,6 +155,10 @@ int run_simulate(SimulateArgs a) {
   patch.profile = p.profile;
   patch.profile.kx = a.kx;
   patch.profile.ky = a.ky;
+  if (a.speed_drop != 0.0)
+    patch.slip_speed_friction =
+        SlipSpeedFriction<double>{a.friction, a.friction * (1.0 - a.speed_drop), a.speed_ref, 1.0};
+  if (a.offset.size() == 3) a.spec.rig.offset = {a.offset[0], a.offset[1], a.offset[2]};
   validate(patch);
   a.spec.radius_m = a.radius;
   a.spec.noise = parse_noise(a.noise);
@@ -157,6 +194,8 @@ int main(int argc, char** argv) {
   std::optional<double> load, pressure;
   std::vector<std::string> fixes;
   std::vector<double> noise_scale;
+  bool no_loop = false, speed_inside = false;
+  double alpha = 1e-3;
   app.add_option("data", data_path,
                  "measured diagrams (CSV: vx_mps, vy_mps, omega_radps, Fx_N, ...)");
   app.add_option("--radius", radius, "patch radius R [m]");
@@ -177,6 +216,12 @@ int main(int argc, char** argv) {
       ->check(CLI::IsMember({"additive", "relative"}));
   app.add_option("--noise-scale", noise_scale, "given noise scales Fx,Fy,Mz (else estimated)")
       ->delimiter(',');
+  app.add_flag("--no-loop", no_loop, "fit the fractional law only; do not close the loop");
+  app.add_option("--alpha", alpha, "closed loop: family-wise level of the LR test per step")
+      ->check(CLI::Range(1e-12, 0.5));
+  app.add_flag("--speed-inside-integrals", speed_inside,
+               "closed loop: slip-speed friction at the local speed inside the exact integrals "
+               "(exact, much slower)");
 
   SimulateArgs sim;
   auto* simulate =
@@ -201,6 +246,16 @@ int main(int argc, char** argv) {
   simulate->add_option("--noise-level", sim.spec.noise_level, "noise amplitude (relative)");
   simulate->add_option("--seed", sim.spec.seed, "random seed");
   simulate->add_option("--time-step", sim.spec.time_step_s, "t_s step between points [s]");
+  simulate->add_option("--speed-drop", sim.speed_drop,
+                       "friction falls by this fraction with slip speed (inside the integrals)");
+  simulate->add_option("--speed-ref", sim.speed_ref, "reference slip speed w_s [m/s]");
+  simulate->add_option("--offset", sim.offset, "channel offsets Fx,Fy,Mz [N, N, N m]")
+      ->delimiter(',')
+      ->expected(3);
+  simulate->add_option("--crosstalk-mz-fx", sim.spec.rig.crosstalk[2][0],
+                       "Mz picks up this many metres times Fx");
+  simulate->add_option("--periodic", sim.spec.rig.periodic_amplitude_n,
+                       "a periodic disturbance of Fy in time [N] (outside the catalogue)");
 
   try {
     app.parse(argc, argv);
@@ -212,7 +267,7 @@ int main(int argc, char** argv) {
     if (data_path.empty()) throw std::runtime_error("no data file given (see --help)");
     if (radius == 0.0) throw std::runtime_error("--radius is required (patch radius in m)");
     return run_fit(data_path, radius, load, profile_spec, pressure, fixes, loss, loss_scale,
-                   noise_model, noise_scale, json_path, plots_dir);
+                   noise_model, noise_scale, json_path, plots_dir, !no_loop, alpha, speed_inside);
   } catch (const std::exception& e) {
     std::fprintf(stderr, "%s: error: %s\n", kName, e.what());
     return 1;

@@ -4,6 +4,7 @@
 #include <nlohmann/json.hpp>
 #include <string>
 
+#include "contensou/closed_loop.hpp"
 #include "contensou/identification.hpp"
 
 namespace contensou::app {
@@ -22,6 +23,16 @@ nlohmann::json model_json(const std::string& name, const std::vector<std::string
 
 // The whole report: input, base, steps, accepted_effects, final, error_before, error_after.
 nlohmann::json report_json(const RunInfo& info, const FitReport& base);
+
+// The report of a closed loop: steps, accepted effects, final model, errors before and after.
+nlohmann::json loop_report_json(const RunInfo& info, const ClosedLoopReport& loop);
+
+// The steps of the loop as a table.
+std::string format_loop(const ClosedLoopReport& loop);
+
+// For each fitted step, a PNG of the residuals before and after it (loop_step_K.png).
+bool write_loop_plots(const std::string& dir, const MeasuredData& data,
+                      const ClosedLoopReport& loop, double radius_m);
 
 // A readable table of parameters and fit quality.
 std::string format_table(const RunInfo& info, const FitReport& fit);

@@ -5,8 +5,9 @@
 //   yhat = (1 - lambda) law(F0, a, M0, m, kx, ky, kappa, beta, w_s)
 //          + lambda exact(F0, kx, ky, kappa, beta, w_s; profile)               (shape blend)
 // Friction falling with slip speed: f(w) = f (1 - beta (1 - exp(-w / w_s))) (beta = 0: none);
-// inside the exact integrals at the local slip speed w, in the law at the effective speed
-// w_eff = (v^2 + (2u/3)^2)^(1/2) (the mean local slip speed of a spinning uniform patch).
+// at the effective speed w_eff = (v^2 + (2u/3)^2)^(1/2) (the mean local slip speed of a
+// spinning uniform patch), or, with speed_in_exact, at the local slip speed w inside the
+// exact integrals.
 // exact(.) has the force scale F0 = f p* 2 pi R^2 A^1; with no profile given, its profile is
 // p = 1 + b1 T1(2 rho^2 - 1) + b2 T2(2 rho^2 - 1) with b1, b2 identified.
 #pragma once
@@ -68,7 +69,7 @@ struct ModelSpec {
   bool speed_in_exact = false;  // evaluate f(w) inside the exact integrals (slower)
   std::array<bool, kModelParameters> free{};     // parameters being estimated
   std::array<double, kModelParameters> value{};  // their values (start or fixed)
-  double exact_tolerance = 1e-8;
+  double exact_tolerance = 1e-6;                 // relative to f N: far below any measurement noise
   double regularization_speed = 1e-6;
 
   bool uses_exact() const { return exact_only || free[kShapeBlend] || value[kShapeBlend] != 0.0; }

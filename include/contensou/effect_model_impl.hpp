@@ -83,9 +83,16 @@ Resultants<T> evaluate_model(const ModelSpec& s, const T* th, const Kinematics<d
     const Resultants<T> r =
         exact_resultants(m, Kinematics<T>{T(k.vx), T(k.vy), T(k.omega)}, {s.exact_tolerance})
             .resultants;
-    y.Fx += lambda * r.Fx;
-    y.Fy += lambda * r.Fy;
-    y.Mz += lambda * r.Mz;
+    // Without f(w) inside the integrals, the friction falls at the effective slip speed.
+    T phi(1.0);
+    if (!s.speed_in_exact) {
+      const double u = std::abs(k.omega) * R;
+      const double w_eff = std::sqrt(k.vx * k.vx + k.vy * k.vy + 4.0 * u * u / 9.0);
+      phi = detail::speed_factor(th[kSpeedDrop], th[kSpeedRef], T(w_eff));
+    }
+    y.Fx += lambda * phi * r.Fx;
+    y.Fy += lambda * phi * r.Fy;
+    y.Mz += lambda * phi * r.Mz;
   }
   // Rig: offsets and crosstalk.
   const T base[3] = {y.Fx, y.Fy, y.Mz};

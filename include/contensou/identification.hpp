@@ -115,6 +115,14 @@ FitReport fit_model(const MeasuredData& data, const ModelSpec& spec, const Noise
                     std::array<double, kModelParameters>* estimate = nullptr,
                     const std::vector<char>& use = {});
 
+// Weighted residuals r and their Jacobian J with respect to all kModelParameters parameters
+// at theta (weights 1/s_c, times 1/max(|yhat|, 5 % of the peak) for relative noise).
+void weighted_jacobian(const MeasuredData& data, const ModelSpec& spec,
+                       const std::array<double, kModelParameters>& theta,
+                       const std::array<double, kChannels>& scale, NoiseModel noise,
+                       Eigen::VectorXd* r, Eigen::MatrixXd* J, const std::vector<char>& use = {},
+                       std::vector<int>* row_point = nullptr);
+
 // The spec of the base fit for the options (law, start values, fixed parameters).
 ModelSpec base_spec_for(const MeasuredData& data, const IdentificationOptions& options);
 NoiseSettings noise_settings_for(const IdentificationOptions& options);

@@ -18,6 +18,19 @@ enum class SimulatedNoise {
   additive_gaussian,  // y + level max|y_c| N(0, 1), per channel c
 };
 
+// Effects of the test rig applied to the simulated channels (for testing the closed loop):
+//   y_c <- y_c + offset_c + sum_d crosstalk[c][d] y_d,   Mz <- Mz - viscous_torque * omega.
+// The viscous spin torque is deliberately outside the closed loop's catalogue.
+struct RigEffects {
+  std::array<double, kChannels> offset{};
+  std::array<std::array<double, kChannels>, kChannels> crosstalk{};
+  double viscous_torque = 0.0;  // [N m s]
+  // A periodic disturbance of Fy in time (rig vibration), also outside the catalogue:
+  // Fy <- Fy + amplitude sin(2 pi t / period) (needs time stamps).
+  double periodic_amplitude_n = 0.0;
+  double periodic_period_s = 5.0;
+};
+
 // Points at log-spaced psi = v/u in [psi_min, psi_max], u = |omega| R = spin_speed_mps, sliding
 // in the direction direction_rad; the time stamp t_s is the point's index times time_step_s.
 struct DiagramSpec {
@@ -31,6 +44,7 @@ struct DiagramSpec {
   double noise_level = 0.01;
   std::uint64_t seed = 1;
   double time_step_s = 0.0;  // 0: no t_s column
+  RigEffects rig;
 };
 
 // Clean kinematics of the spec (forces unset).

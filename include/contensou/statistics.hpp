@@ -31,3 +31,11 @@ double lag1_autocorrelation(const std::vector<double>& x);
 double durbin_watson(const std::vector<double>& x);
 
 }  // namespace contensou
+
+namespace contensou {
+
+// Regularised upper incomplete gamma Q(a, x) and the chi-square survival P(X > x), k dof.
+double upper_incomplete_gamma(double a, double x);
+double chi2_survival(double x, double k);
+
+}  // namespace contensou
