@@ -450,21 +450,7 @@ FitReport fit_model(const MeasuredData& data, const ModelSpec& spec, const Noise
         report.correlation(a, b) =
             cov(est[a], est[b]) / std::sqrt(cov(est[a], est[a]) * cov(est[b], est[b]));
   }
-  if (!spec.exact_only) {
-    FractionalLaw<double>& law = report.law;
-    law.F0 = theta[kF0];
-    law.a = theta[kA];
-    law.M0 = theta[kM0];
-    law.m = theta[kMShape];
-    law.kx = theta[kKx];
-    law.ky = theta[kKy];
-    law.kappa = theta[kKappa];
-    law.c = spec.c;
-    law.a_k = spec.a_k;
-    law.Mk = theta[kM0] * spec.mk_ratio;
-    law.radius = spec.radius_m;
-    law.regularization_speed = spec.regularization_speed;
-  }
+  if (!spec.exact_only) report.law = fractional_law_of(spec, theta.data());
 
   // Quality on the used points: diagnostics, Gaussian -2 log L with the noise scales.
   MeasuredData subset;

@@ -78,6 +78,10 @@ struct ModelSpec {
 // A spec with every parameter at its null value and the law's parameters free.
 ModelSpec base_model_spec(double radius_m, std::optional<double> normal_load_n);
 
+// The fractional law part of the model at parameters theta (without the speed factor).
+template <class T>
+FractionalLaw<T> fractional_law_of(const ModelSpec& spec, const T* theta);
+
 // Evaluates the model at kinematics k with parameters theta (all kModelParameters of them).
 template <class T>
 Resultants<T> evaluate_model(const ModelSpec& spec, const T* theta, const Kinematics<double>& k);

@@ -27,25 +27,31 @@ T speed_factor(const T& beta, const T& w_ref, const T& w) {
 }  // namespace detail
 
 template <class T>
+FractionalLaw<T> fractional_law_of(const ModelSpec& s, const T* th) {
+  FractionalLaw<T> law;
+  law.F0 = th[kF0];
+  law.a = th[kA];
+  law.M0 = th[kM0];
+  law.m = th[kMShape];
+  law.kx = th[kKx];
+  law.ky = th[kKy];
+  law.kappa = th[kKappa];
+  law.c = T(s.c);
+  law.a_k = T(s.a_k);
+  law.Mk = th[kM0] * s.mk_ratio;
+  law.radius = s.radius_m;
+  law.regularization_speed = s.regularization_speed;
+  return law;
+}
+
+template <class T>
 Resultants<T> evaluate_model(const ModelSpec& s, const T* th, const Kinematics<double>& k) {
   using std::sqrt;
   const double R = s.radius_m;
   const T lambda = s.exact_only ? T(1.0) : th[kShapeBlend];
   Resultants<T> y{T(0.0), T(0.0), T(0.0)};
   if (!s.exact_only) {
-    FractionalLaw<T> law;
-    law.F0 = th[kF0];
-    law.a = th[kA];
-    law.M0 = th[kM0];
-    law.m = th[kMShape];
-    law.kx = th[kKx];
-    law.ky = th[kKy];
-    law.kappa = th[kKappa];
-    law.c = T(s.c);
-    law.a_k = T(s.a_k);
-    law.Mk = th[kM0] * s.mk_ratio;
-    law.radius = R;
-    law.regularization_speed = s.regularization_speed;
+    FractionalLaw<T> law = fractional_law_of(s, th);
     const double u = std::abs(k.omega) * R;
     const double w_eff = std::sqrt(k.vx * k.vx + k.vy * k.vy + (2.0 * u / 3.0) * (2.0 * u / 3.0));
     const T phi = detail::speed_factor(th[kSpeedDrop], th[kSpeedRef], T(w_eff));
