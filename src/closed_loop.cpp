@@ -253,6 +253,15 @@ ClosedLoopReport close_the_loop(const MeasuredData& data, const IdentificationOp
       for (const ParameterEstimate& e : fit_ext.parameters)
         for (int p : best.parameters)
           if (e.name == parameter_info(p).name) trial.parameters.push_back(e);
+      if (best.effect == "shape") {  // the blend at its end point: the exact integrals alone
+        ParameterEstimate blend;
+        blend.name = parameter_info(kShapeBlend).name;
+        blend.unit = parameter_info(kShapeBlend).unit;
+        blend.value = 1.0;
+        blend.fixed = true;
+        blend.determined = false;
+        trial.parameters.insert(trial.parameters.begin(), blend);
+      }
       trial.error_after = fit_ext.error;
       trial.channels_after = fit_ext.channels;
       trial.fit_after = fit_ext;

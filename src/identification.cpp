@@ -169,6 +169,9 @@ ModelSpec base_spec_for(const MeasuredData& data, const IdentificationOptions& o
     s.mk_ratio = law.Mk / law.M0;
     s.value[kA] = law.a;
     s.value[kMShape] = law.m;
+    s.profile_a = law.a;
+    s.profile_m = law.m;
+    s.profile_m0_ratio = law.M0 / (law.F0 * o.radius_m);
     patch.friction = 1.0;
     s.profile_model = make_exact_model(patch);
   }
@@ -434,11 +437,33 @@ FitReport fit_model(const MeasuredData& data, const ModelSpec& spec, const Noise
     }
     report.parameters.push_back(e);
   }
+  if (spec.exact_only && spec.profile_model) {
+    // The exact model has no a, m, M0 of its own: report the profile's asymptote-matched
+    // values (fixed, no interval), so that a report always carries the law's parameters.
+    const double derived[3] = {spec.profile_a, theta[kF0] * spec.radius_m * spec.profile_m0_ratio,
+                               spec.profile_m};
+    const int index[3] = {kA, kM0, kMShape};
+    for (int j = 0; j < 3; ++j) {
+      ParameterEstimate e;
+      e.name = parameter_info(index[j]).name;
+      e.unit = parameter_info(index[j]).unit;
+      e.value = derived[j];
+      e.fixed = true;
+      e.determined = false;
+      e.derived = true;
+      report.parameters.insert(report.parameters.begin() + 1 + j, e);
+    }
+  }
   if (spec.normal_load_n) {
     const ParameterEstimate& F0 = report.parameters[0];
     const double N = *spec.normal_load_n;
-    ParameterEstimate f{"f",         "1", F0.value / N, F0.fixed, F0.determined, F0.std_error / N,
-                        std::nullopt};
+    ParameterEstimate f;
+    f.name = "f";
+    f.unit = "1";
+    f.value = F0.value / N;
+    f.fixed = F0.fixed;
+    f.determined = F0.determined;
+    f.std_error = F0.std_error / N;
     if (F0.ci95) f.ci95 = std::array<double, 2>{(*F0.ci95)[0] / N, (*F0.ci95)[1] / N};
     report.parameters.push_back(f);
   }

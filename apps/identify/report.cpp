@@ -30,6 +30,7 @@ nlohmann::json model_json(const std::string& name, const std::vector<std::string
     e["ci95"] = p.ci95 ? nlohmann::json::array({(*p.ci95)[0], (*p.ci95)[1]}) : nlohmann::json();
     e["unit"] = p.unit;
     e["fixed"] = p.fixed;
+    e["derived_from_profile"] = p.derived;
     e["determined"] = p.determined || p.fixed;
     e["std_error"] = std::isfinite(p.std_error) ? nlohmann::json(p.std_error) : nlohmann::json();
     params[p.name] = e;
@@ -226,7 +227,9 @@ std::string format_table(const RunInfo& info, const FitReport& fit) {
   for (const ParameterEstimate& p : fit.parameters) {
     char line[160];
     std::string ci;
-    if (p.fixed)
+    if (p.derived)
+      ci = "(from the profile)";
+    else if (p.fixed)
       ci = "(fixed)";
     else if (!p.determined)
       ci = "not determined by the data";

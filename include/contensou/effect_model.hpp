@@ -65,6 +65,8 @@ struct ModelSpec {
   double c = 4.0, a_k = 1.0, mk_ratio = 0.375;
   // The exact integrals over the given profile (unset: the parametric profile).
   std::optional<ExactModel<double>> profile_model;
+  // The profile's asymptote-matched law constants (reported with the exact model): a, m, M0/(F0 R).
+  double profile_a = 1.0, profile_m = 64.0 / 9.0, profile_m0_ratio = 2.0 / 3.0;
   bool exact_only = false;      // the law is replaced by the exact integrals (lambda = 1)
   bool speed_in_exact = false;  // evaluate f(w) inside the exact integrals (slower)
   std::array<bool, kModelParameters> free{};     // parameters being estimated

@@ -56,6 +56,7 @@ struct ParameterEstimate {
   double value = 0.0;
   bool fixed = false;
   bool determined = true;  // false: not determined by the data (no interval)
+  bool derived = false;    // computed from the profile, not estimated
   double std_error = std::numeric_limits<double>::quiet_NaN();
   std::optional<std::array<double, 2>> ci95;
 };
