@@ -32,14 +32,14 @@ struct TaggedInterval {
   int tag;
 };
 
-// Number of nodes of the G10K21 rule.
-inline constexpr int kKronrodPoints = 21;
+// Largest number of nodes of a rule used here (G15K31).
+inline constexpr int kKronrodPoints = 31;
 
 // Integrates a batch integrand f(const double* x, int n, int tag, Sample<T, Dim>* out), which
 // evaluates n <= 21 points at once, over the union of the given intervals until the estimated
 // absolute error of every component c is <= tolerance[c], bisecting the interval with the
 // largest scaled error. Capacity bounds the number of intervals kept.
-template <class T, int Dim, int Capacity = 160, class F>
+template <class T, int Dim, int Capacity = 160, const auto& Rule = kGK21, class F>
 AdaptiveResult<T, Dim> integrate_adaptive_batch(F&& f, const TaggedInterval* initial, int n_initial,
                                                 const std::array<double, Dim>& tolerance) {
   struct Piece {
@@ -63,13 +63,14 @@ AdaptiveResult<T, Dim> integrate_adaptive_batch(F&& f, const TaggedInterval* ini
     for (auto& v : kron) v = T(0);
     for (auto& v : gauss) v = T(0);
     int idx = 0;
-    for (const KronrodNode& node : kGK21) {
+    constexpr int points = kronrod_points(Rule);
+    for (const KronrodNode& node : Rule) {
       xs[idx++] = mid + half * node.x;
       if (node.x != 0.0) xs[idx++] = mid - half * node.x;
     }
-    f(xs.data(), kKronrodPoints, tag, ys.data());
+    f(xs.data(), points, tag, ys.data());
     idx = 0;
-    for (const KronrodNode& node : kGK21) {
+    for (const KronrodNode& node : Rule) {
       const int signs = node.x == 0.0 ? 1 : 2;
       for (int s = 0; s < signs; ++s) {
         const Sample<T, Dim>& y = ys[idx];
@@ -83,9 +84,9 @@ AdaptiveResult<T, Dim> integrate_adaptive_batch(F&& f, const TaggedInterval* ini
         ++idx;
       }
     }
-    out.evaluations += 21;
+    out.evaluations += points;
     idx = 0;
-    for (const KronrodNode& node : kGK21) {
+    for (const KronrodNode& node : Rule) {
       const int signs = node.x == 0.0 ? 1 : 2;
       for (int s = 0; s < signs; ++s, ++idx)
         for (int c = 0; c < Dim; ++c)

@@ -12,7 +12,7 @@
 // With p a polynomial P in t = rho^2 (a Chebyshev fit to 1e-15, or exact), the chord integrals
 // are closed forms through two precomputed transforms of P (update_chord_transforms); only a
 // slip-speed-dependent f needs an adaptive inner rule. The outer integral over beta is adaptive
-// Gauss-Kronrod (G10K21): centre inside (|v| < |omega| R): beta - gamma in [0, pi] with a
+// Gauss-Kronrod (G15K31): centre inside (|v| < |omega| R): beta - gamma in [0, pi] with a
 // breakpoint at the chord that nearly touches the rim as the centre nears it; centre outside:
 // the wedge of chords, parametrised by the chord angle phi (sin theta = (R/d) sin phi), which
 // removes the square root at the tangent rays. omega = 0 (pure sliding) is in closed form.
@@ -384,6 +384,7 @@ ExactResult<T> exact_resultants(const ExactModel<T>& m, const Kinematics<T>& k,
   };
 
   detail::AdaptiveResult<T, 3> res;
+  const bool fine = tol < 1e-8;
   if (dv < R) {
     // Interior centre: the rays at beta and beta + pi form one chord, so
     // F = integral_0^pi dbeta u(beta) integral_chord sigma (tau - tau_c) dtau, theta = beta -
@@ -408,9 +409,16 @@ ExactResult<T> exact_resultants(const ExactModel<T>& m, const Kinematics<T>& k,
       }
       chords_to_samples(chords.data(), jac.data(), n, out_samples);
     };
-    const double half_pi = 0.5 * std::numbers::pi;
-    const detail::TaggedInterval q[2] = {{0.0, half_pi, 0}, {half_pi, std::numbers::pi, 0}};
-    res = detail::integrate_adaptive_batch<T, 3>(f, q, 2, tol_out);
+    // G15K31 from quarters (halves for a loose tolerance): at 1e-10 the seed tire converges
+    // on this first partition in every regime.
+    const double pi = std::numbers::pi;
+    const detail::TaggedInterval quarters[4] = {{0.0, 0.25 * pi, 0},
+                                                {0.25 * pi, 0.5 * pi, 0},
+                                                {0.5 * pi, 0.75 * pi, 0},
+                                                {0.75 * pi, pi, 0}};
+    const detail::TaggedInterval halves[2] = {{0.0, 0.5 * pi, 0}, {0.5 * pi, pi, 0}};
+    res = fine ? detail::integrate_adaptive_batch<T, 3, 160, detail::kGK31>(f, quarters, 4, tol_out)
+               : detail::integrate_adaptive_batch<T, 3, 160, detail::kGK31>(f, halves, 2, tol_out);
   } else {
     // Exterior centre: the wedge of chords through r_c, parametrised by the chord angle phi in
     // [-pi/2, pi/2] (sin theta = (R/d) sin phi), which removes the square root of the chord
@@ -436,9 +444,14 @@ ExactResult<T> exact_resultants(const ExactModel<T>& m, const Kinematics<T>& k,
       }
       chords_to_samples(chords.data(), jac.data(), n, out_samples);
     };
-    const double half_pi = 0.5 * std::numbers::pi;
-    const detail::TaggedInterval q[2] = {{-half_pi, 0.0, 0}, {0.0, half_pi, 0}};
-    res = detail::integrate_adaptive_batch<T, 3>(f, q, 2, tol_out);
+    const double pi = std::numbers::pi;
+    const detail::TaggedInterval quarters[4] = {{-0.5 * pi, -0.25 * pi, 0},
+                                                {-0.25 * pi, 0.0, 0},
+                                                {0.0, 0.25 * pi, 0},
+                                                {0.25 * pi, 0.5 * pi, 0}};
+    const detail::TaggedInterval halves[2] = {{-0.5 * pi, 0.0, 0}, {0.0, 0.5 * pi, 0}};
+    res = fine ? detail::integrate_adaptive_batch<T, 3, 160, detail::kGK31>(f, quarters, 4, tol_out)
+               : detail::integrate_adaptive_batch<T, 3, 160, detail::kGK31>(f, halves, 2, tol_out);
   }
   const T factor = -(m.slip_speed ? T(1.0) : m.friction) * m.pressure;
   out.resultants.Fx = factor * res.value[0];
