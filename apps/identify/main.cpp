@@ -142,6 +142,8 @@ struct SimulateArgs {
   std::string noise = "additive-gaussian";
   double speed_drop = 0.0, speed_ref = 5.0;
   std::vector<double> offset;
+  std::vector<double> directions;
+  std::vector<std::string> crosstalk;
 };
 
 int run_simulate(SimulateArgs a) {
@@ -162,11 +164,34 @@ int run_simulate(SimulateArgs a) {
   validate(patch);
   a.spec.radius_m = a.radius;
   a.spec.noise = parse_noise(a.noise);
+  // One sweep per sliding direction, one after another in time.
+  if (a.directions.empty()) a.directions = {a.spec.direction_rad};
+  for (const std::string& x : a.crosstalk) {
+    const auto arrow = x.find("<-"), eq = x.find('=');
+    int ci = -1, di = -1;
+    if (arrow != std::string::npos && eq != std::string::npos && eq > arrow)
+      for (int k = 0; k < kChannels; ++k) {
+        if (x.substr(0, arrow) == kChannelColumns[k]) ci = k;
+        if (x.substr(arrow + 2, eq - arrow - 2) == kChannelColumns[k]) di = k;
+      }
+    if (ci < 0 || di < 0 || ci == di)
+      throw std::runtime_error("--crosstalk " + x + ": expected e.g. Mz_Nm<-Fx_N=0.002");
+    a.spec.rig.crosstalk[ci][di] = std::stod(x.substr(eq + 1));
+  }
   MeasuredData d;
-  if (a.model == "exact")
-    d = simulate_diagrams(make_exact_model(patch), a.spec);
-  else
-    d = simulate_diagrams(fractional_law_from_patch(patch), a.spec);
+  const std::uint64_t seed = a.spec.seed;
+  for (std::size_t k = 0; k < a.directions.size(); ++k) {
+    DiagramSpec sweep = a.spec;
+    sweep.direction_rad = a.directions[k];
+    sweep.seed = seed + 1000 * k;
+    MeasuredData part = a.model == "exact"
+                            ? simulate_diagrams(make_exact_model(patch), sweep)
+                            : simulate_diagrams(fractional_law_from_patch(patch), sweep);
+    for (MeasuredPoint& point : part.points) {
+      if (point.time) *point.time += static_cast<double>(k) * sweep.points * sweep.time_step_s;
+      d.points.push_back(point);
+    }
+  }
   std::ostringstream c;
   c << "simulated by " << kName << " " << kVersion << ": " << a.model << " model, profile "
     << a.profile << ", R = " << a.radius << " m, p* = " << patch.reference_pressure_pa
@@ -241,6 +266,10 @@ int main(int argc, char** argv) {
   simulate->add_option("--psi-max", sim.spec.psi_max, "largest psi");
   simulate->add_option("--spin-speed", sim.spec.spin_speed_mps, "u = omega R [m/s]");
   simulate->add_option("--direction", sim.spec.direction_rad, "sliding direction [rad]");
+  simulate
+      ->add_option("--directions", sim.directions,
+                   "several sweeps, one per sliding direction [rad], e.g. 0,1.5708")
+      ->delimiter(',');
   simulate->add_option("--noise", sim.noise,
                        "none|relative-uniform|relative-gaussian|additive-gaussian");
   simulate->add_option("--noise-level", sim.spec.noise_level, "noise amplitude (relative)");
@@ -252,8 +281,8 @@ int main(int argc, char** argv) {
   simulate->add_option("--offset", sim.offset, "channel offsets Fx,Fy,Mz [N, N, N m]")
       ->delimiter(',')
       ->expected(3);
-  simulate->add_option("--crosstalk-mz-fx", sim.spec.rig.crosstalk[2][0],
-                       "Mz picks up this many metres times Fx");
+  simulate->add_option("--crosstalk", sim.crosstalk,
+                       "a channel picks up another, e.g. Mz_Nm<-Fx_N=0.002 (repeatable)");
   simulate->add_option("--periodic", sim.spec.rig.periodic_amplitude_n,
                        "a periodic disturbance of Fy in time [N] (outside the catalogue)");
 
