@@ -30,11 +30,7 @@ constexpr Regime kRegimes[] = {{"inside", 0.5},        {"rim_inside", 0.999}, {"
                                {"rim_outside", 1.001}, {"outside", 2.0},      {"far", 100.0}};
 
 ContactPatch seed_patch() {
-  ContactPatch p;
-  p.radius_m = 0.087;
-  p.reference_pressure_pa = 2.1e5;
-  p.friction = 0.3;
-  p.profile = seed_tire_profile();
+  ContactPatch p = seed_tire_patch();
   p.profile.kx = 0.14;
   return p;
 }

@@ -11,19 +11,24 @@ using namespace contensou;
 
 namespace {
 
-MeasuredData data_set() {
-  ContactPatch p;
-  p.profile = seed_tire_profile();
-  p.profile.kx = 0.14;
+// 40 points of the seed tire (kx = 0.14), psi = 0.01 ... 100, 1 % noise, from `model`.
+template <class Model>
+MeasuredData seed_diagrams(const Model& model) {
   DiagramSpec s;
-  s.radius_m = p.radius_m;
+  s.radius_m = 0.087;
   s.points = 40;
   s.noise_level = 0.01;
-  return simulate_diagrams(fractional_law_from_patch(p), s);
+  return simulate_diagrams(model, s);
+}
+
+ContactPatch rolling_seed_tire() {
+  ContactPatch p = seed_tire_patch();
+  p.profile.kx = 0.14;
+  return p;
 }
 
 void BM_Fit(benchmark::State& state, bool given_scales) {
-  const MeasuredData d = data_set();
+  const MeasuredData d = seed_diagrams(fractional_law_from_patch(rolling_seed_tire()));
   IdentificationOptions o;
   o.radius_m = 0.087;
   o.normal_load_n = 4535;
@@ -37,14 +42,7 @@ void BM_Fit(benchmark::State& state, bool given_scales) {
 // The whole closed loop on a 120-value set of the seed tire from the exact integrals (40 points,
 // 1 % noise) with the profile given, all candidates scored: the base fit is the baseline.
 void BM_ClosedLoop(benchmark::State& state) {
-  ContactPatch p;
-  p.profile = seed_tire_profile();
-  p.profile.kx = 0.14;
-  DiagramSpec s;
-  s.radius_m = p.radius_m;
-  s.points = 40;
-  s.noise_level = 0.01;
-  const MeasuredData d = simulate_diagrams(make_exact_model(p), s);
+  const MeasuredData d = seed_diagrams(make_exact_model(rolling_seed_tire()));
   IdentificationOptions o;
   o.radius_m = 0.087;
   o.profile = seed_tire_profile();

@@ -7,11 +7,7 @@
 
 int main() try {
   using namespace contensou;
-  ContactPatch patch;
-  patch.radius_m = 0.087;  // seed section 4
-  patch.reference_pressure_pa = 2.1e5;
-  patch.friction = 0.3;  // seed Table 3
-  patch.profile = seed_tire_profile();
+  const ContactPatch patch = seed_tire_patch();  // seed section 4, Tables 1-3
   std::printf("contensou %s: the seed tire (Kireenkov & Zhavoronok 2020, Table 1)\n", kVersion);
   std::printf("profile: %s, R = %.3f m, p* = %.0f kPa, f = %.2f\n", describe(patch.profile).c_str(),
               patch.radius_m, patch.reference_pressure_pa / 1e3, patch.friction);

@@ -6,6 +6,15 @@
 
 namespace contensou {
 
+ContactPatch seed_tire_patch() {
+  ContactPatch p;
+  p.radius_m = 0.087;
+  p.reference_pressure_pa = 2.1e5;
+  p.friction = 0.3;
+  p.profile = seed_tire_profile();
+  return p;
+}
+
 double normal_load(const ContactPatch& patch) {
   validate(patch);
   return 2.0 * std::numbers::pi * patch.radius_m * patch.radius_m * patch.reference_pressure_pa *

@@ -22,10 +22,7 @@ struct Case {
 
 Case seed_case() {
   Case c;
-  c.patch.radius_m = 0.087;
-  c.patch.reference_pressure_pa = 2.1e5;
-  c.patch.friction = 0.3;
-  c.patch.profile = seed_tire_profile();
+  c.patch = seed_tire_patch();
   c.patch.profile.kx = 0.14;
   return c;
 }

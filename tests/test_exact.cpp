@@ -22,12 +22,7 @@ ContactPatch uniform_patch() {
 }
 
 ContactPatch seed_patch() {
-  ContactPatch p;
-  p.radius_m = 0.087;
-  p.reference_pressure_pa = 2.1e5;
-  p.friction = 0.3;
-  p.profile = seed_tire_profile();
-  return p;
+  return seed_tire_patch();
 }
 
 // Contensou's closed forms for uniform pressure (theory.md section 3): F_par/(fN), |Mz|/(fNR).

@@ -13,11 +13,7 @@ using namespace contensou;
 namespace {
 
 ContactPatch seed_patch(double kx = 0.0, double ky = 0.0) {
-  ContactPatch p;
-  p.radius_m = 0.087;
-  p.reference_pressure_pa = 2.1e5;
-  p.friction = 0.3;
-  p.profile = seed_tire_profile();
+  ContactPatch p = seed_tire_patch();
   p.profile.kx = kx;
   p.profile.ky = ky;
   return p;

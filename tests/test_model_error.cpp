@@ -5,11 +5,7 @@
 using namespace contensou;
 
 TEST(ModelError, SeedTireFiguresOfTheory) {
-  ContactPatch p;
-  p.radius_m = 0.087;
-  p.reference_pressure_pa = 2.1e5;
-  p.friction = 0.3;
-  p.profile = seed_tire_profile();
+  const ContactPatch p = seed_tire_patch();
   const ModelErrorReport r = model_error_report(p, 1e-3, 1e3, 61);
   ASSERT_EQ(r.laws.size(), 2u);
   const auto& asym = r.laws[0];

@@ -5,11 +5,7 @@
 
 int main() {
   using namespace contensou;
-  ContactPatch patch;  // SI units throughout
-  patch.radius_m = 0.087;
-  patch.reference_pressure_pa = 2.1e5;
-  patch.friction = 0.3;
-  patch.profile = seed_tire_profile();
+  ContactPatch patch = seed_tire_patch();  // SI units: R = 0.087 m, p* = 210 kPa, f = 0.3
   patch.profile.kx = 0.14;
 
   const ExactModel<double> model = make_exact_model(patch);  // build once

@@ -38,6 +38,11 @@ struct ContactPatch {
   std::optional<SlipSpeedFriction<double>> slip_speed_friction;  // replaces `friction` if set
 };
 
+// The tire of the seed (Kireenkov & Zhavoronok 2020): R = 0.087 m (section 4), the Table 1
+// profile, f = 0.3 (Table 3), p* = 210 kPa (so that N = 4535 N, near Table 2's 4.48 kN), no
+// shift (set profile.kx = 0.14 for the rolling tire of seed eq. 10).
+ContactPatch seed_tire_patch();
+
 // Normal load N = 2 pi R^2 p* A^1 [N] (theory.md section 4).
 double normal_load(const ContactPatch& patch);
 
