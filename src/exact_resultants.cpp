@@ -25,36 +25,38 @@ std::vector<double> chebyshev_coefficients(const std::function<double(double)>& 
   return c;
 }
 
-// Smallest Chebyshev series whose tail is below 1e-15 of the largest coefficient, up to 512
-// terms; for a non-smooth q (a clipped kink, a tabulated cubic) the error is sampled.
-ChebyshevFit fit_chebyshev(const std::function<double(double)>& q) {
+// Smallest Chebyshev series (16 ... 512 terms) that represents q to `tol` relative to its
+// largest coefficient: by the tail of the coefficients for a smooth q, else (a clipped kink, a
+// tabulated cubic) by the deviation sampled on a fine grid, which then bounds the error.
+ChebyshevFit fit_chebyshev(const std::function<double(double)>& q, double tol) {
   ChebyshevFit fit;
   for (int n = 16; n <= 512; n *= 2) {
     std::vector<double> c = chebyshev_coefficients(q, n);
     double cmax = 0.0;
     for (double v : c) cmax = std::max(cmax, std::abs(v));
-    const double floor = 1e-15 * std::max(cmax, 1e-300);
+    const double floor = tol * std::max(cmax, 1e-300);
     double tail = 0.0;
     for (int k = n - 4; k < n; ++k) tail = std::max(tail, std::abs(c[k]));
-    if (tail <= floor || n == 512) {
-      double dropped = 0.0;
-      while (c.size() > 1 && std::abs(c.back()) <= floor) {
-        dropped += std::abs(c.back());
-        c.pop_back();
-      }
+    double dropped = 0.0;
+    while (c.size() > 1 && std::abs(c.back()) <= floor) {
+      dropped += std::abs(c.back());
+      c.pop_back();
+    }
+    if (tail <= floor) {
       fit.coefficients = std::move(c);
       fit.error = dropped;
-      if (tail > floor) {
-        // Not converged: measure the deviation on a fine grid.
-        ExactModel<double> probe;
-        probe.chebyshev = fit.coefficients;
-        double dev = 0.0;
-        for (int i = 0; i <= 4000; ++i) {
-          const double t = i / 4000.0;
-          dev = std::max(dev, std::abs(q(t) - detail::chebyshev_sum(probe.chebyshev, t)));
-        }
-        fit.error = 2.0 * dev;
-      }
+      return fit;
+    }
+    ExactModel<double> probe;
+    probe.chebyshev = c;
+    double dev = 0.0;
+    for (int i = 0; i <= 4000; ++i) {
+      const double t = i / 4000.0;
+      dev = std::max(dev, std::abs(q(t) - detail::chebyshev_sum(probe.chebyshev, t)));
+    }
+    if (dev <= floor || n == 512) {
+      fit.coefficients = std::move(c);
+      fit.error = 2.0 * dev;  // the grid can miss the worst point by a little
       return fit;
     }
   }
@@ -63,7 +65,10 @@ ChebyshevFit fit_chebyshev(const std::function<double(double)>& q) {
 
 }  // namespace
 
-ExactModel<double> make_exact_model(const ContactPatch& patch) {
+ExactModel<double> make_exact_model(const ContactPatch& patch, double representation_tolerance) {
+  if (!(representation_tolerance > 0.0 && representation_tolerance < 1e-3))
+    throw InvalidArgument("representation_tolerance",
+                          detail::format_value(representation_tolerance), "must lie in (0, 1e-3)");
   validate(patch);
   ExactModel<double> m;
   const PressureProfile& prof = patch.profile;
@@ -86,7 +91,8 @@ ExactModel<double> make_exact_model(const ContactPatch& patch) {
     m.sqrt_edge = true;
   } else {
     const ChebyshevFit fit =
-        fit_chebyshev([&](double t) { return shape_value(prof, rho_max * std::sqrt(t)); });
+        fit_chebyshev([&](double t) { return shape_value(prof, rho_max * std::sqrt(t)); },
+                      representation_tolerance);
     m.chebyshev = fit.coefficients;
     m.representation_error = fit.error;
   }

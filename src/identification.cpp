@@ -173,7 +173,9 @@ ModelSpec base_spec_for(const MeasuredData& data, const IdentificationOptions& o
     s.profile_m = law.m;
     s.profile_m0_ratio = law.M0 / (law.F0 * o.radius_m);
     patch.friction = 1.0;
-    s.profile_model = make_exact_model(patch);
+    // 1e-6 of the profile is far below any measurement noise and keeps a tabulated profile's
+    // series short (its PCHIP is only C1).
+    s.profile_model = make_exact_model(patch, 1e-6);
   }
   double f0 = 0.0, m0 = 0.0;
   for (const MeasuredPoint& p : data.points) {

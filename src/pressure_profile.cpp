@@ -87,6 +87,9 @@ std::vector<double> pchip_slopes(const std::vector<double>& x, const std::vector
   };
   d[0] = end_slope(h[0], h[1], del[0], del[1]);
   d[n - 1] = end_slope(h[n - 2], h[n - 3], del[n - 2], del[n - 3]);
+  // An axisymmetric pressure is even in rho: zero slope at the centre (this also keeps the
+  // profile smooth in t = rho^2, which the exact integrals expand in).
+  if (x[0] == 0.0) d[0] = 0.0;
   return d;
 }
 

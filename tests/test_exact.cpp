@@ -312,6 +312,26 @@ TEST(ExactResultants, JetDerivativesMatchFiniteDifferences) {
   }
 }
 
+TEST(ExactResultants, RepresentationToleranceTradesTermsForAReportedError) {
+  // A tabulated (C1) profile: a loose representation is shorter, its error enters the
+  // estimate, and the result stays within that estimate of the fine one.
+  std::vector<double> rho, p;
+  for (int i = 0; i <= 20; ++i) {
+    rho.push_back(i / 20.0);
+    p.push_back(1.0 + 0.8 * rho.back() * rho.back() - 1.2 * std::pow(rho.back(), 4));
+  }
+  ContactPatch patch = uniform_patch();
+  patch.profile = tabulated_profile(rho, p);
+  const ExactModel<double> fine = make_exact_model(patch), loose = make_exact_model(patch, 1e-4);
+  EXPECT_LT(loose.chebyshev.size(), fine.chebyshev.size());
+  EXPECT_GT(loose.representation_error, fine.representation_error);
+  const Kinematics<double> k{0.03, 0.02, 0.5 / patch.radius_m};
+  const auto a = exact_resultants(fine, k, {1e-8}), b = exact_resultants(loose, k, {1e-8});
+  EXPECT_LE(std::abs(a.resultants.Fx - b.resultants.Fx), a.error.Fx + b.error.Fx);
+  EXPECT_LE(std::abs(a.resultants.Mz - b.resultants.Mz), a.error.Mz + b.error.Mz);
+  EXPECT_THROW(make_exact_model(patch, 0.0), InvalidArgument);
+}
+
 TEST(ExactResultants, BadInputNamesParameterAndValue) {
   auto message = [](const std::function<void()>& f) -> std::string {
     try {

@@ -91,6 +91,9 @@ TEST(Profiles, TabulatedIsShapePreservingAndExactOnKnots) {
   }
   // Flat between equal knots (no spurious extremum).
   EXPECT_NEAR(shape_value(t, 0.55), 0.4, 1e-15);
+  // Even in rho: zero slope at the centre, p(h) - p(0) = O(h^2).
+  const PressureProfile sloped = tabulated_profile({0.0, 0.5, 1.0}, {1.0, 0.6, 0.1});
+  EXPECT_LT(std::abs(shape_value(sloped, 1e-4) - 1.0), 1e-6);
   for (int n = 0; n <= 4; ++n) EXPECT_NEAR(moment(t, n), brute_moment(t, n), 1e-12);
 }
 

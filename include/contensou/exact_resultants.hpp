@@ -57,10 +57,14 @@ struct ExactModel {
   double friction_scale = 0.0;        // f, or max(f_s, f_k)
 };
 
-// Builds the model: Chebyshev fit of p in t = rho^2 to 1e-15 (closed-form for uniform and
-// Hertz), shrinking the disk to the positive part if a clipped profile is negative only
-// near the rim. Validates the patch (throws InvalidArgument).
-ExactModel<double> make_exact_model(const ContactPatch& patch);
+// Builds the model: Chebyshev fit of p in t = rho^2 to representation_tolerance relative to
+// the profile (exact for uniform and Hertz; a smooth profile such as the cosine series reaches
+// 1e-15 with ~24 terms, a tabulated C1 cubic needs many more: loosen the tolerance for speed,
+// the representation error enters every error estimate), shrinking the disk to the positive
+// part if a clipped profile is negative only near the rim. Validates the patch (throws
+// InvalidArgument).
+ExactModel<double> make_exact_model(const ContactPatch& patch,
+                                    double representation_tolerance = 1e-15);
 
 // Casts a model to another scalar (e.g. ceres::Jet) with zero derivatives.
 template <class T>

@@ -25,8 +25,9 @@ struct CosineSeriesShape {
 };
 
 // A radial profile tabulated at increasing rho in [0, 1] and interpolated by a monotone
-// piecewise cubic (Fritsch-Carlson PCHIP: no new extrema, C1). Values are dimensionless
-// (divided by the reference pressure).
+// piecewise cubic (Fritsch-Carlson PCHIP: no new extrema, C1), with zero slope at rho = 0
+// (an axisymmetric pressure is even in rho). Values are dimensionless (divided by the
+// reference pressure).
 struct TabulatedShape {
   std::vector<double> rho;
   std::vector<double> p;
