@@ -57,20 +57,25 @@ std::vector<Candidate> catalogue(const MeasuredData& data, const ModelSpec& s) {
 
 // Score (LM) statistic of column j given the free columns of the current fit:
 // (z' r)^2 / (z' (I - P_A) z) / s^2, chi-square with 1 dof under the null.
-double lm_statistic(const Eigen::VectorXd& r, const Eigen::MatrixXd& J, const ModelSpec& s, int j) {
-  std::vector<int> free_cols;
+// The columns of a full Jacobian (all kModelParameters) that belong to the free parameters.
+Eigen::MatrixXd free_columns(const Eigen::MatrixXd& J, const ModelSpec& s) {
+  std::vector<int> cols;
   for (int i = 0; i < K; ++i)
-    if (s.free[i]) free_cols.push_back(i);
-  Eigen::MatrixXd A(J.rows(), static_cast<Eigen::Index>(free_cols.size()));
-  for (std::size_t k = 0; k < free_cols.size(); ++k)
-    A.col(static_cast<Eigen::Index>(k)) = J.col(free_cols[k]);
+    if (s.free[i]) cols.push_back(i);
+  Eigen::MatrixXd A(J.rows(), static_cast<Eigen::Index>(cols.size()));
+  for (std::size_t k = 0; k < cols.size(); ++k)
+    A.col(static_cast<Eigen::Index>(k)) = J.col(cols[k]);
+  return A;
+}
+
+double lm_statistic(const Eigen::VectorXd& r, const Eigen::MatrixXd& J, const ModelSpec& s, int j) {
+  const Eigen::MatrixXd A = free_columns(J, s);
   const Eigen::VectorXd z = J.col(j);
   const Eigen::VectorXd zp = z - A * A.colPivHouseholderQr().solve(z);
   const double denom = zp.squaredNorm();
   if (!(denom > 1e-20 * std::max(z.squaredNorm(), 1e-300))) return 0.0;
-  const double s2 =
-      r.squaredNorm() /
-      std::max<double>(1.0, static_cast<double>(r.size()) - static_cast<double>(free_cols.size()));
+  const double s2 = r.squaredNorm() / std::max<double>(1.0, static_cast<double>(r.size()) -
+                                                                static_cast<double>(A.cols()));
   const double num = z.dot(r);
   return num * num / denom / s2;
 }
@@ -100,19 +105,14 @@ double cv_error(const MeasuredData& data, const ModelSpec& spec, const std::arra
   Eigen::MatrixXd Jall;
   std::vector<int> row_point;
   weighted_jacobian(data, spec, theta, scale, noise_model, &r, &Jall, {}, &row_point);
-  std::vector<int> cols;
-  for (int i = 0; i < K; ++i)
-    if (spec.free[i]) cols.push_back(i);
-  Eigen::MatrixXd J(Jall.rows(), static_cast<Eigen::Index>(cols.size()));
-  for (std::size_t k = 0; k < cols.size(); ++k)
-    J.col(static_cast<Eigen::Index>(k)) = Jall.col(cols[k]);
+  const Eigen::MatrixXd J = free_columns(Jall, spec);
   double sum = 0.0;
   int n = 0;
   for (int f = 0; f < folds; ++f) {
     std::vector<Eigen::Index> train, held;
     for (Eigen::Index row = 0; row < J.rows(); ++row)
       (row_point[static_cast<std::size_t>(row)] % folds == f ? held : train).push_back(row);
-    if (held.empty() || train.size() <= cols.size()) continue;
+    if (held.empty() || static_cast<Eigen::Index>(train.size()) <= J.cols()) continue;
     Eigen::MatrixXd JT(static_cast<Eigen::Index>(train.size()), J.cols());
     Eigen::VectorXd rT(static_cast<Eigen::Index>(train.size()));
     for (std::size_t k = 0; k < train.size(); ++k) {
@@ -157,9 +157,7 @@ ClosedLoopReport close_the_loop(const MeasuredData& data, const IdentificationOp
     Eigen::VectorXd r;
     Eigen::MatrixXd J;
     weighted_jacobian(data, scoring, theta, fit.noise_scale, noise.model, &r, &J);
-    struct {
-      std::vector<CandidateScore> scores;
-    } st;
+    std::vector<CandidateScore> scores;
     const std::vector<double> grid = speed_grid(data, spec.radius_m);
     double best_speed_ref = grid[grid.size() / 2];
     for (const Candidate& c : cands) {
@@ -187,15 +185,15 @@ ClosedLoopReport close_the_loop(const MeasuredData& data, const IdentificationOp
         sc.statistic = lm_statistic(r, J, spec, c.scored);
         sc.p_value = chi2_survival(sc.statistic, 1.0);
       }
-      st.scores.push_back(sc);
+      scores.push_back(sc);
     }
     std::vector<std::size_t> order(cands.size());
     for (std::size_t i = 0; i < order.size(); ++i) order[i] = i;
     std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) {
-      return st.scores[a].p_value < st.scores[b].p_value;
+      return scores[a].p_value < scores[b].p_value;
     });
     std::vector<CandidateScore> sorted;
-    for (std::size_t i : order) sorted.push_back(st.scores[i]);
+    for (std::size_t i : order) sorted.push_back(scores[i]);
     const double threshold = loop.alpha / static_cast<double>(cands.size());
     // Try the candidates in order of significance: the first that passes all three tests is
     // accepted; those whose score is not significant are not fitted (the top one always is).
