@@ -29,3 +29,6 @@ echo
 # the JSON report in out/identify.
 ./build/apps/contensou-identify data/seed_tire_diagrams.csv --radius 0.087 \
   --profile seed-tire --pressure 2.1e5 --plots out/identify --json out/identify/report.json
+echo
+# The landing-gear shimmy demo: three contact models, CSV, PNG and summary.json in out/shimmy.
+./build/apps/contensou-shimmy --out out/shimmy

@@ -1,0 +1,184 @@
+#include "config.hpp"
+
+#include <fstream>
+#include <functional>
+#include <sstream>
+#include <stdexcept>
+
+#include "contensou/error.hpp"
+
+namespace contensou::app {
+
+namespace {
+
+// Line and column (1-based) of byte offset `pos` in `text`.
+std::pair<int, int> line_column(const std::string& text, std::size_t pos) {
+  int line = 1, col = 1;
+  for (std::size_t i = 0; i < std::min(pos, text.size()); ++i) {
+    if (text[i] == '\n') {
+      ++line;
+      col = 1;
+    } else {
+      ++col;
+    }
+  }
+  return {line, col};
+}
+
+struct Reader {
+  std::string path, text;
+
+  [[noreturn]] void fail_at_key(const std::string& key, const std::string& message,
+                                bool name_key = true) const {
+    // nlohmann::json keeps no positions: locate the key's first quoted occurrence.
+    const std::string leaf = key.substr(key.rfind('.') + 1);
+    const std::size_t pos = text.find("\"" + leaf + "\"");
+    const auto [line, col] = line_column(text, pos == std::string::npos ? 0 : pos);
+    throw ParseError(path, line, col, name_key ? key + ": " + message : message);
+  }
+
+  double number(const nlohmann::json& j, const std::string& key) const {
+    if (!j.is_number()) fail_at_key(key, "expected a number, got " + j.dump());
+    return j.get<double>();
+  }
+};
+
+}  // namespace
+
+nlohmann::json to_json(const ShimmyConfig& c) {
+  nlohmann::json j;
+  GearConfig g = c.gear;
+  for (const std::string& name : gear_parameter_names()) {
+    nlohmann::json* node = &j;
+    std::string rest = name;
+    for (std::size_t dot; (dot = rest.find('.')) != std::string::npos; rest = rest.substr(dot + 1))
+      node = &(*node)[rest.substr(0, dot)];
+    (*node)[rest] = *gear_parameter(g, name);
+  }
+  j["tire"]["law_coefficients"] = g.tire.law_coefficients;
+  j["tire"]["exact_integrals"] = g.tire.exact_integrals;
+  j["scenario"]["braking"] = g.scenario.braking;
+  for (ContactModel m : c.models) j["models"].push_back(to_string(m));
+  j["solver"]["relative_tolerance"] = c.solver.relative_tolerance;
+  j["solver"]["output_interval_s"] = c.solver.output_interval_s;
+  j["shimmy"]["amplitude_threshold_rad"] = c.criterion.amplitude_threshold_rad;
+  j["shimmy"]["sustained_growth_rate_per_s"] = c.criterion.sustained_growth_rate_per_s;
+  for (const auto& [x, y] : c.maps) {
+    nlohmann::json m;
+    for (const auto& [key, a] : {std::pair{"x", &x}, std::pair{"y", &y}})
+      m[key] = {
+          {"parameter", a->parameter}, {"from", a->from}, {"to", a->to}, {"points", a->points}};
+    j["maps"].push_back(m);
+  }
+  return j;
+}
+
+ShimmyConfig read_shimmy_config(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw std::runtime_error(path + ": cannot open the configuration file");
+  std::stringstream buf;
+  buf << in.rdbuf();
+  Reader r{path, buf.str()};
+  nlohmann::json j;
+  try {
+    j = nlohmann::json::parse(r.text);
+  } catch (const nlohmann::json::parse_error& e) {
+    const auto [line, col] = line_column(r.text, e.byte > 0 ? e.byte - 1 : 0);
+    std::string what = e.what();
+    const std::size_t colon = what.rfind(": ");
+    throw ParseError(
+        path, line, col,
+        "invalid JSON: " + (colon == std::string::npos ? what : what.substr(colon + 2)));
+  }
+  if (!j.is_object()) throw ParseError(path, 1, 1, "the configuration must be a JSON object");
+
+  ShimmyConfig c;
+  // Walks nested objects; leaves are looked up by their dotted name.
+  const std::function<void(const nlohmann::json&, const std::string&)> walk =
+      [&](const nlohmann::json& node, const std::string& prefix) {
+        for (auto it = node.begin(); it != node.end(); ++it) {
+          const std::string key = prefix.empty() ? it.key() : prefix + "." + it.key();
+          const nlohmann::json& v = it.value();
+          if (key == "models") {
+            if (!v.is_array() || v.empty()) r.fail_at_key(key, "expected a non-empty array");
+            c.models.clear();
+            for (const auto& m : v) {
+              if (!m.is_string()) r.fail_at_key(key, "expected model names, got " + m.dump());
+              try {
+                c.models.push_back(contact_model_from_string(m.get<std::string>()));
+              } catch (const InvalidArgument& e) {
+                r.fail_at_key(key, e.what());
+              }
+            }
+          } else if (key == "maps") {
+            if (!v.is_array()) r.fail_at_key(key, "expected an array of {x, y}");
+            c.maps.clear();
+            for (const auto& m : v) {
+              std::pair<MapAxis, MapAxis> axes;
+              for (const auto& [name, axis] :
+                   {std::pair{"x", &axes.first}, std::pair{"y", &axes.second}}) {
+                if (!m.is_object() || !m.contains(name) || !m[name].is_object())
+                  r.fail_at_key(key, std::string("each map needs an object '") + name + "'");
+                const nlohmann::json& a = m[name];
+                for (auto f = a.begin(); f != a.end(); ++f) {
+                  const std::string fk = key + "." + name + "." + f.key();
+                  if (f.key() == "parameter") {
+                    if (!f.value().is_string()) r.fail_at_key(fk, "expected a parameter name");
+                    axis->parameter = f.value().get<std::string>();
+                    GearConfig probe;
+                    if (!gear_parameter(probe, axis->parameter))
+                      r.fail_at_key(fk, "unknown parameter '" + axis->parameter + "'");
+                  } else if (f.key() == "from") {
+                    axis->from = r.number(f.value(), fk);
+                  } else if (f.key() == "to") {
+                    axis->to = r.number(f.value(), fk);
+                  } else if (f.key() == "points") {
+                    if (!f.value().is_number_integer() || f.value().get<int>() < 1)
+                      r.fail_at_key(fk, "expected a positive integer, got " + f.value().dump());
+                    axis->points = f.value().get<int>();
+                  } else {
+                    r.fail_at_key(fk, "unknown key (parameter, from, to, points)");
+                  }
+                }
+              }
+              c.maps.push_back(axes);
+            }
+          } else if (key == "tire.law_coefficients") {
+            if (!v.is_string()) r.fail_at_key(key, "expected fitted, asymptotic or seed");
+            c.gear.tire.law_coefficients = v.get<std::string>();
+          } else if (key == "tire.exact_integrals" || key == "scenario.braking") {
+            if (!v.is_boolean()) r.fail_at_key(key, "expected true or false, got " + v.dump());
+            (key == "scenario.braking" ? c.gear.scenario.braking : c.gear.tire.exact_integrals) =
+                v.get<bool>();
+          } else if (key == "solver.relative_tolerance") {
+            c.solver.relative_tolerance = r.number(v, key);
+          } else if (key == "solver.output_interval_s") {
+            c.solver.output_interval_s = r.number(v, key);
+          } else if (key == "shimmy.amplitude_threshold_rad") {
+            c.criterion.amplitude_threshold_rad = r.number(v, key);
+          } else if (key == "shimmy.sustained_growth_rate_per_s") {
+            c.criterion.sustained_growth_rate_per_s = r.number(v, key);
+          } else if (v.is_object()) {
+            walk(v, key);
+          } else if (double* p = gear_parameter(c.gear, key)) {
+            *p = r.number(v, key);
+          } else {
+            r.fail_at_key(key, "unknown key (contensou-shimmy --print-config lists them all)");
+          }
+        }
+      };
+  walk(j, "");
+  try {
+    validate(c.gear);
+    detail::require_positive("solver.relative_tolerance", c.solver.relative_tolerance);
+    detail::require_positive("solver.output_interval_s", c.solver.output_interval_s);
+    detail::require_positive("shimmy.amplitude_threshold_rad", c.criterion.amplitude_threshold_rad);
+    detail::require_finite("shimmy.sustained_growth_rate_per_s",
+                           c.criterion.sustained_growth_rate_per_s);
+  } catch (const InvalidArgument& e) {
+    r.fail_at_key(e.parameter(), e.what(), false);
+  }
+  return c;
+}
+
+}  // namespace contensou::app

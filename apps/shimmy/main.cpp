@@ -1,0 +1,259 @@
+// contensou-shimmy: a one-wheel main landing gear through touchdown, sliding and spin-up, with
+// three contact models (docs/shimmy.md).
+#include <unistd.h>
+
+#include <CLI/CLI.hpp>
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <iostream>
+#include <sstream>
+
+#include "config.hpp"
+#include "contensou/error.hpp"
+#include "gnuplot.hpp"
+
+using namespace contensou;
+using namespace contensou::app;
+
+namespace {
+
+constexpr const char* kName = "contensou-shimmy";
+
+std::string csv_history(const LandingRun& run) {
+  std::ostringstream o;
+  o.precision(9);
+  o << "t_s,y_m,ydot_mps,psi_rad,psidot_radps,wheel_spin_radps,lambda_m,load_n,patch_radius_m,"
+       "vx_mps,vy_mps,omega_radps,slip_ratio,friction,Fx_n,Fy_n,Mz_nm,brake_nm,rolling\n";
+  for (const LandingSample& s : run.samples) {
+    o << s.t;
+    for (int i = 0; i < kStateSize; ++i) o << ',' << s.x[i];
+    const ContactState& c = s.contact;
+    o << ',' << c.load_n << ',' << c.patch_radius_m << ',' << c.slip.vx << ',' << c.slip.vy << ','
+      << c.slip.omega << ',' << c.slip_ratio << ',' << c.friction << ',' << c.force.Fx << ','
+      << c.force.Fy << ',' << c.force.Mz << ',' << c.brake_torque_nm << ',' << (s.rolling ? 1 : 0)
+      << '\n';
+  }
+  return o.str();
+}
+
+nlohmann::json run_json(const LandingRun& r) {
+  const OscillationEstimate& o = r.metrics.torsion;
+  nlohmann::json j{{"shimmy", r.metrics.shimmy},
+                   {"frequency_Hz", o.valid() ? nlohmann::json(o.frequency_hz) : nullptr},
+                   {"growth_rate_per_s", o.valid() ? nlohmann::json(o.growth_rate_per_s) : nullptr},
+                   {"peak_torsion_rad", r.metrics.peak_torsion_rad},
+                   {"peak_lateral_m", r.metrics.peak_lateral_m},
+                   {"spin_up_s", r.spin_up_s ? nlohmann::json(*r.spin_up_s) : nullptr},
+                   {"steps", r.steps},
+                   {"wall_s", r.wall_s},
+                   {"final_torsion_amplitude_rad", o.last_amplitude},
+                   {"half_cycles", o.half_cycles},
+                   {"window_s", {r.window_start_s, r.window_end_s}}};
+  for (const LandingEvent& e : r.events) j["events"].push_back({{"t_s", e.t}, {"event", e.what}});
+  return j;
+}
+
+// One PNG per quantity, the models side by side; the analysis window shaded.
+void draw_histories(const std::string& dir, const std::vector<LandingRun>& runs) {
+  struct Panel {
+    const char* name;
+    const char* title;
+    std::vector<std::pair<int, const char*>> columns;  // 1-based CSV columns and labels
+  };
+  const std::vector<Panel> panels{
+      {"torsion", "torsion psi [rad]", {{4, "psi"}}},
+      {"lateral", "lateral deflection y [m]", {{2, "y"}}},
+      {"slip", "patch sliding: slip ratio vx/V and vy [m/s]", {{13, "vx/V"}, {11, "vy [m/s]"}}},
+      {"spin", "spin of the patch omega = dpsi/dt [rad/s]", {{12, "omega"}}},
+      {"forces", "friction force on the tire [N]", {{15, "Fx"}, {16, "Fy"}}},
+      {"torque", "friction torque on the tire Mz [N m]", {{17, "Mz"}}}};
+  for (const Panel& p : panels) {
+    std::ostringstream gp;
+    gp << "set terminal pngcairo noenhanced size " << 520 * runs.size() << ",420 font ',10'\n"
+       << "set output '" << p.name << ".png'\nset datafile separator ','\n"
+       << "set multiplot layout 1," << runs.size() << " title '" << p.title << "'\n"
+       << "set xlabel 't [s]'\nset grid\nset key top right\n";
+    for (const LandingRun& r : runs) {
+      gp << "set title '" << to_string(r.contact) << (r.metrics.shimmy ? " (shimmy)" : "") << "'\n"
+         << "set object 1 rect from " << r.window_start_s << ", graph 0 to " << r.window_end_s
+         << ", graph 1 behind fillcolor rgb '#eeeeee' fillstyle solid noborder\nplot ";
+      for (std::size_t k = 0; k < p.columns.size(); ++k)
+        gp << (k ? ", " : "") << "'" << to_string(r.contact)
+           << ".csv' using 1:" << p.columns[k].first << " with lines lw 1 title '"
+           << p.columns[k].second << "'";
+      gp << "\n";
+    }
+    gp << "unset multiplot\n";
+    run_gnuplot(dir, p.name, gp.str());
+  }
+}
+
+void progress_bar(const std::string& label, int done, int total) {
+  if (!isatty(STDERR_FILENO)) return;
+  const int width = 40, filled = total > 0 ? width * done / total : width;
+  std::fprintf(stderr, "\r%-36s [%s%s] %d/%d", label.c_str(), std::string(filled, '#').c_str(),
+               std::string(width - filled, '.').c_str(), done, total);
+  if (done == total) std::fputc('\n', stderr);
+  std::fflush(stderr);
+}
+
+std::string short_name(const std::string& parameter) {
+  return parameter.substr(parameter.rfind('.') + 1);
+}
+
+// Writes the map's CSV and PNG; returns its summary.
+nlohmann::json write_map(const std::string& dir, const StabilityMap& m) {
+  const std::string base = "map_" + short_name(m.x.parameter) + "_" + short_name(m.y.parameter) +
+                           "_" + to_string(m.contact);
+  std::ostringstream csv, boundary;
+  csv.precision(9);
+  csv << m.x.parameter << ',' << m.y.parameter
+      << ",growth_rate_per_s,frequency_Hz,final_amplitude_rad,shimmy,valid,error\n";
+  double g_max = 1e-3;
+  int shimmy_cells = 0, failed = 0;
+  for (int j = 0; j < m.y.points; ++j) {
+    for (int i = 0; i < m.x.points; ++i) {
+      const MapCell& c = m.cells[static_cast<std::size_t>(j * m.x.points + i)];
+      csv << c.x << ',' << c.y << ',' << c.growth_rate_per_s << ',' << c.frequency_hz << ','
+          << c.last_amplitude_rad << ',' << c.shimmy << ',' << c.valid << ",\"" << c.error
+          << "\"\n";
+      if (c.valid) g_max = std::max(g_max, std::abs(c.growth_rate_per_s));
+      shimmy_cells += c.shimmy;
+      failed += !c.error.empty();
+      // Shimmy boundary: midpoints between neighbours that disagree.
+      for (const auto& [di, dj] : {std::pair{1, 0}, std::pair{0, 1}}) {
+        if (i + di >= m.x.points || j + dj >= m.y.points) continue;
+        const MapCell& d = m.cells[static_cast<std::size_t>((j + dj) * m.x.points + i + di)];
+        if (d.shimmy != c.shimmy) boundary << 0.5 * (c.x + d.x) << ',' << 0.5 * (c.y + d.y) << '\n';
+      }
+    }
+    csv << '\n';  // gnuplot reads blank-line-separated rows as a grid
+  }
+  write_file_atomically(dir + "/" + base + ".csv", csv.str());
+  write_file_atomically(dir + "/" + base + "_boundary.csv", boundary.str() + "\n");
+  std::ostringstream gp;
+  gp << "set terminal pngcairo noenhanced size 760,620 font ',10'\nset output '" << base
+     << ".png'\n"
+     << "set datafile separator ','\nset title '" << to_string(m.contact)
+     << ": torsional growth rate [1/s]; black: shimmy boundary'\n"
+     << "set xlabel '" << m.x.parameter << "'\nset ylabel '" << m.y.parameter << "'\n"
+     << "set palette defined (0 '#2166ac', 0.5 '#f7f7f7', 1 '#b2182b')\n"
+     << "set cbrange [" << -g_max << ":" << g_max << "]\nset cblabel 'growth rate [1/s]'\n"
+     << "set xrange [" << m.x.from << ":" << m.x.to << "]\nset yrange [" << m.y.from << ":"
+     << m.y.to << "]\n"
+     << "plot '" << base << ".csv' skip 1 using 1:2:($7 > 0 ? $3 : NaN) with image notitle, '"
+     << base << "_boundary.csv' using 1:2 with points pt 7 ps 0.5 lc rgb 'black' notitle\n";
+  run_gnuplot(dir, base, gp.str());
+  return {{"x", m.x.parameter},
+          {"y", m.y.parameter},
+          {"points", {m.x.points, m.y.points}},
+          {"shimmy_cells", shimmy_cells},
+          {"failed_cells", failed},
+          {"csv", base + ".csv"},
+          {"png", base + ".png"}};
+}
+
+int run(const ShimmyConfig& config, const std::string& out, bool maps, int map_size,
+        unsigned threads) {
+  std::filesystem::create_directories(out);
+  nlohmann::json summary;
+  std::vector<LandingRun> runs;
+  std::printf("%-13s %6s %9s %10s %11s %11s %9s %7s %9s %8s\n", "model", "shimmy", "freq[Hz]",
+              "growth[1/s]", "peak psi", "peak y[m]", "spinup[s]", "steps", "wall[ms]", "conv");
+  for (ContactModel cm : config.models) {
+    const GearModel model = make_gear_model(config.gear, cm);
+    LandingRun r = simulate_landing(model, config.solver, config.criterion);
+    // Convergence: the same landing at a 100 times tighter tolerance.
+    SolverOptions tight = config.solver;
+    tight.relative_tolerance *= 1e-2;
+    tight.record = false;
+    const LandingRun t = simulate_landing(model, tight, config.criterion);
+    const double d_growth =
+        std::abs(r.metrics.torsion.growth_rate_per_s - t.metrics.torsion.growth_rate_per_s);
+    const double d_peak = std::abs(r.metrics.peak_torsion_rad - t.metrics.peak_torsion_rad) /
+                          std::max(t.metrics.peak_torsion_rad, 1e-12);
+    const bool converged =
+        d_growth <= 0.05 + 0.02 * std::abs(t.metrics.torsion.growth_rate_per_s) && d_peak <= 0.02 &&
+        r.metrics.shimmy == t.metrics.shimmy;
+    write_file_atomically(out + "/" + to_string(cm) + ".csv", csv_history(r));
+    nlohmann::json j = run_json(r);
+    j["convergence"] = {{"tight_relative_tolerance", tight.relative_tolerance},
+                        {"growth_rate_change_per_s", d_growth},
+                        {"peak_torsion_relative_change", d_peak},
+                        {"converged", converged}};
+    summary["models"][to_string(cm)] = j;
+    const OscillationEstimate& o = r.metrics.torsion;
+    std::printf("%-13s %6s %9.2f %10.3f %11.3e %11.3e %9s %7ld %9.2f %8s\n", to_string(cm),
+                r.metrics.shimmy ? "yes" : "no", o.frequency_hz, o.growth_rate_per_s,
+                r.metrics.peak_torsion_rad, r.metrics.peak_lateral_m,
+                r.spin_up_s ? std::to_string(*r.spin_up_s).substr(0, 6).c_str() : "-", r.steps,
+                1e3 * r.wall_s, converged ? "ok" : "NO");
+    if (!converged)
+      std::fprintf(stderr,
+                   "warning: %s: growth rate changes by %.3g 1/s and peak torsion by %.2g %% at "
+                   "a 100x tighter tolerance; tighten solver.relative_tolerance\n",
+                   to_string(cm), d_growth, 100 * d_peak);
+    runs.push_back(std::move(r));
+  }
+  summary["analysis_window_s"] = {runs.front().window_start_s, runs.front().window_end_s};
+  summary["configuration"] = to_json(config);
+  draw_histories(out, runs);
+
+  if (maps) {
+    for (const auto& [x0, y0] : config.maps) {
+      MapAxis x = x0, y = y0;
+      if (map_size > 0) x.points = y.points = map_size;
+      for (ContactModel cm : config.models) {
+        const GearModel model = make_gear_model(config.gear, cm);
+        const std::string label = std::string(to_string(cm)) + " " + short_name(x.parameter) +
+                                  " x " + short_name(y.parameter);
+        const StabilityMap m =
+            stability_map(model, x, y, config.solver, config.criterion, threads,
+                          [&](int done, int total) { progress_bar(label, done, total); });
+        summary["maps"].push_back(write_map(out, m));
+        summary["maps"].back()["model"] = to_string(cm);
+      }
+    }
+  }
+  write_file_atomically(out + "/summary.json", summary.dump(2) + "\n");
+  std::printf("wrote %s/summary.json, CSV time histories and PNGs\n", out.c_str());
+  return 0;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  CLI::App app{
+      "A one-wheel main landing gear through touchdown, sliding and spin-up: shimmy "
+      "with coupled, decoupled and nonholonomic tire contact (docs/shimmy.md)",
+      kName};
+  std::string config_path, out = "out/shimmy";
+  bool maps = false, print_config = false;
+  int map_size = 0;
+  unsigned threads = 0;
+  app.add_option("--config", config_path, "JSON configuration (defaults: docs/shimmy.md)")
+      ->check(CLI::ExistingFile);
+  app.add_option("--out", out, "output directory")->capture_default_str();
+  app.add_flag("--map", maps, "also draw the stability maps of the configuration");
+  app.add_option("--map-size", map_size, "points per map axis (overrides the configuration)")
+      ->check(CLI::Range(2, 1000));
+  app.add_option("--threads", threads, "threads for the maps (0: all cores)")
+      ->capture_default_str();
+  app.add_flag("--print-config", print_config, "print the configuration as JSON and exit");
+  CLI11_PARSE(app, argc, argv);
+  try {
+    ShimmyConfig config;
+    if (!config_path.empty()) config = read_shimmy_config(config_path);
+    if (print_config) {
+      std::cout << to_json(config).dump(2) << '\n';
+      return 0;
+    }
+    return run(config, out, maps, map_size, threads);
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "%s: %s\n", kName, e.what());
+    return 1;
+  }
+}

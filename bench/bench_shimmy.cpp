@@ -1,0 +1,54 @@
+// The shimmy demo's speed: a one-second landing of each contact model (wall time and the
+// real-time factor: simulated seconds per wall second), and a 50 x 50 stability map on 2 threads
+// against the same map on 1 thread as the in-process baseline (the ratio is the speed-up).
+#include <benchmark/benchmark.h>
+
+#include <chrono>
+
+#include "contensou/landing_simulation.hpp"
+#include "contensou/stability_map.hpp"
+
+using namespace contensou;
+
+namespace {
+
+void BM_Landing(benchmark::State& state, ContactModel contact, bool exact) {
+  GearConfig c;
+  c.tire.exact_integrals = exact;
+  const GearModel m = make_gear_model(c, contact);
+  SolverOptions o;
+  o.record = false;
+  long steps = 0;
+  for (auto _ : state) steps = simulate_landing(m, o).steps;
+  state.counters["steps"] = static_cast<double>(steps);
+  state.counters["realtime_factor"] = benchmark::Counter(
+      c.scenario.end_time_s * static_cast<double>(state.iterations()), benchmark::Counter::kIsRate);
+}
+
+void BM_Map(benchmark::State& state) {
+  const unsigned threads = static_cast<unsigned>(state.range(0));
+  const int n = static_cast<int>(state.range(1));
+  const GearModel m = make_gear_model(GearConfig{}, ContactModel::coupled);
+  const MapAxis x{"scenario.forward_speed_mps", 30.0, 90.0, n};
+  const MapAxis y{"structure.torsional_damping_nms_per_rad", 0.0, 400.0, n};
+  for (auto _ : state) benchmark::DoNotOptimize(stability_map(m, x, y, {}, {}, threads));
+  state.counters["cells"] = n * n;
+  state.counters["threads"] = threads;
+}
+
+}  // namespace
+
+BENCHMARK_CAPTURE(BM_Landing, coupled, ContactModel::coupled, false)->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(BM_Landing, decoupled, ContactModel::decoupled, false)
+    ->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(BM_Landing, nonholonomic, ContactModel::nonholonomic, false)
+    ->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(BM_Landing, coupled_exact_integrals, ContactModel::coupled, true)
+    ->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_Map)
+    ->Args({2, 50})
+    ->Args({1, 50})
+    ->Iterations(1)
+    ->Unit(benchmark::kSecond)
+    ->UseRealTime();
+BENCHMARK_MAIN();
