@@ -220,12 +220,10 @@ ContactState contact_state(const GearModel& model, const GearMode& mode, double 
   cs.slip_ratio = cs.slip.vx / V;
   cs.load_n = mode.loaded ? vertical_load(s, t) : 0.0;
   // R = sqrt(N / (2 pi p* A^1)), floored so that the law stays defined at zero load.
-  const double r_static = std::sqrt(
-      s.static_load_n / (2.0 * std::numbers::pi * c.tire.inflation_pressure_pa * model.moment_1));
-  cs.patch_radius_m =
-      std::max(std::sqrt(cs.load_n /
-                         (2.0 * std::numbers::pi * c.tire.inflation_pressure_pa * model.moment_1)),
-               1e-3 * r_static);
+  const auto radius = [&](double N) {
+    return std::sqrt(N / (2.0 * std::numbers::pi * c.tire.inflation_pressure_pa * model.moment_1));
+  };
+  cs.patch_radius_m = std::max(radius(cs.load_n), 1e-3 * radius(s.static_load_n));
   // Anti-skid: the brake sees the wheel-speed slip 1 - Omega r / V (a wheel tachometer),
   // not the patch's sliding, which also carries -l psi' / V.
   if (mode.brake_command) {
