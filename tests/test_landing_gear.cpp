@@ -275,6 +275,8 @@ TEST(LandingGear, BadInputIsRejectedByName) {
   EXPECT_THROW(make_gear_model(c, ContactModel::coupled), InvalidArgument);
   EXPECT_THROW(contact_model_from_string("rolling"), InvalidArgument);
   EXPECT_EQ(gear_parameter(c, "structure.nope"), nullptr);
+  EXPECT_THROW(simulate_landing(make_gear_model(GearConfig{}, ContactModel::coupled), {0.0}),
+               InvalidArgument);
   EXPECT_THROW(stability_map(make_gear_model(GearConfig{}, ContactModel::coupled),
                              {"structure.nope", 0, 1, 2}, {"structure.offset_m", 0, 1, 2}, {}, {}),
                InvalidArgument);

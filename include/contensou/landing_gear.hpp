@@ -20,6 +20,8 @@
 #include <array>
 #include <memory>
 #include <string>
+#include <string_view>
+#include <vector>
 
 #include "contensou/contact_patch.hpp"
 #include "contensou/kinematics.hpp"
@@ -111,6 +113,11 @@ struct GearConfig {
 
 // Throws InvalidArgument naming the first bad field.
 void validate(const GearConfig& config);
+
+// The numeric parameters of a GearConfig by dotted name ("structure.offset_m",
+// "scenario.forward_speed_mps", "tire.friction.static_coefficient", ...); nullptr if unknown.
+double* gear_parameter(GearConfig& config, std::string_view name);
+std::vector<std::string> gear_parameter_names();
 
 enum StateIndex : int { kY = 0, kYDot, kPsi, kPsiDot, kSpin, kLambda, kStateSize };
 using GearState = Eigen::Matrix<double, kStateSize, 1>;

@@ -12,10 +12,10 @@
 
 namespace contensou {
 
+// The absolute tolerance of each state is relative_tolerance times a scale: 1 mm, 0.1 m/s,
+// 1 mrad, 0.1 rad/s, 100 rad/s, 1 mm (y, y', psi, psi', Omega, lambda).
 struct SolverOptions {
   double relative_tolerance = 1e-7;
-  // Absolute tolerance of each state = relative_tolerance * scale: 1 mm, 0.1 m/s, 1 mrad,
-  // 0.1 rad/s, 100 rad/s, 1 mm (y, y', psi, psi', Omega, lambda).
   double output_interval_s = 5e-4;  // samples for the time history and the shimmy analysis
   bool record = true;               // keep the samples (the analysis runs either way)
   long max_steps = 1000000;
@@ -63,8 +63,9 @@ struct LandingRun {
 // when braking, else [full load, end]; explicit window_start_s / window_end_s override.
 std::pair<double, double> analysis_window(const LandingScenario& scenario);
 
-// Integrates from t = 0 to scenario.end_time_s. Throws std::runtime_error naming the CVODE
-// failure (flag, time) if the integrator gives up.
+// Integrates from t = 0 to scenario.end_time_s. Throws InvalidArgument for a bad
+// configuration or solver option, std::runtime_error naming the CVODE failure (flag, time) if
+// the integrator gives up.
 LandingRun simulate_landing(const GearModel& model, const SolverOptions& options = {},
                             const ShimmyCriterion& criterion = {});
 

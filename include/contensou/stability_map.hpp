@@ -11,11 +11,6 @@
 
 namespace contensou {
 
-// The numeric parameters of a GearConfig by dotted name ("structure.offset_m",
-// "scenario.forward_speed_mps", "tire.friction.static_coefficient", ...); nullptr if unknown.
-double* gear_parameter(GearConfig& config, std::string_view name);
-std::vector<std::string> gear_parameter_names();
-
 struct MapAxis {
   std::string parameter;  // a name from gear_parameter_names()
   double from = 0.0, to = 1.0;
