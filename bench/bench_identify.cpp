@@ -3,9 +3,9 @@
 // in-process baseline.
 #include <benchmark/benchmark.h>
 
-#include "contensou/closed_loop.hpp"
-#include "contensou/identification.hpp"
-#include "contensou/simulation.hpp"
+#include "contensou/identification/closed_loop.hpp"
+#include "contensou/identification/fit.hpp"
+#include "contensou/identification/simulation.hpp"
 
 using namespace contensou;
 

@@ -5,8 +5,8 @@
 
 #include <chrono>
 
-#include "contensou/landing_simulation.hpp"
-#include "contensou/stability_map.hpp"
+#include "contensou/gear/landing_simulation.hpp"
+#include "contensou/gear/stability_map.hpp"
 
 using namespace contensou;
 

@@ -7,8 +7,8 @@
 #include <sstream>
 
 #include "contensou/contensou.hpp"
-#include "contensou/identification.hpp"
-#include "contensou/simulation.hpp"
+#include "contensou/identification/fit.hpp"
+#include "contensou/identification/simulation.hpp"
 #include "gnuplot.hpp"
 #include "report.hpp"
 

@@ -4,8 +4,8 @@
 #include <nlohmann/json.hpp>
 #include <string>
 
-#include "contensou/closed_loop.hpp"
-#include "contensou/identification.hpp"
+#include "contensou/identification/closed_loop.hpp"
+#include "contensou/identification/fit.hpp"
 
 namespace contensou::app {
 

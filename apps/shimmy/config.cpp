@@ -5,7 +5,7 @@
 #include <sstream>
 #include <stdexcept>
 
-#include "contensou/error.hpp"
+#include "contensou/friction/error.hpp"
 
 namespace contensou::app {
 

@@ -5,9 +5,9 @@
 #include <string>
 #include <vector>
 
-#include "contensou/landing_gear.hpp"
-#include "contensou/landing_simulation.hpp"
-#include "contensou/stability_map.hpp"
+#include "contensou/gear/landing_gear.hpp"
+#include "contensou/gear/landing_simulation.hpp"
+#include "contensou/gear/stability_map.hpp"
 
 namespace contensou::app {
 

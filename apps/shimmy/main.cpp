@@ -12,7 +12,7 @@
 #include <sstream>
 
 #include "config.hpp"
-#include "contensou/error.hpp"
+#include "contensou/friction/error.hpp"
 #include "gnuplot.hpp"
 
 using namespace contensou;

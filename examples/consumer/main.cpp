@@ -1,6 +1,6 @@
 // Quick start: exact resultants and the fractional law for the seed tire.
 #include <contensou/contensou.hpp>
-#include <contensou/landing_simulation.hpp>
+#include <contensou/gear/landing_simulation.hpp>
 
 #include <cstdio>
 

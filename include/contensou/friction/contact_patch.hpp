@@ -1,0 +1,53 @@
+// The contact patch: geometry, pressure and friction of the exact model (theory.md section 2).
+#pragma once
+
+#include <cmath>
+#include <optional>
+
+#include "contensou/friction/pressure_profile.hpp"
+
+namespace contensou {
+
+// Friction coefficient falling with the local slip speed w [m/s] (Stribeck-type):
+//   f(w) = f_k + (f_s - f_k) exp(-(w / w_s)^delta).
+template <class T = double>
+struct SlipSpeedFriction {
+  T static_coefficient{0.3};   // f_s, at w = 0
+  T kinetic_coefficient{0.3};  // f_k, for w >> w_s
+  T reference_speed{1.0};      // w_s [m/s]
+  T exponent{1.0};             // delta
+};
+
+template <class T>
+T friction_at(const SlipSpeedFriction<T>& law, const T& w) {
+  using std::exp;
+  using std::pow;
+  if (!(w > T(0))) return law.static_coefficient;
+  return law.kinetic_coefficient + (law.static_coefficient - law.kinetic_coefficient) *
+                                       exp(-pow(w / law.reference_speed, law.exponent));
+}
+
+// Everything the exact model needs: sigma = p* p(rho) (1 + kx x/R + ky y/R) on a disk of radius
+// R, orthotropic Coulomb friction diag(f, kappa f) (seed eq. 1), f optionally f(w).
+struct ContactPatch {
+  double radius_m = 0.087;               // R [m]
+  double reference_pressure_pa = 2.1e5;  // p* [Pa]
+  double friction = 0.3;                 // f (longitudinal)
+  double kappa = 1.0;                    // lateral / longitudinal friction ratio
+  PressureProfile profile;               // shape p(rho) and shift kx, ky
+  std::optional<SlipSpeedFriction<double>> slip_speed_friction;  // replaces `friction` if set
+};
+
+// The tire of the seed (Kireenkov & Zhavoronok 2020): R = 0.087 m (section 4), the Table 1
+// profile, f = 0.3 (Table 3), p* = 210 kPa (so that N = 4535 N, near Table 2's 4.48 kN), no
+// shift (set profile.kx = 0.14 for the rolling tire of seed eq. 10).
+ContactPatch seed_tire_patch();
+
+// Normal load N = 2 pi R^2 p* A^1 [N] (theory.md section 4).
+double normal_load(const ContactPatch& patch);
+
+// Throws InvalidArgument naming the first bad field (radius, pressure, friction, kappa,
+// shift, slip-speed law).
+void validate(const ContactPatch& patch);
+
+}  // namespace contensou

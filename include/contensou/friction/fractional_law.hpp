@@ -1,0 +1,100 @@
+// Fractional (Pade-type) laws of coupled dry friction (seed eqs. 5-7, 13; theory.md section 4),
+// in vector form for any sliding direction, with analytic Jacobians.
+//
+// With u = omega R, v = |v|, eps the regularisation speed and k = (kx, ky):
+//   F  = -F0 (vx, kappa vy) / S_a                                   S_a = sqrt(v^2 + a u^2 + eps^2)
+//        -(M0 / 2R) [ g2 (z x k) + (g1 - g2) (k.v)(z x v) / v^2 ]
+//   Mz = -M0 (1 + kappa)/2 u / S_m + Mk (vx ky - kappa vy kx) v^2 / S_k^3
+//   g1 = u / sqrt(u^2 + m v^2 / 4 + eps^2),  g2 = u^3 / (u^2 + c v^2 + eps^2)^(3/2),
+//   S_m = sqrt(u^2 + m v^2 + eps^2),          S_k = sqrt(v^2 + a_k u^2 + eps^2).
+// For sliding along x with the shift along x this is the seed's law (5) exactly:
+//   F_par = F0 v / sqrt(v^2 + a u^2),  Fy = -kx M0 u / (2R sqrt(u^2 + m v^2/4)),
+//   Mz = -M0 u / sqrt(u^2 + m v^2).
+// The shift across the sliding direction (k_perp = k . (z x v)/v) adds two terms the seed does
+// not have: a force along v that is sign(omega) (M0/2R) k_perp at pure spin and decays like
+// (u/v)^3 (shape c), and the pure-sliding torque Mk k_perp, Mk = pi f R^3 p* A^3, which the
+// exact integrals show to vanish like (v/u)^3 at small sliding (shape a_k; 1 for uniform pressure).
+// Every term is bounded, and the law is smooth for eps > 0: no NaN or Inf for finite input.
+#pragma once
+
+#include <Eigen/Core>
+#include <algorithm>
+#include <cmath>
+
+#include "contensou/friction/contact_patch.hpp"
+#include "contensou/friction/kinematics.hpp"
+#include "contensou/friction/scalar.hpp"
+
+namespace contensou {
+
+template <class T = double>
+struct FractionalLaw {
+  T F0{0};              // sliding force scale f N [N]
+  T M0{0};              // spin torque scale 2 pi f R^3 p* A^2 [N m]
+  T a{1};               // sliding shape (2 A^1/A^0)^2
+  T m{64.0 / 9.0};      // spin shape (2 A^2/A^3)^2
+  T kx{0}, ky{0};       // pressure shift (seed eq. 9)
+  T kappa{1};           // lateral / longitudinal friction ratio
+  T c{4};               // shape of the cross-shift force, (4 A^2/A^5)^(2/3)
+  T Mk{0};              // cross-shift sliding torque pi f R^3 p* A^3 [N m]
+  T a_k{1};             // shape of the cross-shift torque (exact small-sliding asymptote)
+  double radius = 0.1;  // R [m]
+  double regularization_speed = 1e-4;  // eps [m/s]
+};
+
+// Asymptote-matched coefficients from a patch (theory.md section 4): a, m, c from the
+// moments A^n; a_k from the exact integrals' small-sliding asymptote.
+FractionalLaw<double> fractional_law_from_patch(const ContactPatch& patch);
+
+// a and m (and c, a_k when the patch has a shift) fitted by least squares to the exact
+// integrals over psi = v/u in [psi_min, psi_max] (log-spaced, n points), sliding along x.
+FractionalLaw<double> fractional_law_fitted(const ContactPatch& patch, double psi_min = 1e-2,
+                                            double psi_max = 1e2, int n = 41);
+
+// Throws InvalidArgument naming the first bad parameter.
+void validate(const FractionalLaw<double>& law);
+
+// Every term is homogeneous of degree 0 in (v, u, eps): the law is evaluated on velocities
+// divided by s = max(|vx|, |vy|, |u|, eps), which keeps squares finite for any finite input.
+template <class T>
+Resultants<T> fractional_resultants(const FractionalLaw<T>& p, const Kinematics<T>& k0) {
+  using std::sqrt;
+  const double R = p.radius;
+  const double s = std::max({std::abs(value_of(k0.vx)), std::abs(value_of(k0.vy)),
+                             std::abs(value_of(k0.omega)) * R, p.regularization_speed});
+  const Kinematics<T> k{k0.vx / s, k0.vy / s, k0.omega / s};
+  const double e2 = (p.regularization_speed / s) * (p.regularization_speed / s);
+  const T u = k.omega * R;
+  const T U = u * u;
+  const T q = k.vx * k.vx + k.vy * k.vy;
+  const T Sa = sqrt(q + p.a * U + e2);
+  const T Sm = sqrt(U + p.m * q + e2);
+  const T S1 = sqrt(U + 0.25 * p.m * q + e2);
+  const T S2sq = U + p.c * q + e2;
+  const T S2 = sqrt(S2sq);
+  const T g1 = u / S1;
+  const T g2 = U * u / (S2sq * S2);
+  const T half_m0_r = p.M0 / (2.0 * R);
+  Resultants<T> r;
+  r.Fx = -p.F0 * k.vx / Sa + half_m0_r * g2 * p.ky;
+  r.Fy = -p.F0 * p.kappa * k.vy / Sa - half_m0_r * g2 * p.kx;
+  if (value_of(q) > 1e-30 * (value_of(U) + e2)) {
+    const T h = (g1 - g2) * (p.kx * k.vx + p.ky * k.vy) / q;
+    r.Fx += half_m0_r * h * k.vy;
+    r.Fy -= half_m0_r * h * k.vx;
+  }
+  const T Sk2 = q + p.a_k * U + e2;
+  r.Mz = -p.M0 * 0.5 * (1.0 + p.kappa) * u / Sm +
+         p.Mk * (k.vx * p.ky - p.kappa * k.vy * p.kx) * q / (Sk2 * sqrt(Sk2));
+  return r;
+}
+
+// The law and its Jacobian d(Fx, Fy, Mz)/d(vx, vy, omega), analytic.
+struct FractionalWithJacobian {
+  Resultants<double> resultants;
+  Eigen::Matrix3d jacobian;  // rows Fx, Fy, Mz; columns vx, vy, omega
+};
+FractionalWithJacobian fractional_resultants_with_jacobian(const FractionalLaw<double>& p,
+                                                           const Kinematics<double>& k);
+
+}  // namespace contensou

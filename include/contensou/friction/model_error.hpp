@@ -1,0 +1,41 @@
+// How far the fractional law is from the exact integrals (theory.md section 5).
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "contensou/friction/contact_patch.hpp"
+#include "contensou/friction/error.hpp"
+#include "contensou/friction/fractional_law.hpp"
+
+namespace contensou {
+
+// Error of one channel of one law over the ratios, relative to F0 (forces) or M0 (torque).
+struct ChannelError {
+  std::string channel;   // "F_par", "F_lat", "Mz"
+  double max_error = 0;  // max |law - exact| / scale
+  double rms_error = 0;
+  double worst_psi = 0;  // psi = v/u where the maximum occurs
+};
+
+struct LawError {
+  std::string name;  // "asymptote-matched" or "least-squares"
+  FractionalLaw<double> law;
+  std::vector<ChannelError> channels;
+};
+
+struct ModelErrorReport {
+  double psi_min = 1e-3, psi_max = 1e3;
+  int points = 0;
+  std::vector<LawError> laws;
+};
+
+// Compares both coefficient sets with the exact integrals, sliding along x, at `points`
+// log-spaced psi = v/u in [psi_min, psi_max]. F_lat is reported when the patch has kx != 0.
+ModelErrorReport model_error_report(const ContactPatch& patch, double psi_min = 1e-3,
+                                    double psi_max = 1e3, int points = 61);
+
+// A plain-text table of the report.
+std::string format_report(const ModelErrorReport& report);
+
+}  // namespace contensou

@@ -1,0 +1,176 @@
+// A one-wheel main landing gear through touchdown, sliding and spin-up (docs/shimmy.md).
+//
+// Degrees of freedom (state x, SI units):
+//   y, y'     lateral bending of the strut at the wheel [m, m/s]
+//   psi, psi' torsion of the strut about its vertical axis [rad, rad/s]
+//   Omega     wheel spin about the axle, positive when rolling forward [rad/s]
+//   lambda    lateral deflection of the stretched-string tire's leading point [m]
+// Ground frame X forward, Y left, Z up; the wheel frame is turned by psi. The patch centre lies
+// a trail e behind the strut axis and an offset l to its left. Patch kinematics (theory.md
+// section 1, with spin omega = psi'):
+//   vx = V cos psi + (y' + Vd) sin psi - l psi' - Omega r
+//   vy = -V sin psi + (y' + Vd) cos psi - e psi'
+// Equations of motion (friction F = (Fx, Fy), Mz acting on the tire, wheel frame):
+//   m_y y''   = -k_y y - c_y y' + Fx sin psi + Fy cos psi
+//   I_psi psi'' = -k_psi psi - c_psi psi' + Mz - e Fy - l Fx
+//   I_w Omega'  = -r Fx - T_brake
+#pragma once
+
+#include <Eigen/Core>
+#include <array>
+#include <memory>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "contensou/friction/contact_patch.hpp"
+#include "contensou/friction/kinematics.hpp"
+
+namespace contensou {
+
+template <class T>
+struct ExactModel;
+
+// Which tire-ground law acts while the tire slides (docs/shimmy.md, "Contact models").
+enum class ContactModel {
+  coupled,      // the fractional law of theory.md section 4 (or the exact integrals)
+  decoupled,    // Coulomb sliding force and an independent Coulomb spin torque, regularised
+  nonholonomic  // rolling from touchdown: stretched string, no slip, no spin friction
+};
+const char* to_string(ContactModel model);
+ContactModel contact_model_from_string(const std::string& name);  // throws InvalidArgument
+
+struct GearStructure {
+  double lateral_mass_kg = 300.0;                 // m_y
+  double lateral_stiffness_n_per_m = 3.0e6;       // k_y
+  double lateral_damping_ns_per_m = 1000.0;       // c_y
+  double torsional_inertia_kgm2 = 25.0;           // I_psi
+  double torsional_stiffness_nm_per_rad = 1.0e6;  // k_psi
+  double torsional_damping_nms_per_rad = 100.0;   // c_psi (1 % of critical)
+  double trail_m = 0.05;                          // e, patch centre behind the strut axis
+  double offset_m = 0.25;                         // l, patch centre left of the strut axis
+  double wheel_radius_m = 0.57;                   // r, rolling radius
+  double wheel_inertia_kgm2 = 10.0;               // I_w
+};
+
+// The sliding tire: the seed tire's pressure profile (theory.md section 5) at the inflation
+// pressure p*; the patch radius follows from the load, R = sqrt(N / (2 pi p* A^1)).
+struct SlidingTire {
+  double inflation_pressure_pa = 1.25e6;                     // p*
+  double rolling_shift = 0.14;                               // kx (seed eq. 10, Table 3)
+  SlipSpeedFriction<double> friction{0.8, 0.45, 10.0, 2.0};  // f(w), w the slip speed
+  double regularization_speed = 0.05;                        // eps [m/s]
+  // Coefficients a, m (and c, a_k) of the coupled law: "fitted" by least squares to the exact
+  // integrals of the profile (fractional_law_fitted), "asymptotic" (fractional_law_from_patch)
+  // or "seed" (a = 1.03, m = 1.72 of seed Table 3).
+  std::string law_coefficients = "fitted";
+  bool exact_integrals = false;  // coupled model: exact integrals instead of the law
+};
+
+// The rolling tire (von Schlippe / Somieski stretched string; Pacejka 2012, ch. 5):
+//   lambda' = -(vy + a psi') - (V / sigma) lambda,   alpha = lambda / sigma,
+//   Fy = mu N tanh(C_Fa alpha / mu),  Mz = -C_Ma N (mu / C_Fa) tanh(C_Fa alpha / mu) - kappa_t psi'
+//   / V, Fx = -mu N tanh(C_x s / mu),      s = vx / V (longitudinal slip ratio),
+// with a = R the half contact length and mu the friction at zero slip speed.
+struct RollingTire {
+  double relaxation_length_m = 0.6;             // sigma
+  double cornering_coefficient = 8.0;           // C_Fa [1/rad], cornering stiffness / N
+  double aligning_coefficient_m = 0.8;          // C_Ma [m/rad], aligning stiffness / N
+  double tread_moment_nm2_per_rad = 500.0;      // kappa_t at full load, scaled with N
+  double longitudinal_slip_coefficient = 20.0;  // C_x, longitudinal slip stiffness / N
+};
+
+// The landing: prescribed load ramp, constant forward speed, optional braking.
+struct LandingScenario {
+  double forward_speed_mps = 70.0;   // V
+  double drift_speed_mps = 0.3;      // Vd, lateral ground speed at touchdown (residual crab)
+  double static_load_n = 80.0e3;     // N after the ramp
+  double touchdown_time_s = 0.02;    // load onset
+  double load_ramp_s = 0.1;          // N = N_s S((t - t_td) / T), S(x) = x^2 (3 - 2 x)
+  double end_time_s = 1.0;           // touchdown at or after it: the gear never lands
+  double initial_torsion_rad = 0.0;  // psi(0)
+  double initial_lateral_m = 0.0;    // y(0)
+  double rolling_slip = 0.05;        // sliding -> rolling when s falls below (end of spin-up)
+  double sliding_slip = 0.10;        // rolling -> sliding when s rises above
+  bool braking = true;
+  double brake_on_s = 0.25;  // brake command on / off (events)
+  double brake_off_s = 0.95;
+  double brake_max_torque_nm = 40.0e3;
+  double brake_target_slip = 0.15;  // anti-skid: T = T_max / (1 + exp((s_w - s*) / ds)),
+                                    // s_w = 1 - Omega r / V the wheel-speed slip
+  double brake_slip_band = 0.01;    // ds
+  // Shimmy is judged on [window_start, window_end]; negative means automatic (docs).
+  double window_start_s = -1.0;
+  double window_end_s = -1.0;
+};
+
+struct GearConfig {
+  GearStructure structure;
+  SlidingTire tire;
+  RollingTire rolling;
+  LandingScenario scenario;
+};
+
+// Throws InvalidArgument naming the first bad field.
+void validate(const GearConfig& config);
+
+// The numeric parameters of a GearConfig by dotted name ("structure.offset_m",
+// "scenario.forward_speed_mps", "tire.friction.static_coefficient", ...); nullptr if unknown.
+double* gear_parameter(GearConfig& config, std::string_view name);
+std::vector<std::string> gear_parameter_names();
+
+enum StateIndex : int { kY = 0, kYDot, kPsi, kPsiDot, kSpin, kLambda, kStateSize };
+using GearState = Eigen::Matrix<double, kStateSize, 1>;
+
+// The discrete part of the state, changed only at events.
+struct GearMode {
+  bool loaded = false;         // after load onset
+  bool rolling = false;        // rolling tire (after spin-up); always true for nonholonomic
+  bool brake_command = false;  // between brake on and brake off
+};
+
+// What the contact sees and gives at one instant.
+struct ContactState {
+  double load_n = 0.0;          // N
+  double patch_radius_m = 0.0;  // R
+  Kinematics<double> slip;      // vx, vy, omega = psi'
+  double slip_ratio = 0.0;      // s = vx / V
+  double friction = 0.0;        // f at the effective slip speed (sliding) or mu (rolling)
+  Resultants<double> force;     // on the tire, wheel frame
+  double brake_torque_nm = 0.0;
+};
+
+// Everything fixed for one run: the configuration, the contact model and the friction law's
+// coefficients; cheap to copy. Building it with exact_integrals fits the exact model once.
+struct GearModel {
+  GearConfig config;
+  ContactModel contact = ContactModel::coupled;
+  double moment_ratio_2 = 0.0;  // A^2 / A^1 (M0 = f N R A^2 / A^1)
+  double moment_ratio_3 = 0.0;  // A^3 / A^1
+  double moment_1 = 0.0;        // A^1
+  double law_a = 1.0, law_m = 1.0, law_c = 4.0, law_a_k = 1.0;
+  // Exact model of the unit patch (R = 1 m, p* = 1 Pa, f = 1) when tire.exact_integrals:
+  // F = f p* R^2 F_1(vx, vy, omega R), Mz = f p* R^3 Mz_1(vx, vy, omega R).
+  std::shared_ptr<const ExactModel<double>> exact;
+};
+GearModel make_gear_model(const GearConfig& config, ContactModel contact);
+
+// N(t): zero before touchdown, the smooth ramp, then the static load.
+double vertical_load(const LandingScenario& s, double t);
+
+// The initial state at t = 0 (wheel at rest, or rolling for the nonholonomic model).
+GearState initial_state(const GearModel& model);
+GearMode initial_mode(const GearModel& model);
+
+// Contact kinematics and forces for a state.
+ContactState contact_state(const GearModel& model, const GearMode& mode, double t,
+                           const GearState& x);
+
+// dx/dt.
+GearState gear_rhs(const GearModel& model, const GearMode& mode, double t, const GearState& x);
+
+// Stretched-string deflection that carries the sliding lateral force over unchanged when
+// the tire starts to roll (inverse of the rolling Fy law).
+double string_deflection_for_force(const GearModel& model, double lateral_force_n, double load_n);
+
+}  // namespace contensou

@@ -1,0 +1,72 @@
+// Integration of the landing-gear model with SUNDIALS CVODE (BDF, dense direct solver) and
+// root-finding for the events: load onset, full load, end of spin-up (sliding -> rolling),
+// renewed sliding (rolling -> sliding), brake on, brake off (docs/shimmy.md).
+#pragma once
+
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "contensou/gear/landing_gear.hpp"
+#include "contensou/gear/oscillation.hpp"
+
+namespace contensou {
+
+// The absolute tolerance of each state is relative_tolerance times a scale: 1 mm, 0.1 m/s,
+// 1 mrad, 0.1 rad/s, 100 rad/s, 1 mm (y, y', psi, psi', Omega, lambda).
+struct SolverOptions {
+  double relative_tolerance = 1e-7;
+  double output_interval_s = 5e-4;  // samples for the time history and the shimmy analysis
+  bool record = true;               // keep the samples (the analysis runs either way)
+  long max_steps = 1000000;
+};
+
+struct LandingSample {
+  double t = 0.0;
+  GearState x = GearState::Zero();
+  ContactState contact;
+  bool rolling = false;
+};
+
+struct LandingEvent {
+  double t = 0.0;
+  std::string what;  // "load onset", "full load", "spin-up", "sliding", "brake on", "brake off"
+};
+
+// docs/shimmy.md, "What counts as shimmy": on the analysis window, the torsional oscillation
+// grows or holds (fitted growth rate above sustained_growth_rate_per_s, which admits a
+// saturated limit cycle) and ends above amplitude_threshold_rad.
+struct ShimmyCriterion {
+  double amplitude_threshold_rad = 1e-3;
+  double sustained_growth_rate_per_s = -0.1;
+};
+
+struct ShimmyMetrics {
+  bool shimmy = false;
+  OscillationEstimate torsion;    // on the window
+  double peak_torsion_rad = 0.0;  // max |psi| after touchdown
+  double peak_lateral_m = 0.0;    // max |y| after touchdown
+};
+
+struct LandingRun {
+  ContactModel contact = ContactModel::coupled;
+  std::vector<LandingSample> samples;  // empty unless options.record
+  std::vector<LandingEvent> events;
+  std::optional<double> spin_up_s;  // touchdown to the end of spin-up; 0 for nonholonomic
+  double window_start_s = 0.0, window_end_s = 0.0;
+  ShimmyMetrics metrics;
+  long steps = 0;
+  double wall_s = 0.0;
+};
+
+// The analysis window of a scenario: the braked sliding phase [brake on + 0.1 s, brake off]
+// when braking, else [full load, end]; explicit window_start_s / window_end_s override.
+std::pair<double, double> analysis_window(const LandingScenario& scenario);
+
+// Integrates from t = 0 to scenario.end_time_s. Throws InvalidArgument for a bad
+// configuration or solver option, std::runtime_error naming the CVODE failure (flag, time) if
+// the integrator gives up.
+LandingRun simulate_landing(const GearModel& model, const SolverOptions& options = {},
+                            const ShimmyCriterion& criterion = {});
+
+}  // namespace contensou

@@ -1,0 +1,76 @@
+// The closed loop: find structure in the residual, trace it to a missing effect from a
+// catalogue, add it, refit, and report the error before and after (issue "Close the loop").
+//
+// Catalogue (each a nested extension: a parameter whose null value removes it):
+//   shape               the law's own approximation error: blend toward the exact integrals
+//                       over the profile (lambda, null 0), then switch to them if BIC prefers;
+//                       without a profile, the profile p = 1 + b1 T1 + b2 T2 is identified too
+//   anisotropy          kappa != 1 (null 1)
+//   pressure_shift_y    ky (null 0)
+//   speed_dependence    f(w) = f (1 - beta (1 - exp(-w / w_s))) (null beta = 0; w_s is scanned)
+//   channel_offset      a constant added to one measured channel (null 0)
+//   channel_crosstalk   one channel picks up g times another (null 0)
+// Selection at each step: a score (Lagrange-multiplier) test of every candidate at its null
+// from the current fit; candidates are fitted in order of significance (the most significant
+// always, the others while their score is significant), and the first is accepted for which
+// (1) the likelihood-ratio test is significant at alpha / (number of candidates scored),
+// (2) BIC improves and (3) the k-fold cross-validated error improves (one-step approximate
+// refits). Repeats until no candidate passes; then a backward pass removes accepted effects
+// that later ones made redundant. steps lists every fitted candidate.
+#pragma once
+
+#include <functional>
+#include <string>
+#include <vector>
+
+#include "contensou/identification/fit.hpp"
+
+namespace contensou {
+
+struct CandidateScore {
+  std::string effect;      // catalogue name
+  std::string detail;      // channel or pair, if any
+  double statistic = 0.0;  // score (LM) statistic, chi-square with 1 dof
+  double p_value = 1.0;    // after the correction for a scanned nuisance parameter
+};
+
+struct LoopStep {
+  std::vector<CandidateScore> scores;  // every candidate tried, most significant first
+  std::string effect, detail;          // the one fitted
+  bool accepted = false;
+  bool removed = false;                       // accepted, then removed by the backward pass
+  std::string verdict;                        // why it was accepted or not
+  std::vector<ParameterEstimate> parameters;  // the effect's parameters, fitted
+  double lr = 0.0, lr_p_value = 1.0, threshold = 0.0;
+  int lr_dof = 1;
+  double bic_before = 0.0, bic_after = 0.0;
+  double cv_before = 0.0, cv_after = 0.0;
+  double error_before = 0.0, error_after = 0.0;
+  std::vector<ChannelDiagnostics> channels_before, channels_after;
+  FitReport fit_after;  // the extended fit (kept for pictures)
+  FitReport fit_before;
+};
+
+struct ClosedLoopOptions {
+  double alpha = 1e-3;  // family-wise level of the likelihood-ratio test per step
+  int folds = 5;        // k of the cross-validation
+  int max_steps = 6;
+  // speed_dependence with the exact integrals: f(w) at the local slip speed inside the
+  // integrals (exact, about 50 times slower), or at the effective speed (default).
+  bool speed_inside_integrals = false;
+  std::function<void(const std::string&)> progress;  // called with a line per stage
+};
+
+struct ClosedLoopReport {
+  FitReport base;
+  FitReport final_fit;
+  ModelSpec final_spec;
+  std::vector<LoopStep> steps;
+  std::vector<std::string> accepted_effects;
+  bool structure_remains = false;  // the final residual is still not white
+};
+
+ClosedLoopReport close_the_loop(const MeasuredData& data, const IdentificationOptions& options,
+                                const ClosedLoopOptions& loop = {});
+
+}  // namespace contensou

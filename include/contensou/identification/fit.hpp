@@ -1,0 +1,143 @@
+// Identification of the fractional law's parameters from measured diagrams, with Ceres
+// (seed section 5, eqs. 14-15), reporting 95 % confidence intervals.
+//
+// The law (fractional_law.hpp) is fitted by weighted nonlinear least squares:
+//   min sum_i sum_c rho( ((y_ic - yhat_c(x_i; theta)) / s_ic)^2 ),  theta = (F0, a, M0, m, kx),
+// s_ic the noise scale of channel c (constant, or proportional to |yhat| for relative noise),
+// estimated from the data (fit, per-channel scatter, refit) unless given. The covariance of
+// theta is s^2 (J^T J)^-1 at the optimum (Ceres Covariance), s^2 = chi^2 / (n - p), and the 95 %
+// intervals use Student's t with n - p degrees of freedom. A parameter the data cannot
+// determine (its Jacobian column is zero or in the null space) is held at its start value
+// and reported without an interval.
+#pragma once
+
+#include <Eigen/Core>
+#include <array>
+#include <limits>
+#include <map>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "contensou/friction/fractional_law.hpp"
+#include "contensou/friction/pressure_profile.hpp"
+#include "contensou/identification/effect_model.hpp"
+#include "contensou/identification/measured_data.hpp"
+
+namespace contensou {
+
+enum class NoiseModel {
+  additive,  // s_ic = s_c
+  relative,  // s_ic = s_c max(|yhat_ic|, 5 % of the channel's largest |y|)
+};
+enum class RobustLoss { none, huber, cauchy };
+
+// Names (as used by --fix and the JSON report) and units of the fitted parameters.
+inline constexpr int kLawParameters = 5;
+inline constexpr const char* kLawParameterNames[kLawParameters] = {"F0_N", "a", "M0_Nm", "m", "kx"};
+inline constexpr const char* kLawParameterUnits[kLawParameters] = {"N", "1", "N m", "1", "1"};
+
+struct IdentificationOptions {
+  double radius_m = 0.0;                   // patch radius R [m] (required)
+  std::optional<double> normal_load_n;     // N [N]: f = F0 / N is reported when known
+  std::optional<PressureProfile> profile;  // shape constants c, a_k, Mk/M0 and the start a, m
+  std::map<std::string, double> fixed;     // parameter name -> value held fixed
+  NoiseModel noise_model = NoiseModel::additive;
+  std::optional<std::array<double, kChannels>> noise_scale;  // given s_c (else estimated)
+  RobustLoss loss = RobustLoss::none;
+  double loss_scale = 2.0;             // robust loss threshold, in noise scales
+  int noise_iterations = 6;            // fit / scatter / refit rounds when s_c is estimated
+  double regularization_speed = 1e-6;  // eps of the law [m/s]
+};
+
+struct ParameterEstimate {
+  std::string name;
+  std::string unit;
+  double value = 0.0;
+  bool fixed = false;
+  bool determined = true;  // false: not determined by the data (no interval)
+  bool derived = false;    // computed from the profile, not estimated
+  double std_error = std::numeric_limits<double>::quiet_NaN();
+  std::optional<std::array<double, 2>> ci95;
+};
+
+// Residual diagnostics of one channel, points ordered along psi = |v| / |omega R| (or time).
+struct ChannelDiagnostics {
+  std::string channel;
+  int points = 0;
+  double rms = 0.0;          // unweighted [N or N m]
+  double noise_scale = 0.0;  // s_c
+  double runs_p_value = 1.0;
+  double lag1 = 0.0;
+  double durbin_watson = 2.0;
+  bool white = true;
+};
+
+struct FitReport {
+  std::vector<ParameterEstimate> parameters;   // F0_N, a, M0_Nm, m, kx, then f if N is known
+  std::vector<std::string> correlation_names;  // free, determined parameters
+  Eigen::MatrixXd correlation;
+  std::vector<ChannelDiagnostics> channels;    // measured channels only
+  FractionalLaw<double> law;                   // the fitted law (base model)
+  std::vector<Resultants<double>> prediction;  // model at each data point
+  std::array<double, kChannels> noise_scale{};
+  double m2ll = 0.0;  // -2 log likelihood (Gaussian, with the noise scales)
+  int residuals = 0;
+  int free_parameters = 0;
+  int degrees_of_freedom = 0;
+  double chi2 = 0.0;  // weighted sum of squares
+  double aic = 0.0;
+  double bic = 0.0;
+  // Dimensionless error: rms over channels of (channel rms / channel's largest |y|).
+  double error = 0.0;
+  bool residual_white = true;
+  bool converged = false;
+  std::string solver_summary;
+
+  const ParameterEstimate* parameter(const std::string& name) const;
+};
+
+// Fits the fractional law to the data. Throws InvalidArgument for a non-positive radius or
+// load, an unknown --fix name, and for fewer measured values than free parameters.
+FitReport fit_fractional_law(const MeasuredData& data, const IdentificationOptions& options);
+
+// How a fit treats the noise (shared by the base fit and the closed loop).
+struct NoiseSettings {
+  NoiseModel model = NoiseModel::additive;
+  std::optional<std::array<double, kChannels>> given;  // fixed scales (else estimated)
+  RobustLoss loss = RobustLoss::none;
+  double loss_scale = 2.0;
+  int iterations = 6;
+};
+
+// Fits a general model (effect_model.hpp): its free parameters, from spec.value as start.
+// `use` selects the points (empty: all). Used by fit_fractional_law and the closed loop.
+FitReport fit_model(const MeasuredData& data, const ModelSpec& spec, const NoiseSettings& noise,
+                    std::array<double, kModelParameters>* estimate = nullptr,
+                    const std::vector<char>& use = {});
+
+// Weighted residuals r and their Jacobian J with respect to all kModelParameters parameters
+// at theta (weights 1/s_c, times 1/max(|yhat|, 5 % of the peak) for relative noise).
+void weighted_jacobian(const MeasuredData& data, const ModelSpec& spec,
+                       const std::array<double, kModelParameters>& theta,
+                       const std::array<double, kChannels>& scale, NoiseModel noise,
+                       Eigen::VectorXd* r, Eigen::MatrixXd* J, const std::vector<char>& use = {},
+                       std::vector<int>* row_point = nullptr);
+
+// The spec of the base fit for the options (law, start values, fixed parameters).
+ModelSpec base_spec_for(const MeasuredData& data, const IdentificationOptions& options);
+NoiseSettings noise_settings_for(const IdentificationOptions& options);
+
+// Predictions of a law at the data's kinematics.
+std::vector<Resultants<double>> predict(const FractionalLaw<double>& law, const MeasuredData& data);
+
+// psi = |v| / (|omega| R) of each point (infinity for pure sliding).
+std::vector<double> sliding_spin_ratio(const MeasuredData& data, double radius_m);
+
+// Residual diagnostics of each measured channel for given predictions.
+std::vector<ChannelDiagnostics> residual_diagnostics(const MeasuredData& data,
+                                                     const std::vector<Resultants<double>>& model,
+                                                     double radius_m,
+                                                     const std::array<double, kChannels>& scale);
+
+}  // namespace contensou

@@ -1,0 +1,123 @@
+#include "contensou/friction/exact_resultants.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <functional>
+#include <numbers>
+
+namespace contensou {
+namespace {
+
+struct ChebyshevFit {
+  std::vector<double> coefficients;
+  double error = 0.0;  // bound on the truncation error (sum of dropped |c_k|, or sampled)
+};
+
+// Chebyshev interpolation of q(t), t in [0, 1], at n first-kind points.
+std::vector<double> chebyshev_coefficients(const std::function<double(double)>& q, int n) {
+  std::vector<double> fx(n), c(n, 0.0);
+  for (int j = 0; j < n; ++j) fx[j] = q(0.5 * (1.0 + std::cos(std::numbers::pi * (j + 0.5) / n)));
+  for (int k = 0; k < n; ++k) {
+    double s = 0.0;
+    for (int j = 0; j < n; ++j) s += fx[j] * std::cos(std::numbers::pi * k * (j + 0.5) / n);
+    c[k] = (k == 0 ? 1.0 : 2.0) * s / n;
+  }
+  return c;
+}
+
+// Smallest Chebyshev series (16 ... 512 terms) that represents q to `tol` relative to its
+// largest coefficient: by the tail of the coefficients for a smooth q, else (a clipped kink, a
+// tabulated cubic) by the deviation sampled on a fine grid, which then bounds the error.
+ChebyshevFit fit_chebyshev(const std::function<double(double)>& q, double tol) {
+  ChebyshevFit fit;
+  for (int n = 16; n <= 512; n *= 2) {
+    std::vector<double> c = chebyshev_coefficients(q, n);
+    double cmax = 0.0;
+    for (double v : c) cmax = std::max(cmax, std::abs(v));
+    const double floor = tol * std::max(cmax, 1e-300);
+    double tail = 0.0;
+    for (int k = n - 4; k < n; ++k) tail = std::max(tail, std::abs(c[k]));
+    double dropped = 0.0;
+    while (c.size() > 1 && std::abs(c.back()) <= floor) {
+      dropped += std::abs(c.back());
+      c.pop_back();
+    }
+    if (tail <= floor) {
+      fit.coefficients = std::move(c);
+      fit.error = dropped;
+      return fit;
+    }
+    ExactModel<double> probe;
+    probe.chebyshev = c;
+    double dev = 0.0;
+    for (int i = 0; i <= 4000; ++i) {
+      const double t = i / 4000.0;
+      dev = std::max(dev, std::abs(q(t) - detail::chebyshev_sum(probe.chebyshev, t)));
+    }
+    if (dev <= floor || n == 512) {
+      fit.coefficients = std::move(c);
+      fit.error = 2.0 * dev;  // the grid can miss the worst point by a little
+      return fit;
+    }
+  }
+  return fit;
+}
+
+}  // namespace
+
+ExactModel<double> make_exact_model(const ContactPatch& patch, double representation_tolerance) {
+  if (!(representation_tolerance > 0.0 && representation_tolerance < 1e-3))
+    throw InvalidArgument("representation_tolerance",
+                          detail::format_value(representation_tolerance), "must lie in (0, 1e-3)");
+  validate(patch);
+  ExactModel<double> m;
+  const PressureProfile& prof = patch.profile;
+  double rho_max = 1.0;
+  if (prof.clip_negative) {
+    const auto neg = negative_intervals(prof);
+    if (neg.size() == 1 && neg.front().second >= 1.0 && neg.front().first > 0.0)
+      rho_max = neg.front().first;  // negative only at the rim: shrink the disk exactly
+  }
+  m.radius = patch.radius_m * rho_max;
+  m.pressure = patch.reference_pressure_pa;
+  m.friction = patch.friction;
+  m.kappa = patch.kappa;
+  m.kx = prof.kx * rho_max;
+  m.ky = prof.ky * rho_max;
+  if (std::holds_alternative<UniformShape>(prof.shape)) {
+    m.chebyshev = {1.0};
+  } else if (std::holds_alternative<HertzShape>(prof.shape)) {
+    m.chebyshev = {1.0};
+    m.sqrt_edge = true;
+  } else {
+    const ChebyshevFit fit =
+        fit_chebyshev([&](double t) { return shape_value(prof, rho_max * std::sqrt(t)); },
+                      representation_tolerance);
+    m.chebyshev = fit.coefficients;
+    m.representation_error = fit.error;
+  }
+  if (patch.slip_speed_friction) {
+    m.slip_speed = patch.slip_speed_friction;
+    m.friction_scale = std::max(patch.slip_speed_friction->static_coefficient,
+                                patch.slip_speed_friction->kinetic_coefficient);
+  } else {
+    m.friction_scale = patch.friction;
+  }
+  if (m.friction_scale == 0.0) m.friction_scale = 1.0;  // frictionless: tolerance scale only
+  update_chord_transforms(m);
+  m.load_area = 2.0 * std::numbers::pi * patch.radius_m * patch.radius_m * moment(prof, 1);
+  if (!(m.load_area > 0.0))
+    throw InvalidArgument("profile", describe(prof), "its load integral A^1 must be positive");
+  return m;
+}
+
+ExactResult<double> exact_resultants(const ContactPatch& patch, const Kinematics<double>& k,
+                                     const ExactOptions& options) {
+  return exact_resultants(make_exact_model(patch), k, options);
+}
+
+template ExactResult<double> exact_resultants<double>(const ExactModel<double>&,
+                                                      const Kinematics<double>&,
+                                                      const ExactOptions&);
+
+}  // namespace contensou

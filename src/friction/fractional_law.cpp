@@ -1,0 +1,227 @@
+#include "contensou/friction/fractional_law.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+
+#include "contensou/friction/error.hpp"
+#include "contensou/friction/exact_resultants.hpp"
+
+namespace contensou {
+
+void validate(const FractionalLaw<double>& p) {
+  detail::require_non_negative("F0", p.F0);
+  detail::require_non_negative("M0", p.M0);
+  detail::require_positive("a", p.a);
+  detail::require_positive("m", p.m);
+  detail::require_positive("c", p.c);
+  detail::require_positive("a_k", p.a_k);
+  detail::require_positive("kappa", p.kappa);
+  detail::require_finite("kx", p.kx);
+  detail::require_finite("ky", p.ky);
+  detail::require_non_negative("Mk", p.Mk);
+  detail::require_positive("radius", p.radius);
+  detail::require_positive("regularization_speed", p.regularization_speed);
+}
+
+FractionalWithJacobian fractional_resultants_with_jacobian(const FractionalLaw<double>& p,
+                                                           const Kinematics<double>& k0) {
+  // Homogeneous of degree 0 in (v, u, eps): evaluate on scaled velocities, divide J by s.
+  // One reciprocal per square root; everything else is multiplication.
+  const double R = p.radius;
+  const double sc =
+      std::max({std::abs(k0.vx), std::abs(k0.vy), std::abs(k0.omega) * R, p.regularization_speed});
+  const double isc = 1.0 / sc;
+  const double vx = k0.vx * isc, vy = k0.vy * isc, u = k0.omega * R * isc;
+  const double e = p.regularization_speed * isc, e2 = e * e;
+  const double U = u * u, q = vx * vx + vy * vy;
+  FractionalWithJacobian out;
+  Eigen::Matrix3d& J = out.jacobian;
+  // Sliding force -F0 (vx, kappa vy) / Sa.
+  const double iSa = 1.0 / std::sqrt(q + p.a * U + e2), iSa3 = iSa * iSa * iSa;
+  const double F0k = p.F0 * p.kappa;
+  double Fx = -p.F0 * vx * iSa, Fy = -F0k * vy * iSa;
+  J(0, 0) = -p.F0 * (iSa - vx * vx * iSa3);
+  J(0, 1) = p.F0 * vx * vy * iSa3;
+  J(1, 0) = F0k * vx * vy * iSa3;
+  J(1, 1) = -F0k * (iSa - vy * vy * iSa3);
+  J(0, 2) = p.F0 * vx * p.a * u * R * iSa3;
+  J(1, 2) = F0k * vy * p.a * u * R * iSa3;
+  // Spin torque -M0 (1 + kappa)/2 u / Sm.
+  const double Mks = p.M0 * 0.5 * (1.0 + p.kappa);
+  const double iSm = 1.0 / std::sqrt(U + p.m * q + e2), iSm3 = iSm * iSm * iSm;
+  double Mz = -Mks * u * iSm;
+  J(2, 0) = Mks * u * p.m * vx * iSm3;
+  J(2, 1) = Mks * u * p.m * vy * iSm3;
+  J(2, 2) = -Mks * R * (p.m * q + e2) * iSm3;
+  if (p.kx != 0.0 || p.ky != 0.0) {
+    // Shift forces -(M0/2R) [g2 (z x k) + (g1 - g2) (k.v)(z x v)/q].
+    const double hm = p.M0 / (2.0 * R);
+    const double iS1 = 1.0 / std::sqrt(U + 0.25 * p.m * q + e2), iS13 = iS1 * iS1 * iS1;
+    const double iS2 = 1.0 / std::sqrt(U + p.c * q + e2), iS23 = iS2 * iS2 * iS2;
+    const double iS25 = iS23 * iS2 * iS2;
+    const double g1 = u * iS1, g2 = U * u * iS23;
+    const double dg1_dq = -0.125 * p.m * u * iS13;  // d g1 / d(q), q = v^2
+    const double dg1_du = (0.25 * p.m * q + e2) * iS13;
+    const double dg2_dq = -1.5 * p.c * U * u * iS25;
+    const double dg2_du = 3.0 * U * (p.c * q + e2) * iS25;
+    Fx += hm * g2 * p.ky;
+    Fy -= hm * g2 * p.kx;
+    const double dg2[3] = {2 * vx * dg2_dq, 2 * vy * dg2_dq, R * dg2_du};
+    for (int j = 0; j < 3; ++j) {
+      J(0, j) += hm * dg2[j] * p.ky;
+      J(1, j) -= hm * dg2[j] * p.kx;
+    }
+    if (q > 1e-30 * (U + e2)) {
+      const double iq = 1.0 / q;
+      const double kv = p.kx * vx + p.ky * vy, G = g1 - g2, H = G * kv * iq;
+      Fx += hm * H * vy;
+      Fy -= hm * H * vx;
+      const double dG_dq = dg1_dq - dg2_dq, dG_du = dg1_du - dg2_du;
+      const double dH_dvx = (2 * vx * dG_dq * kv + G * p.kx) * iq - 2 * vx * H * iq;
+      const double dH_dvy = (2 * vy * dG_dq * kv + G * p.ky) * iq - 2 * vy * H * iq;
+      const double dH_dw = R * dG_du * kv * iq;
+      J(0, 0) += hm * dH_dvx * vy;
+      J(0, 1) += hm * (dH_dvy * vy + H);
+      J(0, 2) += hm * dH_dw * vy;
+      J(1, 0) -= hm * (dH_dvx * vx + H);
+      J(1, 1) -= hm * dH_dvy * vx;
+      J(1, 2) -= hm * dH_dw * vx;
+    }
+    // Cross-shift torque Mk W q / Sk^3, W = vx ky - kappa vy kx.
+    const double W = vx * p.ky - p.kappa * vy * p.kx;
+    const double iSk = 1.0 / std::sqrt(q + p.a_k * U + e2), iSk2 = iSk * iSk;
+    const double iSk3 = iSk2 * iSk, iSk5 = iSk3 * iSk2;
+    Mz += p.Mk * W * q * iSk3;
+    J(2, 0) += p.Mk * ((p.ky * q + W * 2 * vx) * iSk3 - 3 * W * q * vx * iSk5);
+    J(2, 1) += p.Mk * ((-p.kappa * p.kx * q + W * 2 * vy) * iSk3 - 3 * W * q * vy * iSk5);
+    J(2, 2) += -3 * p.Mk * W * q * p.a_k * u * R * iSk5;
+  }
+  out.resultants = {Fx, Fy, Mz};
+  J *= isc;
+  return out;
+}
+
+namespace {
+
+struct ProfileMoments {
+  double A0, A1, A2, A3, A5;
+};
+
+ProfileMoments moments_of(const PressureProfile& prof) {
+  return {moment(prof, 0), moment(prof, 1), moment(prof, 2), moment(prof, 3), moment(prof, 5)};
+}
+
+// Minimises g(x) over [lo, hi] by golden-section search (g unimodal near its optimum).
+template <class G>
+double golden_minimum(G&& g, double lo, double hi, int iterations = 60) {
+  const double r = 0.5 * (std::sqrt(5.0) - 1.0);
+  double a = lo, b = hi, c = b - r * (b - a), d = a + r * (b - a);
+  double gc = g(c), gd = g(d);
+  for (int i = 0; i < iterations; ++i) {
+    if (gc < gd) {
+      b = d;
+      d = c;
+      gd = gc;
+      c = b - r * (b - a);
+      gc = g(c);
+    } else {
+      a = c;
+      c = d;
+      gc = gd;
+      d = a + r * (b - a);
+      gd = g(d);
+    }
+  }
+  return 0.5 * (a + b);
+}
+
+// Cross-shift torque of the exact integrals at psi = v/u, sliding along x, divided by ky.
+double exact_cross_torque(const ExactModel<double>& shifted, const ExactModel<double>& plain,
+                          double R, double psi) {
+  const Kinematics<double> k{psi, 0.0, 1.0 / R};
+  const double with = exact_resultants(shifted, k, {1e-11}).resultants.Mz;
+  const double without = exact_resultants(plain, k, {1e-11}).resultants.Mz;
+  return (with - without) / value_of(shifted.ky);
+}
+
+}  // namespace
+
+FractionalLaw<double> fractional_law_from_patch(const ContactPatch& patch) {
+  validate(patch);
+  const ProfileMoments A = moments_of(patch.profile);
+  if (!(A.A0 > 0.0 && A.A1 > 0.0 && A.A2 > 0.0 && A.A3 > 0.0 && A.A5 > 0.0))
+    throw InvalidArgument("profile", describe(patch.profile),
+                          "moments A^0..A^5 must be positive for the fractional law");
+  const double R = patch.radius_m, ps = patch.reference_pressure_pa;
+  const double f =
+      patch.slip_speed_friction ? patch.slip_speed_friction->kinetic_coefficient : patch.friction;
+  FractionalLaw<double> law;
+  law.radius = R;
+  law.F0 = f * 2.0 * std::numbers::pi * R * R * ps * A.A1;
+  law.M0 = 2.0 * std::numbers::pi * f * R * R * R * ps * A.A2;
+  law.a = std::pow(2.0 * A.A1 / A.A0, 2);
+  law.m = std::pow(2.0 * A.A2 / A.A3, 2);
+  law.c = std::pow(4.0 * A.A2 / A.A5, 2.0 / 3.0);
+  law.Mk = std::numbers::pi * f * R * R * R * ps * A.A3;
+  law.kx = patch.profile.kx;
+  law.ky = patch.profile.ky;
+  law.kappa = patch.kappa;
+  // a_k from the exact small-sliding asymptote Mz_k -> Mk ky psi^3 / a_k^(3/2) (psi = v/u << 1).
+  ContactPatch shifted = patch;
+  shifted.profile.kx = 0.0;
+  shifted.profile.ky = 0.1;
+  shifted.kappa = 1.0;
+  shifted.slip_speed_friction.reset();
+  shifted.friction = f > 0.0 ? f : 1.0;
+  ContactPatch plain = shifted;
+  plain.profile.ky = 0.0;
+  const ExactModel<double> ms = make_exact_model(shifted), mp = make_exact_model(plain);
+  const double psi = 1e-2;
+  const double mk_unit = std::numbers::pi * shifted.friction * R * R * R * ps * A.A3;
+  const double tq = exact_cross_torque(ms, mp, R, psi);
+  law.a_k = tq > 0.0 ? std::pow(mk_unit * psi * psi * psi / tq, 2.0 / 3.0) : 1.0;
+  return law;
+}
+
+FractionalLaw<double> fractional_law_fitted(const ContactPatch& patch, double psi_min,
+                                            double psi_max, int n) {
+  detail::require_positive("psi_min", psi_min);
+  if (!(psi_max > psi_min))
+    throw InvalidArgument("psi_max", detail::format_value(psi_max), "must exceed psi_min");
+  if (n < 3) throw InvalidArgument("n", std::to_string(n), "need at least 3 ratios");
+  FractionalLaw<double> law = fractional_law_from_patch(patch);
+  ContactPatch iso = patch;
+  iso.kappa = 1.0;
+  iso.profile.kx = iso.profile.ky = 0.0;
+  const ExactModel<double> model = make_exact_model(iso);
+  const double R = patch.radius_m;
+  std::vector<double> psi(n), fpar(n), mz(n);
+  for (int i = 0; i < n; ++i) {
+    psi[i] = psi_min * std::pow(psi_max / psi_min, static_cast<double>(i) / (n - 1));
+    const auto r = exact_resultants(model, Kinematics<double>{psi[i], 0.0, 1.0 / R}, {1e-10});
+    fpar[i] = -r.resultants.Fx;
+    mz[i] = -r.resultants.Mz;
+  }
+  const FractionalLaw<double> base = law;
+  auto sse = [&](double log_value, bool force) {
+    FractionalLaw<double> trial = base;
+    trial.kx = trial.ky = 0.0;
+    trial.kappa = 1.0;
+    (force ? trial.a : trial.m) = std::exp(log_value);
+    double s = 0.0;
+    for (int i = 0; i < n; ++i) {
+      const auto r = fractional_resultants(trial, Kinematics<double>{psi[i], 0.0, 1.0 / R});
+      const double e = force ? (-r.Fx - fpar[i]) / base.F0 : (-r.Mz - mz[i]) / base.M0;
+      s += e * e;
+    }
+    return s;
+  };
+  law.a = std::exp(golden_minimum([&](double x) { return sse(x, true); }, std::log(base.a) - 3.0,
+                                  std::log(base.a) + 3.0));
+  law.m = std::exp(golden_minimum([&](double x) { return sse(x, false); }, std::log(base.m) - 3.0,
+                                  std::log(base.m) + 3.0));
+  return law;
+}
+
+}  // namespace contensou

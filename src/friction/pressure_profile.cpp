@@ -1,0 +1,322 @@
+#include "contensou/friction/pressure_profile.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+
+#include "contensou/friction/csv.hpp"
+#include "contensou/friction/error.hpp"
+#include "contensou/friction/quadrature.hpp"
+
+namespace contensou {
+namespace {
+
+template <class... Ts>
+struct Overloaded : Ts... {
+  using Ts::operator()...;
+};
+template <class... Ts>
+Overloaded(Ts...) -> Overloaded<Ts...>;
+
+// integral_0^b cos(c x) x^n dx, c >= 0, closed form: the power series for small c b, and the
+// integration-by-parts recurrence otherwise (both in long double; the recurrence amplifies
+// rounding by about n!/(c b)^n, so it is used only for c b > n + 1).
+double cos_moment(double c, int n, double b) {
+  if (b <= 0.0) return 0.0;
+  const long double z = static_cast<long double>(c) * b;
+  long double unit;  // integral_0^1 cos(z x) x^n dx
+  if (z <= n + 1.0L) {
+    long double term = 1.0L, sum = 0.0L;
+    for (int j = 0; j < 200; ++j) {
+      const long double add = term / (n + 2 * j + 1);
+      sum += add;
+      if (std::fabs(add) < 1e-22L * std::fabs(sum)) break;
+      term *= -z * z / ((2.0L * j + 1.0L) * (2.0L * j + 2.0L));
+    }
+    unit = sum;
+  } else {
+    const long double s = std::sin(z), co = std::cos(z);
+    long double C = s / z, S = (1.0L - co) / z;
+    for (int k = 1; k <= n; ++k) {
+      const long double Cn = s / z - k / z * S;
+      const long double Sn = -co / z + k / z * C;
+      C = Cn;
+      S = Sn;
+    }
+    unit = C;
+  }
+  return static_cast<double>(unit * std::pow(static_cast<long double>(b), n + 1));
+}
+
+double pchip_value(const TabulatedShape& t, double rho) {
+  const auto& x = t.rho;
+  if (rho <= x.front()) return t.p.front();
+  if (rho >= x.back()) return t.p.back();
+  const std::size_t k = std::upper_bound(x.begin(), x.end(), rho) - x.begin() - 1;
+  const double h = x[k + 1] - x[k];
+  const double s = (rho - x[k]) / h;
+  const double h00 = (1 + 2 * s) * (1 - s) * (1 - s), h10 = s * (1 - s) * (1 - s);
+  const double h01 = s * s * (3 - 2 * s), h11 = s * s * (s - 1);
+  return h00 * t.p[k] + h10 * h * t.slope[k] + h01 * t.p[k + 1] + h11 * h * t.slope[k + 1];
+}
+
+// Fritsch-Carlson monotone slopes (weighted harmonic mean inside, shape-preserving
+// three-point formula at the ends, as in Fritsch & Butland 1984).
+std::vector<double> pchip_slopes(const std::vector<double>& x, const std::vector<double>& y) {
+  const std::size_t n = x.size();
+  std::vector<double> d(n, 0.0);
+  if (n == 2) {
+    d[0] = d[1] = (y[1] - y[0]) / (x[1] - x[0]);
+    return d;
+  }
+  std::vector<double> h(n - 1), del(n - 1);
+  for (std::size_t k = 0; k + 1 < n; ++k) {
+    h[k] = x[k + 1] - x[k];
+    del[k] = (y[k + 1] - y[k]) / h[k];
+  }
+  for (std::size_t k = 1; k + 1 < n; ++k) {
+    if (del[k - 1] * del[k] <= 0.0) continue;
+    const double w1 = 2 * h[k] + h[k - 1], w2 = h[k] + 2 * h[k - 1];
+    d[k] = (w1 + w2) / (w1 / del[k - 1] + w2 / del[k]);
+  }
+  auto end_slope = [](double h0, double h1, double d0, double d1) {
+    double s = ((2 * h0 + h1) * d0 - h0 * d1) / (h0 + h1);
+    if (s * d0 <= 0.0) return 0.0;
+    if (d0 * d1 < 0.0 && std::abs(s) > 3 * std::abs(d0)) return 3 * d0;
+    return s;
+  };
+  d[0] = end_slope(h[0], h[1], del[0], del[1]);
+  d[n - 1] = end_slope(h[n - 2], h[n - 3], del[n - 2], del[n - 3]);
+  // An axisymmetric pressure is even in rho: zero slope at the centre (this also keeps the
+  // profile smooth in t = rho^2, which the exact integrals expand in).
+  if (x[0] == 0.0) d[0] = 0.0;
+  return d;
+}
+
+double raw_value(const PressureProfile& profile, double rho) {
+  return std::visit(
+      Overloaded{[](const UniformShape&) { return 1.0; },
+                 [&](const HertzShape&) { return std::sqrt(std::max(0.0, 1.0 - rho * rho)); },
+                 [&](const CosineSeriesShape& c) {
+                   double s = 0.0;
+                   for (std::size_t k = 0; k < c.a.size(); ++k)
+                     s += c.a[k] * std::cos(std::numbers::pi * static_cast<double>(k) * c.w * rho);
+                   return s;
+                 },
+                 [&](const TabulatedShape& t) { return pchip_value(t, rho); }},
+      profile.shape);
+}
+
+// integral_lo^hi p(rho) rho^n d rho of the unclipped shape, exact for each kind.
+double raw_moment(const PressureProfile& profile, int n, double lo, double hi) {
+  return std::visit(
+      Overloaded{[&](const UniformShape&) {
+                   return (std::pow(hi, n + 1) - std::pow(lo, n + 1)) / (n + 1);
+                 },
+                 [&](const HertzShape&) {
+                   // Only whole-range moments are needed: a Hertz shape never goes negative.
+                   // integral_0^1 sqrt(1 - r^2) r^n dr = (sqrt(pi)/4) Gamma((n+1)/2) / Gamma(n/2 +
+                   // 2).
+                   return std::sqrt(std::numbers::pi) / 4.0 *
+                          std::exp(std::lgamma((n + 1) / 2.0) - std::lgamma(n / 2.0 + 2.0));
+                 },
+                 [&](const CosineSeriesShape& c) {
+                   double s = 0.0;
+                   for (std::size_t k = 0; k < c.a.size(); ++k) {
+                     const double freq = std::numbers::pi * static_cast<double>(k) * c.w;
+                     s += c.a[k] * (cos_moment(freq, n, hi) - cos_moment(freq, n, lo));
+                   }
+                   return s;
+                 },
+                 [&](const TabulatedShape& t) {
+                   // Gauss-Legendre on each cubic piece, exact for degree 3 + n.
+                   const GaussLegendreRule g = gauss_legendre(std::max(2, (n + 5) / 2));
+                   std::vector<double> knots{lo};
+                   for (double r : t.rho)
+                     if (r > lo && r < hi) knots.push_back(r);
+                   knots.push_back(hi);
+                   double s = 0.0;
+                   for (std::size_t k = 0; k + 1 < knots.size(); ++k) {
+                     const double a = knots[k], b = knots[k + 1];
+                     for (std::size_t i = 0; i < g.nodes.size(); ++i) {
+                       const double r = 0.5 * (a + b) + 0.5 * (b - a) * g.nodes[i];
+                       s += 0.5 * (b - a) * g.weights[i] * pchip_value(t, r) * std::pow(r, n);
+                     }
+                   }
+                   return s;
+                 }},
+      profile.shape);
+}
+
+// Sign changes of the unclipped shape on [0, 1], by a fine scan and bisection.
+std::vector<double> sign_changes(const PressureProfile& profile) {
+  std::vector<double> roots;
+  constexpr int kScan = 4096;
+  double x0 = 0.0, f0 = raw_value(profile, 0.0);
+  for (int i = 1; i <= kScan; ++i) {
+    const double x1 = static_cast<double>(i) / kScan;
+    const double f1 = raw_value(profile, x1);
+    if ((f0 < 0.0) != (f1 < 0.0)) {
+      double a = x0, b = x1;
+      const bool neg_a = f0 < 0.0;
+      for (int it = 0; it < 80 && b - a > 1e-16; ++it) {
+        const double m = 0.5 * (a + b);
+        if ((raw_value(profile, m) < 0.0) == neg_a)
+          a = m;
+        else
+          b = m;
+      }
+      roots.push_back(0.5 * (a + b));
+    }
+    x0 = x1;
+    f0 = f1;
+  }
+  return roots;
+}
+
+}  // namespace
+
+PressureProfile uniform_profile() {
+  return {};
+}
+
+PressureProfile hertz_profile() {
+  PressureProfile p;
+  p.shape = HertzShape{};
+  return p;
+}
+
+PressureProfile cosine_series_profile(double w, std::vector<double> a) {
+  detail::require_positive("w", w);
+  if (a.empty()) throw InvalidArgument("a", "[]", "cosine series needs at least one coefficient");
+  for (std::size_t k = 0; k < a.size(); ++k)
+    detail::require_finite(("a[" + std::to_string(k) + "]").c_str(), a[k]);
+  PressureProfile p;
+  p.shape = CosineSeriesShape{w, std::move(a)};
+  return p;
+}
+
+PressureProfile tabulated_profile(std::vector<double> rho, std::vector<double> p) {
+  if (rho.size() < 2)
+    throw InvalidArgument("rho", "(" + std::to_string(rho.size()) + " points)",
+                          "a tabulated profile needs at least 2 points");
+  if (rho.size() != p.size())
+    throw InvalidArgument("p", "(" + std::to_string(p.size()) + " values)",
+                          "must have as many values as rho (" + std::to_string(rho.size()) + ")");
+  for (std::size_t k = 0; k < rho.size(); ++k) {
+    const std::string name = "rho[" + std::to_string(k) + "]";
+    detail::require_finite(name.c_str(), rho[k]);
+    detail::require_finite(("p[" + std::to_string(k) + "]").c_str(), p[k]);
+    if (rho[k] < 0.0 || rho[k] > 1.0 + 1e-12)
+      throw InvalidArgument(name, detail::format_value(rho[k]), "must lie in [0, 1]");
+    if (k > 0 && !(rho[k] > rho[k - 1]))
+      throw InvalidArgument(
+          name, detail::format_value(rho[k]),
+          "rho must be strictly increasing (previous " + detail::format_value(rho[k - 1]) + ")");
+  }
+  if (rho.back() < 1.0 - 1e-9)
+    throw InvalidArgument("rho[last]", detail::format_value(rho.back()),
+                          "a tabulated profile must reach the rim, rho = 1");
+  rho.back() = 1.0;
+  TabulatedShape t;
+  t.slope = pchip_slopes(rho, p);
+  t.rho = std::move(rho);
+  t.p = std::move(p);
+  PressureProfile out;
+  out.shape = std::move(t);
+  return out;
+}
+
+PressureProfile seed_tire_profile() {
+  return cosine_series_profile(0.848, {0.685, 0.398, -0.831, 0.230, 0.161, -0.027, -0.133, 0.101});
+}
+
+MeasuredProfile read_profile_csv(const std::string& path) {
+  const CsvTable table = read_csv(path);
+  const int ir = table.column("rho"), ip = table.column("pressure_Pa");
+  if (ir < 0 || ip < 0)
+    throw ParseError(path, table.header_line, 1,
+                     std::string("missing column '") + (ir < 0 ? "rho" : "pressure_Pa") +
+                         "' (need rho,pressure_Pa)");
+  std::vector<double> rho, p;
+  for (const CsvRow& row : table.rows) {
+    for (int c : {ir, ip})
+      if (!row.cells[c]) throw ParseError(path, row.line, row.columns[c], "empty cell");
+    const double r = *row.cells[ir];
+    if (r < 0.0 || r > 1.0 + 1e-12)
+      throw ParseError(path, row.line, row.columns[ir],
+                       "rho = " + detail::format_value(r) + " outside [0, 1]");
+    if (!rho.empty() && !(r > rho.back()))
+      throw ParseError(path, row.line, row.columns[ir],
+                       "rho = " + detail::format_value(r) + " not increasing");
+    rho.push_back(r);
+    p.push_back(*row.cells[ip]);
+  }
+  if (rho.size() < 2)
+    throw ParseError(path, table.header_line, 1, "a profile needs at least 2 rows");
+  if (rho.back() < 1.0 - 1e-9)
+    throw ParseError(path, table.rows.back().line, table.rows.back().columns[ir],
+                     "the last rho must be 1 (the rim)");
+  MeasuredProfile out;
+  out.profile = tabulated_profile(rho, p);
+  // Mean pressure = 2 integral_0^1 p rho d rho (in Pa, before normalising).
+  const double mean = 2.0 * moment(out.profile, 1);
+  if (!(mean > 0.0))
+    throw ParseError(path, table.header_line, 1, "the profile's mean pressure is not positive");
+  auto& t = std::get<TabulatedShape>(out.profile.shape);
+  for (double& v : t.p) v /= mean;
+  for (double& v : t.slope) v /= mean;
+  out.reference_pressure_pa = mean;
+  return out;
+}
+
+double shape_value(const PressureProfile& profile, double rho) {
+  const double v = raw_value(profile, rho);
+  return profile.clip_negative ? std::max(v, 0.0) : v;
+}
+
+double moment(const PressureProfile& profile, int n) {
+  if (n < 0) throw InvalidArgument("n", std::to_string(n), "moment order must be >= 0");
+  if (!profile.clip_negative) return raw_moment(profile, n, 0.0, 1.0);
+  double sum = 0.0;
+  for (const auto& [lo, hi] : [&] {
+         std::vector<std::pair<double, double>> positive;
+         std::vector<double> cuts{0.0};
+         for (double r : sign_changes(profile)) cuts.push_back(r);
+         cuts.push_back(1.0);
+         for (std::size_t k = 0; k + 1 < cuts.size(); ++k)
+           if (raw_value(profile, 0.5 * (cuts[k] + cuts[k + 1])) > 0.0)
+             positive.emplace_back(cuts[k], cuts[k + 1]);
+         return positive;
+       }())
+    sum += raw_moment(profile, n, lo, hi);
+  return sum;
+}
+
+std::vector<std::pair<double, double>> negative_intervals(const PressureProfile& profile) {
+  std::vector<double> cuts{0.0};
+  for (double r : sign_changes(profile)) cuts.push_back(r);
+  cuts.push_back(1.0);
+  std::vector<std::pair<double, double>> out;
+  for (std::size_t k = 0; k + 1 < cuts.size(); ++k)
+    if (raw_value(profile, 0.5 * (cuts[k] + cuts[k + 1])) < 0.0)
+      out.emplace_back(cuts[k], cuts[k + 1]);
+  return out;
+}
+
+std::string describe(const PressureProfile& profile) {
+  std::string s = std::visit(
+      Overloaded{[](const UniformShape&) { return std::string("uniform"); },
+                 [](const HertzShape&) { return std::string("Hertz"); },
+                 [](const CosineSeriesShape& c) {
+                   return "cosine series (" + std::to_string(c.a.size()) + " terms)";
+                 },
+                 [](const TabulatedShape& t) {
+                   return "tabulated (" + std::to_string(t.rho.size()) + " points, PCHIP)";
+                 }},
+      profile.shape);
+  if (profile.clip_negative) s += ", clipped at 0";
+  return s;
+}
+
+}  // namespace contensou

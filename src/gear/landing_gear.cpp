@@ -1,0 +1,364 @@
+#include "contensou/gear/landing_gear.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+#include <string_view>
+
+#include "contensou/friction/error.hpp"
+#include "contensou/friction/exact_resultants.hpp"
+#include "contensou/friction/fractional_law.hpp"
+#include "contensou/friction/pressure_profile.hpp"
+
+namespace contensou {
+
+const char* to_string(ContactModel model) {
+  switch (model) {
+    case ContactModel::coupled:
+      return "coupled";
+    case ContactModel::decoupled:
+      return "decoupled";
+    case ContactModel::nonholonomic:
+      return "nonholonomic";
+  }
+  return "?";
+}
+
+ContactModel contact_model_from_string(const std::string& name) {
+  for (ContactModel m :
+       {ContactModel::coupled, ContactModel::decoupled, ContactModel::nonholonomic})
+    if (name == to_string(m)) return m;
+  throw InvalidArgument("contact model", name, "must be coupled, decoupled or nonholonomic");
+}
+
+void validate(const GearConfig& c) {
+  using detail::require_finite;
+  using detail::require_positive;
+  const GearStructure& g = c.structure;
+  require_positive("structure.lateral_mass_kg", g.lateral_mass_kg);
+  require_positive("structure.lateral_stiffness_n_per_m", g.lateral_stiffness_n_per_m);
+  require_positive("structure.torsional_inertia_kgm2", g.torsional_inertia_kgm2);
+  require_positive("structure.torsional_stiffness_nm_per_rad", g.torsional_stiffness_nm_per_rad);
+  require_finite("structure.lateral_damping_ns_per_m", g.lateral_damping_ns_per_m);
+  require_finite("structure.torsional_damping_nms_per_rad", g.torsional_damping_nms_per_rad);
+  require_finite("structure.trail_m", g.trail_m);
+  require_finite("structure.offset_m", g.offset_m);
+  require_positive("structure.wheel_radius_m", g.wheel_radius_m);
+  require_positive("structure.wheel_inertia_kgm2", g.wheel_inertia_kgm2);
+
+  const SlidingTire& t = c.tire;
+  require_positive("tire.inflation_pressure_pa", t.inflation_pressure_pa);
+  require_finite("tire.rolling_shift", t.rolling_shift);
+  if (std::abs(t.rolling_shift) >= 1.0)
+    throw InvalidArgument("tire.rolling_shift", detail::format_value(t.rolling_shift),
+                          "must lie in (-1, 1) so that the pressure stays positive");
+  require_positive("tire.friction.static_coefficient", t.friction.static_coefficient);
+  require_positive("tire.friction.kinetic_coefficient", t.friction.kinetic_coefficient);
+  require_positive("tire.friction.reference_speed", t.friction.reference_speed);
+  require_positive("tire.friction.exponent", t.friction.exponent);
+  require_positive("tire.regularization_speed", t.regularization_speed);
+  if (t.law_coefficients != "fitted" && t.law_coefficients != "asymptotic" &&
+      t.law_coefficients != "seed")
+    throw InvalidArgument("tire.law_coefficients", t.law_coefficients,
+                          "must be fitted, asymptotic or seed");
+
+  const RollingTire& r = c.rolling;
+  require_positive("rolling.relaxation_length_m", r.relaxation_length_m);
+  require_positive("rolling.cornering_coefficient", r.cornering_coefficient);
+  require_finite("rolling.aligning_coefficient_m", r.aligning_coefficient_m);
+  require_finite("rolling.tread_moment_nm2_per_rad", r.tread_moment_nm2_per_rad);
+  require_positive("rolling.longitudinal_slip_coefficient", r.longitudinal_slip_coefficient);
+
+  const LandingScenario& s = c.scenario;
+  require_positive("scenario.forward_speed_mps", s.forward_speed_mps);
+  require_finite("scenario.drift_speed_mps", s.drift_speed_mps);
+  require_positive("scenario.static_load_n", s.static_load_n);
+  if (!(s.touchdown_time_s >= 0.0))
+    throw InvalidArgument("scenario.touchdown_time_s", detail::format_value(s.touchdown_time_s),
+                          "must be >= 0");
+  if (!(s.touchdown_time_s < 1e6))
+    throw InvalidArgument("scenario.touchdown_time_s", detail::format_value(s.touchdown_time_s),
+                          "must be finite");
+  require_positive("scenario.load_ramp_s", s.load_ramp_s);
+  require_positive("scenario.end_time_s", s.end_time_s);
+  require_finite("scenario.initial_torsion_rad", s.initial_torsion_rad);
+  require_finite("scenario.initial_lateral_m", s.initial_lateral_m);
+  require_positive("scenario.rolling_slip", s.rolling_slip);
+  if (!(s.sliding_slip > s.rolling_slip && s.sliding_slip < 1.0))
+    throw InvalidArgument("scenario.sliding_slip", detail::format_value(s.sliding_slip),
+                          "must lie between rolling_slip and 1");
+  if (s.braking) {
+    if (!(s.brake_off_s > s.brake_on_s && s.brake_on_s >= 0.0))
+      throw InvalidArgument("scenario.brake_off_s", detail::format_value(s.brake_off_s),
+                            "must come after brake_on_s >= 0");
+    require_positive("scenario.brake_max_torque_nm", s.brake_max_torque_nm);
+    if (!(s.brake_target_slip > 0.0 && s.brake_target_slip < 1.0))
+      throw InvalidArgument("scenario.brake_target_slip", detail::format_value(s.brake_target_slip),
+                            "must lie in (0, 1)");
+    require_positive("scenario.brake_slip_band", s.brake_slip_band);
+  }
+  require_finite("scenario.window_start_s", s.window_start_s);
+  require_finite("scenario.window_end_s", s.window_end_s);
+}
+
+namespace {
+
+ContactPatch unit_patch(const SlidingTire& tire) {
+  ContactPatch p;
+  p.radius_m = 1.0;
+  p.reference_pressure_pa = 1.0;
+  p.friction = 1.0;
+  p.profile = seed_tire_profile();
+  p.profile.kx = tire.rolling_shift;
+  return p;
+}
+
+// S(x) = x^2 (3 - 2x) on [0, 1]: C1 at both ends.
+double smoothstep(double x) {
+  x = std::clamp(x, 0.0, 1.0);
+  return x * x * (3.0 - 2.0 * x);
+}
+
+}  // namespace
+
+GearModel make_gear_model(const GearConfig& config, ContactModel contact) {
+  validate(config);
+  GearModel m;
+  m.config = config;
+  m.contact = contact;
+  const ContactPatch patch = unit_patch(config.tire);
+  m.moment_1 = moment(patch.profile, 1);
+  m.moment_ratio_2 = moment(patch.profile, 2) / m.moment_1;
+  m.moment_ratio_3 = moment(patch.profile, 3) / m.moment_1;
+  const std::string& which = config.tire.law_coefficients;
+  const FractionalLaw<double> law =
+      which == "fitted" ? fractional_law_fitted(patch) : fractional_law_from_patch(patch);
+  m.law_a = which == "seed" ? 1.03 : law.a;  // seed Table 3
+  m.law_m = which == "seed" ? 1.72 : law.m;
+  m.law_c = law.c;
+  m.law_a_k = law.a_k;
+  if (config.tire.exact_integrals && contact == ContactModel::coupled)
+    m.exact = std::make_shared<const ExactModel<double>>(make_exact_model(patch, 1e-10));
+  return m;
+}
+
+double vertical_load(const LandingScenario& s, double t) {
+  return s.static_load_n * smoothstep((t - s.touchdown_time_s) / s.load_ramp_s);
+}
+
+GearState initial_state(const GearModel& model) {
+  GearState x = GearState::Zero();
+  x[kPsi] = model.config.scenario.initial_torsion_rad;
+  x[kY] = model.config.scenario.initial_lateral_m;
+  if (model.contact == ContactModel::nonholonomic)
+    x[kSpin] = model.config.scenario.forward_speed_mps / model.config.structure.wheel_radius_m;
+  return x;
+}
+
+GearMode initial_mode(const GearModel& model) {
+  GearMode mode;
+  mode.loaded = model.config.scenario.touchdown_time_s <= 0.0;
+  mode.rolling = model.contact == ContactModel::nonholonomic;
+  const LandingScenario& s = model.config.scenario;
+  mode.brake_command = s.braking && s.brake_on_s <= 0.0;
+  return mode;
+}
+
+namespace {
+
+// Sliding friction on the tire from the chosen law. N, R and f fix the law's scales:
+// F0 = f N, M0 = f N R A^2/A^1, Mk = f N R A^3 / (2 A^1) (theory.md section 4).
+Resultants<double> sliding_friction(const GearModel& model, const Kinematics<double>& k, double N,
+                                    double R, double f) {
+  const SlidingTire& tire = model.config.tire;
+  const double eps = tire.regularization_speed;
+  if (model.contact == ContactModel::decoupled) {
+    // Coulomb force along -v and Coulomb spin torque M0 (1 + kappa)/2, kappa = 1, each
+    // regularised by eps.
+    const double v = std::sqrt(k.vx * k.vx + k.vy * k.vy + eps * eps);
+    const double u = k.omega * R;
+    const double M0 = f * N * R * model.moment_ratio_2;
+    return {-f * N * k.vx / v, -f * N * k.vy / v, -M0 * u / std::sqrt(u * u + eps * eps)};
+  }
+  if (model.exact) {
+    // Unit patch: forces scale with f p* R^2 = f N / (2 pi A^1), the torque with one more R.
+    const double scale = f * N / (2.0 * std::numbers::pi * model.moment_1);
+    const Resultants<double> r =
+        exact_resultants(*model.exact, Kinematics<double>{k.vx, k.vy, k.omega * R}, {1e-8})
+            .resultants;
+    return {scale * r.Fx, scale * r.Fy, scale * R * r.Mz};
+  }
+  FractionalLaw<double> law;
+  law.F0 = f * N;
+  law.M0 = f * N * R * model.moment_ratio_2;
+  law.Mk = 0.5 * f * N * R * model.moment_ratio_3;
+  law.a = model.law_a;
+  law.m = model.law_m;
+  law.c = model.law_c;
+  law.a_k = model.law_a_k;
+  law.kx = tire.rolling_shift;
+  law.ky = 0.0;
+  law.kappa = 1.0;
+  law.radius = R;
+  law.regularization_speed = eps;
+  return fractional_resultants(law, k);
+}
+
+}  // namespace
+
+ContactState contact_state(const GearModel& model, const GearMode& mode, double t,
+                           const GearState& x) {
+  const GearConfig& c = model.config;
+  const GearStructure& g = c.structure;
+  const LandingScenario& s = c.scenario;
+  const double V = s.forward_speed_mps;
+  const double cp = std::cos(x[kPsi]), sp = std::sin(x[kPsi]);
+  const double lateral = x[kYDot] + s.drift_speed_mps;
+  ContactState cs;
+  cs.slip.vx = V * cp + lateral * sp - g.offset_m * x[kPsiDot] - x[kSpin] * g.wheel_radius_m;
+  cs.slip.vy = -V * sp + lateral * cp - g.trail_m * x[kPsiDot];
+  cs.slip.omega = x[kPsiDot];
+  cs.slip_ratio = cs.slip.vx / V;
+  cs.load_n = mode.loaded ? vertical_load(s, t) : 0.0;
+  // R = sqrt(N / (2 pi p* A^1)), floored so that the law stays defined at zero load.
+  const auto radius = [&](double N) {
+    return std::sqrt(N / (2.0 * std::numbers::pi * c.tire.inflation_pressure_pa * model.moment_1));
+  };
+  cs.patch_radius_m = std::max(radius(cs.load_n), 1e-3 * radius(s.static_load_n));
+  // Anti-skid: the brake sees the wheel-speed slip 1 - Omega r / V (a wheel tachometer),
+  // not the patch's sliding, which also carries -l psi' / V.
+  if (mode.brake_command) {
+    const double wheel_slip = 1.0 - x[kSpin] * g.wheel_radius_m / V;
+    const double z = (wheel_slip - s.brake_target_slip) / s.brake_slip_band;
+    cs.brake_torque_nm = s.brake_max_torque_nm / (1.0 + std::exp(std::clamp(z, -50.0, 50.0)));
+  }
+  if (cs.load_n <= 0.0) return cs;
+
+  const double N = cs.load_n, R = cs.patch_radius_m;
+  if (mode.rolling) {
+    const RollingTire& rt = c.rolling;
+    const double mu = c.tire.friction.static_coefficient;
+    const double alpha = x[kLambda] / rt.relaxation_length_m;
+    const double lateral_use = std::tanh(rt.cornering_coefficient * alpha / mu);
+    cs.friction = mu;
+    cs.force.Fx = -mu * N * std::tanh(rt.longitudinal_slip_coefficient * cs.slip_ratio / mu);
+    cs.force.Fy = mu * N * lateral_use;
+    cs.force.Mz = -rt.aligning_coefficient_m * N * (mu / rt.cornering_coefficient) * lateral_use -
+                  rt.tread_moment_nm2_per_rad * (N / s.static_load_n) * x[kPsiDot] / V;
+    return cs;
+  }
+  // Effective slip speed of the patch, (v^2 + (2 u / 3)^2)^(1/2): the mean local slip speed's
+  // two limits (docs/shimmy.md); f(w) of SlipSpeedFriction.
+  const double u = x[kPsiDot] * R;
+  const double w = std::sqrt(cs.slip.vx * cs.slip.vx + cs.slip.vy * cs.slip.vy + 4.0 / 9.0 * u * u);
+  cs.friction = friction_at(c.tire.friction, w);
+  cs.force = sliding_friction(model, cs.slip, N, R, cs.friction);
+  return cs;
+}
+
+GearState gear_rhs(const GearModel& model, const GearMode& mode, double t, const GearState& x) {
+  const GearStructure& g = model.config.structure;
+  const LandingScenario& s = model.config.scenario;
+  const ContactState cs = contact_state(model, mode, t, x);
+  const Resultants<double>& F = cs.force;
+  const double cp = std::cos(x[kPsi]), sp = std::sin(x[kPsi]);
+  GearState dx;
+  dx[kY] = x[kYDot];
+  dx[kYDot] = (-g.lateral_stiffness_n_per_m * x[kY] - g.lateral_damping_ns_per_m * x[kYDot] +
+               F.Fx * sp + F.Fy * cp) /
+              g.lateral_mass_kg;
+  dx[kPsi] = x[kPsiDot];
+  dx[kPsiDot] =
+      (-g.torsional_stiffness_nm_per_rad * x[kPsi] - g.torsional_damping_nms_per_rad * x[kPsiDot] +
+       F.Mz - g.trail_m * F.Fy - g.offset_m * F.Fx) /
+      g.torsional_inertia_kgm2;
+  // The brake torque opposes the spin; tanh(Omega / 1 rad/s) keeps it smooth through zero.
+  dx[kSpin] =
+      (-g.wheel_radius_m * F.Fx - cs.brake_torque_nm * std::tanh(x[kSpin])) / g.wheel_inertia_kgm2;
+  // Stretched string (Somieski 1997): the leading point, a = R ahead of the patch centre,
+  // does not slide; lambda relaxes over the relaxation length.
+  if (mode.rolling && mode.loaded) {
+    const double V = s.forward_speed_mps;
+    dx[kLambda] = -(cs.slip.vy + cs.patch_radius_m * x[kPsiDot]) -
+                  V / model.config.rolling.relaxation_length_m * x[kLambda];
+  } else {
+    dx[kLambda] = 0.0;
+  }
+  return dx;
+}
+
+namespace {
+
+template <class F>
+void for_each_parameter(GearConfig& c, F&& f) {
+  GearStructure& g = c.structure;
+  f("structure.lateral_mass_kg", g.lateral_mass_kg);
+  f("structure.lateral_stiffness_n_per_m", g.lateral_stiffness_n_per_m);
+  f("structure.lateral_damping_ns_per_m", g.lateral_damping_ns_per_m);
+  f("structure.torsional_inertia_kgm2", g.torsional_inertia_kgm2);
+  f("structure.torsional_stiffness_nm_per_rad", g.torsional_stiffness_nm_per_rad);
+  f("structure.torsional_damping_nms_per_rad", g.torsional_damping_nms_per_rad);
+  f("structure.trail_m", g.trail_m);
+  f("structure.offset_m", g.offset_m);
+  f("structure.wheel_radius_m", g.wheel_radius_m);
+  f("structure.wheel_inertia_kgm2", g.wheel_inertia_kgm2);
+  SlidingTire& t = c.tire;
+  f("tire.inflation_pressure_pa", t.inflation_pressure_pa);
+  f("tire.rolling_shift", t.rolling_shift);
+  f("tire.friction.static_coefficient", t.friction.static_coefficient);
+  f("tire.friction.kinetic_coefficient", t.friction.kinetic_coefficient);
+  f("tire.friction.reference_speed", t.friction.reference_speed);
+  f("tire.friction.exponent", t.friction.exponent);
+  f("tire.regularization_speed", t.regularization_speed);
+  RollingTire& r = c.rolling;
+  f("rolling.relaxation_length_m", r.relaxation_length_m);
+  f("rolling.cornering_coefficient", r.cornering_coefficient);
+  f("rolling.aligning_coefficient_m", r.aligning_coefficient_m);
+  f("rolling.tread_moment_nm2_per_rad", r.tread_moment_nm2_per_rad);
+  f("rolling.longitudinal_slip_coefficient", r.longitudinal_slip_coefficient);
+  LandingScenario& s = c.scenario;
+  f("scenario.forward_speed_mps", s.forward_speed_mps);
+  f("scenario.drift_speed_mps", s.drift_speed_mps);
+  f("scenario.static_load_n", s.static_load_n);
+  f("scenario.touchdown_time_s", s.touchdown_time_s);
+  f("scenario.load_ramp_s", s.load_ramp_s);
+  f("scenario.end_time_s", s.end_time_s);
+  f("scenario.initial_torsion_rad", s.initial_torsion_rad);
+  f("scenario.initial_lateral_m", s.initial_lateral_m);
+  f("scenario.rolling_slip", s.rolling_slip);
+  f("scenario.sliding_slip", s.sliding_slip);
+  f("scenario.brake_on_s", s.brake_on_s);
+  f("scenario.brake_off_s", s.brake_off_s);
+  f("scenario.brake_max_torque_nm", s.brake_max_torque_nm);
+  f("scenario.brake_target_slip", s.brake_target_slip);
+  f("scenario.brake_slip_band", s.brake_slip_band);
+  f("scenario.window_start_s", s.window_start_s);
+  f("scenario.window_end_s", s.window_end_s);
+}
+
+}  // namespace
+
+double* gear_parameter(GearConfig& config, std::string_view name) {
+  double* found = nullptr;
+  for_each_parameter(config, [&](std::string_view n, double& v) {
+    if (n == name) found = &v;
+  });
+  return found;
+}
+
+std::vector<std::string> gear_parameter_names() {
+  GearConfig c;
+  std::vector<std::string> names;
+  for_each_parameter(c, [&](std::string_view n, double&) { names.emplace_back(n); });
+  return names;
+}
+
+double string_deflection_for_force(const GearModel& model, double lateral_force_n, double load_n) {
+  if (load_n <= 0.0) return 0.0;
+  const RollingTire& rt = model.config.rolling;
+  const double mu = model.config.tire.friction.static_coefficient;
+  const double use = std::clamp(lateral_force_n / (mu * load_n), -0.99, 0.99);
+  return rt.relaxation_length_m * mu * std::atanh(use) / rt.cornering_coefficient;
+}
+
+}  // namespace contensou

@@ -1,0 +1,228 @@
+#include "contensou/gear/landing_simulation.hpp"
+
+#include <cvode/cvode.h>
+#include <nvector/nvector_serial.h>
+#include <sunlinsol/sunlinsol_dense.h>
+#include <sunmatrix/sunmatrix_dense.h>
+
+#include <algorithm>
+#include <array>
+#include <chrono>
+#include <cmath>
+#include <stdexcept>
+
+#include "contensou/friction/error.hpp"
+
+namespace contensou {
+
+std::pair<double, double> analysis_window(const LandingScenario& s) {
+  double start = s.touchdown_time_s + s.load_ramp_s, end = s.end_time_s;
+  if (s.braking) {
+    start = std::max(start, s.brake_on_s + 0.1);
+    end = std::min(end, s.brake_off_s);
+  }
+  if (s.window_start_s >= 0.0) start = s.window_start_s;
+  if (s.window_end_s >= 0.0) end = s.window_end_s;
+  if (!(end > start)) {  // e.g. a gear that never lands: the whole run
+    start = 0.0;
+    end = s.end_time_s;
+  }
+  return {start, end};
+}
+
+namespace {
+
+enum Root : int { kLoadOnset = 0, kFullLoad, kSpinUp, kSliding, kBrakeOn, kBrakeOff, kRoots };
+
+struct Problem {
+  const GearModel* model;
+  GearMode mode;
+};
+
+GearState to_state(N_Vector v) {
+  GearState x;
+  for (int i = 0; i < kStateSize; ++i) x[i] = NV_Ith_S(v, i);
+  return x;
+}
+
+int rhs(sunrealtype t, N_Vector y, N_Vector ydot, void* data) {
+  const Problem& p = *static_cast<const Problem*>(data);
+  const GearState dx = gear_rhs(*p.model, p.mode, t, to_state(y));
+  for (int i = 0; i < kStateSize; ++i) {
+    if (!std::isfinite(dx[i])) return 1;  // recoverable: CVODE retries with a smaller step
+    NV_Ith_S(ydot, i) = dx[i];
+  }
+  return 0;
+}
+
+// Event functions; an event that cannot happen in the current mode returns 1 (no crossing).
+int roots(sunrealtype t, N_Vector y, sunrealtype* g, void* data) {
+  const Problem& p = *static_cast<const Problem*>(data);
+  const LandingScenario& s = p.model->config.scenario;
+  const bool switching = p.model->contact != ContactModel::nonholonomic;
+  const double ratio = contact_state(*p.model, p.mode, t, to_state(y)).slip_ratio;
+  g[kLoadOnset] = t - s.touchdown_time_s;
+  g[kFullLoad] = t - (s.touchdown_time_s + s.load_ramp_s);
+  g[kSpinUp] = switching && p.mode.loaded && !p.mode.rolling ? ratio - s.rolling_slip : 1.0;
+  g[kSliding] = switching && p.mode.rolling ? ratio - s.sliding_slip : -1.0;
+  g[kBrakeOn] = s.braking ? t - s.brake_on_s : -1.0;
+  g[kBrakeOff] = s.braking ? t - s.brake_off_s : -1.0;
+  return 0;
+}
+
+struct Cvode {
+  SUNContext ctx = nullptr;
+  N_Vector y = nullptr, atol = nullptr;
+  SUNMatrix A = nullptr;
+  SUNLinearSolver LS = nullptr;
+  void* mem = nullptr;
+  ~Cvode() {
+    if (mem) CVodeFree(&mem);
+    if (LS) SUNLinSolFree(LS);
+    if (A) SUNMatDestroy(A);
+    if (atol) N_VDestroy(atol);
+    if (y) N_VDestroy(y);
+    if (ctx) SUNContext_Free(&ctx);
+  }
+};
+
+void check(int flag, const char* what, double t) {
+  if (flag < 0)
+    throw std::runtime_error(std::string("CVODE ") + what + " failed with flag " +
+                             std::to_string(flag) + " at t = " + std::to_string(t) + " s");
+}
+
+ShimmyMetrics assess(const std::vector<LandingSample>& window, double peak_torsion,
+                     double peak_lateral, const ShimmyCriterion& criterion) {
+  std::vector<double> t, rate, psi;
+  for (const LandingSample& s : window) {
+    t.push_back(s.t);
+    rate.push_back(s.x[kPsiDot]);
+    psi.push_back(s.x[kPsi]);
+  }
+  ShimmyMetrics m;
+  m.torsion = analyse_oscillation(t, rate, psi);
+  m.peak_torsion_rad = peak_torsion;
+  m.peak_lateral_m = peak_lateral;
+  const double a = m.torsion.last_amplitude, thr = criterion.amplitude_threshold_rad;
+  m.shimmy = m.torsion.valid() && a > thr &&
+             m.torsion.growth_rate_per_s > criterion.sustained_growth_rate_per_s;
+  return m;
+}
+
+}  // namespace
+
+LandingRun simulate_landing(const GearModel& model, const SolverOptions& options,
+                            const ShimmyCriterion& criterion) {
+  const auto clock_start = std::chrono::steady_clock::now();
+  validate(model.config);
+  detail::require_positive("solver.relative_tolerance", options.relative_tolerance);
+  detail::require_positive("solver.output_interval_s", options.output_interval_s);
+  if (options.max_steps < 1)
+    throw InvalidArgument("solver.max_steps", std::to_string(options.max_steps), "must be >= 1");
+  const LandingScenario& s = model.config.scenario;
+  LandingRun run;
+  run.contact = model.contact;
+  std::tie(run.window_start_s, run.window_end_s) = analysis_window(s);
+  if (model.contact == ContactModel::nonholonomic) run.spin_up_s = 0.0;
+
+  Problem problem{&model, initial_mode(model)};
+  GearState x = initial_state(model);
+  Cvode cv;
+  check(SUNContext_Create(nullptr, &cv.ctx), "SUNContext_Create", 0.0);
+  cv.y = N_VNew_Serial(kStateSize, cv.ctx);
+  cv.atol = N_VNew_Serial(kStateSize, cv.ctx);
+  const std::array<double, kStateSize> scale{1e-3, 1e-1, 1e-3, 1e-1, 1e2, 1e-3};
+  for (int i = 0; i < kStateSize; ++i) {
+    NV_Ith_S(cv.y, i) = x[i];
+    NV_Ith_S(cv.atol, i) = options.relative_tolerance * scale[static_cast<std::size_t>(i)];
+  }
+  cv.mem = CVodeCreate(CV_BDF, cv.ctx);
+  double t = 0.0;
+  check(CVodeInit(cv.mem, rhs, t, cv.y), "CVodeInit", t);
+  check(CVodeSVtolerances(cv.mem, options.relative_tolerance, cv.atol), "CVodeSVtolerances", t);
+  cv.A = SUNDenseMatrix(kStateSize, kStateSize, cv.ctx);
+  cv.LS = SUNLinSol_Dense(cv.y, cv.A, cv.ctx);
+  check(CVodeSetLinearSolver(cv.mem, cv.LS, cv.A), "CVodeSetLinearSolver", t);
+  check(CVodeSetUserData(cv.mem, &problem), "CVodeSetUserData", t);
+  check(CVodeSetMaxNumSteps(cv.mem, options.max_steps), "CVodeSetMaxNumSteps", t);
+  check(CVodeRootInit(cv.mem, kRoots, roots), "CVodeRootInit", t);
+  std::array<int, kRoots> direction{1, 1, -1, 1, 1, 1};
+  check(CVodeSetRootDirection(cv.mem, direction.data()), "CVodeSetRootDirection", t);
+  check(CVodeSetNoInactiveRootWarn(cv.mem), "CVodeSetNoInactiveRootWarn", t);
+
+  std::vector<LandingSample> window;
+  double peak_torsion = 0.0, peak_lateral = 0.0;
+  auto record = [&](double time) {
+    LandingSample sample{time, to_state(cv.y), {}, problem.mode.rolling};
+    sample.contact = contact_state(model, problem.mode, time, sample.x);
+    if (time >= s.touchdown_time_s) {
+      peak_torsion = std::max(peak_torsion, std::abs(sample.x[kPsi]));
+      peak_lateral = std::max(peak_lateral, std::abs(sample.x[kY]));
+    }
+    if (time >= run.window_start_s && time <= run.window_end_s) window.push_back(sample);
+    if (options.record) run.samples.push_back(sample);
+  };
+  record(t);
+
+  const double dt = options.output_interval_s;
+  long grid = 1;
+  while (t < s.end_time_s) {
+    const double tout = std::min(static_cast<double>(grid) * dt, s.end_time_s);
+    if (tout - t < 1e-9 * dt) {  // an event fell on the grid point
+      record(t);
+      ++grid;
+      continue;
+    }
+    const int flag = CVode(cv.mem, tout, cv.y, &t, CV_NORMAL);
+    check(flag, "CVode", t);
+    if (flag != CV_ROOT_RETURN) {
+      record(t);
+      ++grid;
+      continue;
+    }
+    std::array<int, kRoots> found{};
+    check(CVodeGetRootInfo(cv.mem, found.data()), "CVodeGetRootInfo", t);
+    x = to_state(cv.y);
+    GearMode& mode = problem.mode;
+    if (found[kLoadOnset]) {
+      mode.loaded = true;
+      run.events.push_back({t, "load onset"});
+    }
+    if (found[kFullLoad]) run.events.push_back({t, "full load"});
+    if (found[kSpinUp]) {
+      // The string takes the sliding lateral force over, so Fy is continuous.
+      const ContactState cs = contact_state(model, mode, t, x);
+      mode.rolling = true;
+      x[kLambda] = string_deflection_for_force(model, cs.force.Fy, cs.load_n);
+      if (!run.spin_up_s) run.spin_up_s = t - s.touchdown_time_s;
+      run.events.push_back({t, "spin-up"});
+    }
+    if (found[kSliding]) {
+      mode.rolling = false;
+      run.events.push_back({t, "sliding"});
+    }
+    if (found[kBrakeOn]) {
+      mode.brake_command = true;
+      run.events.push_back({t, "brake on"});
+    }
+    if (found[kBrakeOff]) {
+      mode.brake_command = false;
+      run.events.push_back({t, "brake off"});
+    }
+    long steps = 0;
+    CVodeGetNumSteps(cv.mem, &steps);
+    run.steps += steps;
+    for (int i = 0; i < kStateSize; ++i) NV_Ith_S(cv.y, i) = x[i];
+    check(CVodeReInit(cv.mem, t, cv.y), "CVodeReInit", t);
+  }
+  long steps = 0;
+  CVodeGetNumSteps(cv.mem, &steps);
+  run.steps += steps;
+  run.metrics = assess(window, peak_torsion, peak_lateral, criterion);
+  run.wall_s =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - clock_start).count();
+  return run;
+}
+
+}  // namespace contensou

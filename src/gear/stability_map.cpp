@@ -1,0 +1,73 @@
+#include "contensou/gear/stability_map.hpp"
+
+#include <atomic>
+#include <chrono>
+#include <cmath>
+#include <exception>
+#include <thread>
+#include <utility>
+
+#include "contensou/friction/error.hpp"
+
+namespace contensou {
+
+StabilityMap stability_map(const GearModel& base, const MapAxis& x, const MapAxis& y,
+                           const SolverOptions& solver, const ShimmyCriterion& criterion,
+                           unsigned threads, const std::function<void(int, int)>& progress) {
+  for (const MapAxis* a : {&x, &y}) {
+    GearConfig probe = base.config;
+    if (!gear_parameter(probe, a->parameter))
+      throw InvalidArgument("map parameter", a->parameter, "is not a gear parameter");
+    if (a->points < 1 || a->points > 10000)
+      throw InvalidArgument("map points", std::to_string(a->points), "must lie in 1..10000");
+    detail::require_finite("map from", a->from);
+    detail::require_finite("map to", a->to);
+  }
+  StabilityMap map{x, y, base.contact, {}};
+  const int total = x.points * y.points;
+  map.cells.resize(static_cast<std::size_t>(total));
+  if (threads == 0) threads = std::max(1u, std::thread::hardware_concurrency());
+  std::atomic<int> next{0}, done{0};
+  SolverOptions quiet = solver;
+  quiet.record = false;
+  auto work = [&] {
+    for (int k = next++; k < total; k = next++) {
+      MapCell& cell = map.cells[static_cast<std::size_t>(k)];
+      cell.x = x.value(k % x.points);
+      cell.y = y.value(k / x.points);
+      GearModel model = base;  // shares the exact model, if any (read-only)
+      *gear_parameter(model.config, x.parameter) = cell.x;
+      *gear_parameter(model.config, y.parameter) = cell.y;
+      try {
+        validate(model.config);
+        const LandingRun run = simulate_landing(model, quiet, criterion);
+        cell.growth_rate_per_s = run.metrics.torsion.growth_rate_per_s;
+        cell.frequency_hz = run.metrics.torsion.frequency_hz;
+        cell.last_amplitude_rad = run.metrics.torsion.last_amplitude;
+        cell.shimmy = run.metrics.shimmy;
+        cell.valid = run.metrics.torsion.valid();
+      } catch (const std::exception& e) {
+        cell.error = e.what();
+      }
+      ++done;
+    }
+  };
+  std::vector<std::thread> pool;
+  for (unsigned i = 1; i < threads; ++i) pool.emplace_back(work);
+  if (progress) {
+    // The calling thread reports progress and joins the work when the pool is busy.
+    std::thread last(work);
+    while (done.load() < total) {
+      progress(done.load(), total);
+      std::this_thread::sleep_for(std::chrono::milliseconds(100));
+    }
+    last.join();
+    progress(total, total);
+  } else {
+    work();
+  }
+  for (std::thread& t : pool) t.join();
+  return map;
+}
+
+}  // namespace contensou

@@ -1,0 +1,327 @@
+#include "contensou/identification/closed_loop.hpp"
+
+#include <Eigen/QR>
+#include <algorithm>
+#include <cmath>
+
+#include "contensou/identification/statistics.hpp"
+
+namespace contensou {
+namespace {
+
+constexpr int K = kModelParameters;
+
+struct Candidate {
+  std::string effect;
+  std::string detail;
+  std::vector<int> parameters;  // made free when the effect is fitted
+  int scored = -1;              // the parameter whose score ranks the candidate
+  bool scan_speed = false;      // speed_dependence: scan w_s
+};
+
+std::vector<Candidate> catalogue(const MeasuredData& data, const ModelSpec& s) {
+  std::vector<Candidate> out;
+  if (!s.uses_exact()) {
+    Candidate shape{"shape",
+                    s.profile_model ? "exact integrals over the profile"
+                                    : "exact integrals, profile identified",
+                    {kShapeBlend},
+                    kShapeBlend,
+                    false};
+    if (!s.profile_model) shape.parameters = {kShapeBlend, kProfileB1, kProfileB2};
+    out.push_back(shape);
+  }
+  if (!s.free[kKappa]) out.push_back({"anisotropy", "", {kKappa}, kKappa, false});
+  if (!s.free[kKy]) out.push_back({"pressure_shift_y", "", {kKy}, kKy, false});
+  if (!s.free[kSpeedDrop])
+    out.push_back({"speed_dependence", "", {kSpeedDrop, kSpeedRef}, kSpeedDrop, true});
+  for (int c = 0; c < kChannels; ++c) {
+    if (data.count(c) == 0) continue;
+    if (!s.free[offset_parameter(c)])
+      out.push_back({"channel_offset",
+                     kChannelColumns[c],
+                     {offset_parameter(c)},
+                     offset_parameter(c),
+                     false});
+    for (int d = 0; d < kChannels; ++d) {
+      if (d == c || s.free[crosstalk_parameter(c, d)]) continue;
+      out.push_back({"channel_crosstalk",
+                     std::string(kChannelColumns[c]) + " <- " + kChannelColumns[d],
+                     {crosstalk_parameter(c, d)},
+                     crosstalk_parameter(c, d),
+                     false});
+    }
+  }
+  return out;
+}
+
+// Score (LM) statistic of column j given the free columns of the current fit:
+// (z' r)^2 / (z' (I - P_A) z) / s^2, chi-square with 1 dof under the null.
+// The columns of a full Jacobian (all kModelParameters) that belong to the free parameters.
+Eigen::MatrixXd free_columns(const Eigen::MatrixXd& J, const ModelSpec& s) {
+  std::vector<int> cols;
+  for (int i = 0; i < K; ++i)
+    if (s.free[i]) cols.push_back(i);
+  Eigen::MatrixXd A(J.rows(), static_cast<Eigen::Index>(cols.size()));
+  for (std::size_t k = 0; k < cols.size(); ++k)
+    A.col(static_cast<Eigen::Index>(k)) = J.col(cols[k]);
+  return A;
+}
+
+double lm_statistic(const Eigen::VectorXd& r, const Eigen::MatrixXd& J, const ModelSpec& s, int j) {
+  const Eigen::MatrixXd A = free_columns(J, s);
+  const Eigen::VectorXd z = J.col(j);
+  const Eigen::VectorXd zp = z - A * A.colPivHouseholderQr().solve(z);
+  const double denom = zp.squaredNorm();
+  if (!(denom > 1e-20 * std::max(z.squaredNorm(), 1e-300))) return 0.0;
+  const double s2 = r.squaredNorm() / std::max<double>(1.0, static_cast<double>(r.size()) -
+                                                                static_cast<double>(A.cols()));
+  const double num = z.dot(r);
+  return num * num / denom / s2;
+}
+
+// The scan of w_s for speed_dependence: log-spaced over the data's effective slip speeds.
+std::vector<double> speed_grid(const MeasuredData& d, double R) {
+  std::vector<double> w;
+  for (const MeasuredPoint& p : d.points) {
+    const double u = std::abs(p.kinematics.omega) * R;
+    w.push_back(std::sqrt(p.kinematics.vx * p.kinematics.vx + p.kinematics.vy * p.kinematics.vy +
+                          4.0 * u * u / 9.0));
+  }
+  std::sort(w.begin(), w.end());
+  const double lo = std::max(w[w.size() / 10], 1e-3), hi = std::max(w[w.size() * 9 / 10], 2 * lo);
+  std::vector<double> grid;
+  for (int i = 0; i < 5; ++i) grid.push_back(lo * std::pow(hi / lo, i / 4.0));
+  return grid;
+}
+
+// Cross-validated error: mean squared weighted prediction error of held-out points, k folds
+// (point i in fold i mod k). Each fold's estimate is one Gauss-Newton step from the full-data
+// estimate on the training rows, delta = -(J_T' J_T)^-1 J_T' r_T, and the held-out residual is
+// r_H + J_H delta (the one-step approximation of refitting, accurate near the optimum).
+double cv_error(const MeasuredData& data, const ModelSpec& spec, const std::array<double, K>& theta,
+                const std::array<double, kChannels>& scale, NoiseModel noise_model, int folds) {
+  Eigen::VectorXd r;
+  Eigen::MatrixXd Jall;
+  std::vector<int> row_point;
+  weighted_jacobian(data, spec, theta, scale, noise_model, &r, &Jall, {}, &row_point);
+  const Eigen::MatrixXd J = free_columns(Jall, spec);
+  double sum = 0.0;
+  int n = 0;
+  for (int f = 0; f < folds; ++f) {
+    std::vector<Eigen::Index> train, held;
+    for (Eigen::Index row = 0; row < J.rows(); ++row)
+      (row_point[static_cast<std::size_t>(row)] % folds == f ? held : train).push_back(row);
+    if (held.empty() || static_cast<Eigen::Index>(train.size()) <= J.cols()) continue;
+    Eigen::MatrixXd JT(static_cast<Eigen::Index>(train.size()), J.cols());
+    Eigen::VectorXd rT(static_cast<Eigen::Index>(train.size()));
+    for (std::size_t k = 0; k < train.size(); ++k) {
+      JT.row(static_cast<Eigen::Index>(k)) = J.row(train[k]);
+      rT(static_cast<Eigen::Index>(k)) = r(train[k]);
+    }
+    const Eigen::VectorXd delta = -JT.colPivHouseholderQr().solve(rT);
+    for (Eigen::Index row : held) {
+      const double e = r(row) + J.row(row).dot(delta);
+      sum += e * e;
+      ++n;
+    }
+  }
+  return sum / std::max(n, 1);
+}
+
+void say(const ClosedLoopOptions& o, const std::string& line) {
+  if (o.progress) o.progress(line);
+}
+
+}  // namespace
+
+ClosedLoopReport close_the_loop(const MeasuredData& data, const IdentificationOptions& options,
+                                const ClosedLoopOptions& loop) {
+  ClosedLoopReport report;
+  ModelSpec spec = base_spec_for(data, options);
+  const NoiseSettings noise = noise_settings_for(options);
+  std::array<double, K> theta{};
+  say(loop, "fitting the base law");
+  FitReport fit = fit_model(data, spec, noise, &theta);
+  spec.value = theta;
+  report.base = fit;
+  for (int step = 1; step <= loop.max_steps; ++step) {
+    std::vector<Candidate> cands = catalogue(data, spec);
+    if (cands.empty()) break;
+    say(loop, "step " + std::to_string(step) + ": scoring " + std::to_string(cands.size()) +
+                  " candidate effects");
+    // One Jacobian at the null of every candidate (shape needs the exact integrals).
+    ModelSpec scoring = spec;
+    const bool score_shape = !spec.uses_exact();
+    if (score_shape) scoring.free[kShapeBlend] = true;  // lambda = 0: exact part evaluated
+    Eigen::VectorXd r;
+    Eigen::MatrixXd J;
+    weighted_jacobian(data, scoring, theta, fit.noise_scale, noise.model, &r, &J);
+    std::vector<CandidateScore> scores;
+    const std::vector<double> grid = speed_grid(data, spec.radius_m);
+    double best_speed_ref = grid[grid.size() / 2];
+    for (const Candidate& c : cands) {
+      CandidateScore sc{c.effect, c.detail, 0.0, 1.0};
+      if (c.scan_speed) {
+        // Score beta at each w_s of the scan; Bonferroni over the scan.
+        ModelSpec sp = spec;
+        sp.speed_in_exact = loop.speed_inside_integrals && spec.uses_exact();
+        double best = 0.0;
+        for (double w : grid) {
+          std::array<double, K> th = theta;
+          th[kSpeedRef] = w;
+          Eigen::VectorXd rs;
+          Eigen::MatrixXd Js;
+          weighted_jacobian(data, sp, th, fit.noise_scale, noise.model, &rs, &Js);
+          const double lm = lm_statistic(rs, Js, spec, kSpeedDrop);
+          if (lm > best) {
+            best = lm;
+            best_speed_ref = w;
+          }
+        }
+        sc.statistic = best;
+        sc.p_value = std::min(1.0, chi2_survival(best, 1.0) * static_cast<double>(grid.size()));
+      } else {
+        sc.statistic = lm_statistic(r, J, spec, c.scored);
+        sc.p_value = chi2_survival(sc.statistic, 1.0);
+      }
+      scores.push_back(sc);
+    }
+    std::vector<std::size_t> order(cands.size());
+    for (std::size_t i = 0; i < order.size(); ++i) order[i] = i;
+    std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) {
+      return scores[a].p_value < scores[b].p_value;
+    });
+    std::vector<CandidateScore> sorted;
+    for (std::size_t i : order) sorted.push_back(scores[i]);
+    const double threshold = loop.alpha / static_cast<double>(cands.size());
+    // Try the candidates in order of significance: the first that passes all three tests is
+    // accepted; those whose score is not significant are not fitted (the top one always is).
+    bool accepted_any = false;
+    for (std::size_t rank = 0; rank < order.size(); ++rank) {
+      if (rank > 0 && sorted[rank].p_value >= threshold) break;
+      const Candidate& best = cands[order[rank]];
+      LoopStep trial;
+      trial.scores = sorted;
+      trial.effect = best.effect;
+      trial.detail = best.detail;
+      say(loop, "step " + std::to_string(step) + ": fitting " + best.effect +
+                    (best.detail.empty() ? "" : " (" + best.detail + ")"));
+      // Fit the extension. For shape, the blend's end point lambda = 1: the exact integrals
+      // alone (the law's a, M0, m drop out). LR(exact vs law) is a lower bound of LR(blend vs
+      // law), so testing it with the blend's degrees of freedom is conservative, and the fit
+      // avoids the blend's degeneracy near lambda = 1.
+      ModelSpec ext = spec;
+      for (int p : best.parameters) ext.free[p] = true;
+      if (best.effect == "shape") {
+        ext.exact_only = true;
+        for (int p : {kA, kM0, kMShape, kShapeBlend}) ext.free[p] = false;
+        ext.value[kShapeBlend] = 1.0;
+      }
+      if (best.scan_speed) {
+        ext.value[kSpeedRef] = best_speed_ref;
+        ext.value[kSpeedDrop] = 0.05;
+      }
+      ext.speed_in_exact = loop.speed_inside_integrals && ext.uses_exact() &&
+                           (ext.free[kSpeedDrop] || ext.value[kSpeedDrop] != 0.0);
+      std::array<double, K> theta_ext{};
+      FitReport fit_ext = fit_model(data, ext, noise, &theta_ext);
+      ext.value = theta_ext;
+      const int q = static_cast<int>(best.parameters.size());
+      trial.lr = std::max(0.0, fit.m2ll - fit_ext.m2ll);
+      trial.lr_dof = q;
+      trial.lr_p_value = chi2_survival(trial.lr, q);
+      trial.threshold = threshold;
+      trial.bic_before = fit.bic;
+      trial.bic_after = fit_ext.bic;
+      trial.cv_before = cv_error(data, spec, theta, fit.noise_scale, noise.model, loop.folds);
+      trial.cv_after = cv_error(data, ext, theta_ext, fit.noise_scale, noise.model, loop.folds);
+      const bool lr_ok = trial.lr_p_value < trial.threshold;
+      const bool bic_ok = trial.bic_after < trial.bic_before;
+      const bool cv_ok = trial.cv_after < trial.cv_before;
+      trial.accepted = lr_ok && bic_ok && cv_ok;
+      trial.verdict =
+          std::string(lr_ok ? "LR significant" : "LR not significant") +
+          (bic_ok ? ", BIC improves" : ", BIC does not improve") +
+          (cv_ok ? ", cross-validated error improves" : ", cross-validated error does not improve");
+      if (best.effect == "shape") trial.verdict += "; the exact integrals replace the law";
+      trial.error_before = fit.error;
+      trial.channels_before = fit.channels;
+      trial.fit_before = fit;
+      for (const ParameterEstimate& e : fit_ext.parameters)
+        for (int p : best.parameters)
+          if (e.name == parameter_info(p).name) trial.parameters.push_back(e);
+      if (best.effect == "shape") {  // the blend at its end point: the exact integrals alone
+        ParameterEstimate blend;
+        blend.name = parameter_info(kShapeBlend).name;
+        blend.unit = parameter_info(kShapeBlend).unit;
+        blend.value = 1.0;
+        blend.fixed = true;
+        blend.determined = false;
+        trial.parameters.insert(trial.parameters.begin(), blend);
+      }
+      trial.error_after = fit_ext.error;
+      trial.channels_after = fit_ext.channels;
+      trial.fit_after = fit_ext;
+      say(loop, "step " + std::to_string(step) + ": " + best.effect +
+                    (trial.accepted ? " accepted" : " rejected") + " (" + trial.verdict + ")");
+      report.steps.push_back(trial);
+      if (trial.accepted) {
+        report.accepted_effects.push_back(best.effect);
+        spec = ext;
+        theta = theta_ext;
+        fit = fit_ext;
+        accepted_any = true;
+        break;
+      }
+    }
+    if (!accepted_any) break;
+  }
+  // Backward pass: an effect accepted early may stand in for ones found later. Refit without
+  // each accepted effect (shape excepted) and remove it if it is no longer significant at
+  // alpha / (number accepted) or BIC prefers the model without it; repeat until none goes.
+  bool removed = true;
+  while (removed && report.accepted_effects.size() > 1) {
+    removed = false;
+    const double threshold = loop.alpha / static_cast<double>(report.accepted_effects.size());
+    for (std::size_t k = 0; k < report.steps.size() && !removed; ++k) {
+      LoopStep& acc = report.steps[k];
+      if (!acc.accepted || acc.effect == "shape" || acc.removed) continue;
+      ModelSpec without = spec;
+      for (const ParameterEstimate& e : acc.parameters) {
+        const int i = parameter_index_by_name(e.name);
+        if (i < 0) continue;
+        without.free[i] = false;
+        without.value[i] = parameter_info(i).null_value;
+      }
+      without.speed_in_exact = loop.speed_inside_integrals && without.uses_exact() &&
+                               (without.free[kSpeedDrop] || without.value[kSpeedDrop] != 0.0);
+      say(loop, "backward: refitting without " + acc.effect);
+      std::array<double, K> theta_wo{};
+      FitReport fit_wo = fit_model(data, without, noise, &theta_wo);
+      const double lr = std::max(0.0, fit_wo.m2ll - fit.m2ll);
+      const double p = chi2_survival(lr, static_cast<double>(acc.parameters.size()));
+      if (p >= threshold || fit_wo.bic < fit.bic) {
+        acc.removed = true;
+        acc.verdict += "; removed in the backward pass (without it: LR p = " + std::to_string(p) +
+                       ", BIC " + std::to_string(fit_wo.bic) + " vs " + std::to_string(fit.bic) +
+                       ")";
+        without.value = theta_wo;
+        spec = without;
+        theta = theta_wo;
+        fit = fit_wo;
+        const auto it =
+            std::find(report.accepted_effects.begin(), report.accepted_effects.end(), acc.effect);
+        if (it != report.accepted_effects.end()) report.accepted_effects.erase(it);
+        say(loop, "backward: " + acc.effect + " removed");
+        removed = true;
+      }
+    }
+  }
+  report.final_fit = fit;
+  report.final_spec = spec;
+  report.structure_remains = !fit.residual_white;
+  return report;
+}
+
+}  // namespace contensou

@@ -1,0 +1,565 @@
+#include "contensou/identification/fit.hpp"
+
+#include <ceres/ceres.h>
+
+#include <Eigen/SVD>
+#include <algorithm>
+#include <cmath>
+#include <memory>
+#include <numbers>
+#include <numeric>
+
+#include "contensou/friction/error.hpp"
+#include "contensou/identification/effect_model.hpp"
+#include "contensou/identification/statistics.hpp"
+
+namespace contensou {
+namespace {
+
+constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
+constexpr int K = kModelParameters;
+
+// Weighted residuals of one point, w_c (y_c - yhat_c) for each measured channel c, as a
+// function of the active parameters only (packed); the others are held at theta_const.
+struct PointResidual {
+  const ModelSpec* spec;
+  Kinematics<double> k;
+  std::array<double, kChannels> y{};
+  std::array<double, kChannels> w{};  // 0 = not measured
+  std::array<int, kChannels> slot{};  // residual index of each measured channel
+  const std::vector<int>* active = nullptr;
+  const std::array<double, K>* theta_const = nullptr;
+
+  template <class T>
+  bool operator()(T const* const* packed, T* r) const {
+    std::array<T, K> theta;
+    for (int i = 0; i < K; ++i) theta[i] = T((*theta_const)[i]);
+    for (std::size_t j = 0; j < active->size(); ++j) theta[(*active)[j]] = packed[0][j];
+    const Resultants<T> f = evaluate_model(*spec, theta.data(), k);
+    const T model[kChannels] = {f.Fx, f.Fy, f.Mz};
+    for (int c = 0; c < kChannels; ++c)
+      if (w[c] != 0.0) r[slot[c]] = w[c] * (y[c] - model[c]);
+    return true;
+  }
+};
+
+// Derivatives in passes of 8 parameters (ceres::Jet<double, 8>).
+using PointCost = ceres::DynamicAutoDiffCostFunction<PointResidual, 8>;
+
+double channel_peak(const MeasuredData& d, int c) {
+  double m = 0.0;
+  for (const MeasuredPoint& p : d.points)
+    if (p.force[c]) m = std::max(m, std::abs(*p.force[c]));
+  return m;
+}
+
+// Bounds that keep the model physical, on the packed active parameters.
+void set_bounds(ceres::Problem& problem, double* packed, const std::vector<int>& active) {
+  for (std::size_t j = 0; j < active.size(); ++j) {
+    const int i = active[j], jj = static_cast<int>(j);
+    auto bound = [&](double lo, double hi) {
+      problem.SetParameterLowerBound(packed, jj, lo);
+      problem.SetParameterUpperBound(packed, jj, hi);
+    };
+    switch (i) {
+      case kF0:
+      case kA:
+      case kM0:
+      case kMShape:
+        problem.SetParameterLowerBound(packed, jj, 1e-12);
+        break;
+      case kKappa:
+        bound(0.05, 20.0);
+        break;
+      case kSpeedRef:
+        problem.SetParameterLowerBound(packed, jj, 1e-3);
+        break;
+      case kSpeedDrop:
+        bound(-0.9, 0.95);
+        break;
+      case kProfileB1:
+      case kProfileB2:
+        bound(-0.45, 0.45);
+        break;
+      case kKx:
+      case kKy:
+        bound(-0.95, 0.95);
+        break;
+      case kShapeBlend:
+        bound(0.0, 1.0);
+        break;
+      default:
+        break;
+    }
+  }
+}
+
+// Adds one residual block per point with measured values (weights from scale, and from the
+// prediction for relative noise); returns the number of residuals.
+int add_points(ceres::Problem& problem, const MeasuredData& data, const ModelSpec& spec,
+               const std::vector<int>& active, const std::array<double, K>& theta_const,
+               double* packed, const std::array<double, kChannels>& scale, NoiseModel noise,
+               const std::array<double, kChannels>& floor_rel,
+               const std::vector<Resultants<double>>& prediction, const std::vector<char>& use,
+               RobustLoss loss_kind, double loss_scale) {
+  int total = 0;
+  for (std::size_t i = 0; i < data.points.size(); ++i) {
+    if (!use.empty() && !use[i]) continue;
+    const MeasuredPoint& pt = data.points[i];
+    auto* f = new PointResidual{&spec, pt.kinematics, {}, {}, {}, &active, &theta_const};
+    int m = 0;
+    for (int c = 0; c < kChannels; ++c) {
+      if (!pt.force[c]) continue;
+      f->y[c] = *pt.force[c];
+      double sc = scale[c];
+      if (noise == NoiseModel::relative) {
+        const double yh = prediction.empty() ? *pt.force[c] : prediction[i].vector()(c);
+        sc *= std::max(std::abs(yh), floor_rel[c]);
+      }
+      f->w[c] = 1.0 / sc;
+      f->slot[c] = m++;
+    }
+    if (m == 0) {
+      delete f;
+      continue;
+    }
+    auto* cost = new PointCost(f);
+    cost->AddParameterBlock(static_cast<int>(active.size()));
+    cost->SetNumResiduals(m);
+    ceres::LossFunction* loss = nullptr;
+    if (loss_kind == RobustLoss::huber) loss = new ceres::HuberLoss(loss_scale);
+    if (loss_kind == RobustLoss::cauchy) loss = new ceres::CauchyLoss(loss_scale);
+    problem.AddResidualBlock(cost, loss, packed);
+    total += m;
+  }
+  return total;
+}
+
+std::vector<Resultants<double>> evaluate_all(const ModelSpec& spec, const double* theta,
+                                             const MeasuredData& d) {
+  std::vector<Resultants<double>> out;
+  out.reserve(d.points.size());
+  for (const MeasuredPoint& p : d.points) out.push_back(evaluate_model(spec, theta, p.kinematics));
+  return out;
+}
+
+// Whether a parameter belongs in the report of a model.
+bool reported(const ModelSpec& s, int i) {
+  if (s.exact_only && (i == kA || i == kM0 || i == kMShape || i == kShapeBlend)) return false;
+  if ((i == kProfileB1 || i == kProfileB2) && (s.profile_model || !s.uses_exact())) return false;
+  if (i == kSpeedRef) return s.free[kSpeedDrop] || s.value[kSpeedDrop] != 0.0;
+  return s.free[i] || i <= kKx || s.value[i] != parameter_info(i).null_value;
+}
+
+}  // namespace
+
+ModelSpec base_spec_for(const MeasuredData& data, const IdentificationOptions& o) {
+  detail::require_positive("radius", o.radius_m);
+  if (o.normal_load_n) detail::require_positive("normal load", *o.normal_load_n);
+  ModelSpec s = base_model_spec(o.radius_m, o.normal_load_n);
+  s.regularization_speed = o.regularization_speed;
+  if (o.profile) {
+    ContactPatch patch;
+    patch.radius_m = o.radius_m;
+    patch.profile = *o.profile;
+    patch.profile.kx = patch.profile.ky = 0.0;
+    const FractionalLaw<double> law = fractional_law_from_patch(patch);
+    s.c = law.c;
+    s.a_k = law.a_k;
+    s.mk_ratio = law.Mk / law.M0;
+    s.value[kA] = law.a;
+    s.value[kMShape] = law.m;
+    s.profile_a = law.a;
+    s.profile_m = law.m;
+    s.profile_m0_ratio = law.M0 / (law.F0 * o.radius_m);
+    patch.friction = 1.0;
+    // 1e-6 of the profile is far below any measurement noise and keeps a tabulated profile's
+    // series short (its PCHIP is only C1).
+    s.profile_model = make_exact_model(patch, 1e-6);
+  }
+  double f0 = 0.0, m0 = 0.0;
+  for (const MeasuredPoint& p : data.points) {
+    f0 = std::max(f0, std::hypot(p.force[0].value_or(0.0), p.force[1].value_or(0.0)));
+    m0 = std::max(m0, std::abs(p.force[2].value_or(0.0)));
+  }
+  s.value[kF0] = f0 > 0.0 ? f0 : 1.0;
+  s.value[kM0] = m0 > 0.0 ? m0 : 0.3 * s.value[kF0] * o.radius_m;
+  for (const auto& [name, value] : o.fixed) {
+    const int i = parameter_index_by_name(name);
+    if (i < 0 || i > kKx)
+      throw InvalidArgument("fix", name, "unknown parameter (use F0_N, a, M0_Nm, m or kx)");
+    detail::require_finite(name.c_str(), value);
+    s.free[i] = false;
+    s.value[i] = value;
+  }
+  return s;
+}
+
+NoiseSettings noise_settings_for(const IdentificationOptions& o) {
+  NoiseSettings n;
+  n.model = o.noise_model;
+  n.given = o.noise_scale;
+  n.loss = o.loss;
+  n.loss_scale = o.loss_scale;
+  n.iterations = o.noise_iterations;
+  return n;
+}
+
+const ParameterEstimate* FitReport::parameter(const std::string& name) const {
+  for (const ParameterEstimate& p : parameters)
+    if (p.name == name) return &p;
+  return nullptr;
+}
+
+std::vector<Resultants<double>> predict(const FractionalLaw<double>& law,
+                                        const MeasuredData& data) {
+  std::vector<Resultants<double>> out;
+  out.reserve(data.points.size());
+  for (const MeasuredPoint& p : data.points)
+    out.push_back(fractional_resultants(law, p.kinematics));
+  return out;
+}
+
+std::vector<double> sliding_spin_ratio(const MeasuredData& data, double radius_m) {
+  std::vector<double> psi;
+  for (const MeasuredPoint& p : data.points) {
+    const double v = std::hypot(p.kinematics.vx, p.kinematics.vy);
+    const double u = std::abs(p.kinematics.omega) * radius_m;
+    psi.push_back(u > 0.0 ? v / u : std::numeric_limits<double>::infinity());
+  }
+  return psi;
+}
+
+std::vector<ChannelDiagnostics> residual_diagnostics(const MeasuredData& data,
+                                                     const std::vector<Resultants<double>>& model,
+                                                     double radius_m,
+                                                     const std::array<double, kChannels>& scale) {
+  // Order along time if every point has one, else along psi.
+  std::vector<std::size_t> order(data.points.size());
+  std::iota(order.begin(), order.end(), 0);
+  const bool timed = std::all_of(data.points.begin(), data.points.end(),
+                                 [](const MeasuredPoint& p) { return p.time.has_value(); });
+  const std::vector<double> psi = sliding_spin_ratio(data, radius_m);
+  std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) {
+    return timed ? *data.points[a].time < *data.points[b].time : psi[a] < psi[b];
+  });
+  std::vector<ChannelDiagnostics> out;
+  int measured = 0;
+  for (int c = 0; c < kChannels; ++c) measured += data.count(c) > 0;
+  const double alpha = 0.01 / std::max(1, 2 * measured);  // Bonferroni: channels x two tests
+  for (int c = 0; c < kChannels; ++c) {
+    if (data.count(c) == 0) continue;
+    ChannelDiagnostics d;
+    d.channel = kChannelColumns[c];
+    std::vector<double> r;
+    double ss = 0.0;
+    for (std::size_t i : order) {
+      const auto& y = data.points[i].force[c];
+      if (!y) continue;
+      const double e = *y - model[i].vector()(c);
+      r.push_back(e);
+      ss += e * e;
+    }
+    d.points = static_cast<int>(r.size());
+    d.rms = std::sqrt(ss / static_cast<double>(std::max<std::size_t>(1, r.size())));
+    d.noise_scale = scale[c];
+    const RunsTest rt = runs_test(r);
+    d.runs_p_value = rt.p_value;
+    d.lag1 = lag1_autocorrelation(r);
+    d.durbin_watson = durbin_watson(r);
+    const double lag_p =
+        2.0 * normal_cdf(-std::abs(d.lag1) * std::sqrt(static_cast<double>(r.size())));
+    d.white = d.runs_p_value >= alpha && lag_p >= alpha;
+    out.push_back(d);
+  }
+  return out;
+}
+
+FitReport fit_model(const MeasuredData& data, const ModelSpec& spec, const NoiseSettings& noise,
+                    std::array<double, K>* estimate, const std::vector<char>& use) {
+  detail::require_positive("radius", spec.radius_m);
+  auto used = [&](std::size_t i) { return use.empty() || use[i]; };
+  std::array<int, kChannels> counts{};
+  int n = 0;
+  for (std::size_t i = 0; i < data.points.size(); ++i)
+    if (used(i))
+      for (int c = 0; c < kChannels; ++c) counts[c] += data.points[i].force[c].has_value();
+  for (int c = 0; c < kChannels; ++c) n += counts[c];
+  const int p_free = static_cast<int>(std::count(spec.free.begin(), spec.free.end(), true));
+  if (n <= p_free)
+    throw InvalidArgument(
+        "data", std::to_string(n) + " measured values",
+        "need more measured values than free parameters (" + std::to_string(p_free) + ")");
+  std::array<double, K> theta = spec.value;
+  std::array<double, kChannels> peak{};
+  for (int c = 0; c < kChannels; ++c) peak[c] = channel_peak(data, c);
+  std::array<double, kChannels> scale{};
+  for (int c = 0; c < kChannels; ++c)
+    scale[c] = noise.given
+                   ? (*noise.given)[c]
+                   : (noise.model == NoiseModel::relative ? 0.05 : 0.05 * std::max(peak[c], 1e-12));
+  if (noise.given)
+    for (int c = 0; c < kChannels; ++c)
+      if (counts[c] > 0) detail::require_positive("noise scale", scale[c]);
+  std::array<double, kChannels> floor_rel{};
+  for (int c = 0; c < kChannels; ++c) floor_rel[c] = 0.05 * std::max(peak[c], 1e-12);
+
+  std::vector<Resultants<double>> prev;
+  FitReport report;
+  ceres::Solver::Summary summary;
+  const int rounds =
+      noise.given && noise.model == NoiseModel::additive ? 1 : std::max(1, noise.iterations);
+  std::unique_ptr<ceres::Problem> problem;
+  std::vector<int> active;
+  for (int i = 0; i < K; ++i)
+    if (spec.free[i]) active.push_back(i);
+  std::vector<double> packed(active.size());
+  for (std::size_t j = 0; j < active.size(); ++j) packed[j] = theta[active[j]];
+  const std::array<double, K> theta_const = theta;
+  auto unpack = [&] {
+    for (std::size_t j = 0; j < active.size(); ++j) theta[active[j]] = packed[j];
+  };
+  for (int round = 0; round < rounds; ++round) {
+    problem = std::make_unique<ceres::Problem>();
+    add_points(*problem, data, spec, active, theta_const, packed.data(), scale, noise.model,
+               floor_rel, prev, use, noise.loss, noise.loss_scale);
+    set_bounds(*problem, packed.data(), active);
+    ceres::Solver::Options opt;
+    opt.linear_solver_type = ceres::DENSE_QR;
+    opt.max_num_iterations = 200;
+    opt.function_tolerance = 1e-12;
+    opt.gradient_tolerance = 1e-12;
+    opt.parameter_tolerance = 1e-10;
+    opt.logging_type = ceres::SILENT;
+    ceres::Solve(opt, problem.get(), &summary);
+    unpack();
+    prev = evaluate_all(spec, theta.data(), data);
+    if (noise.given && noise.model == NoiseModel::additive) break;
+    double change = 0.0;
+    for (int c = 0; c < kChannels; ++c) {
+      if (counts[c] == 0 || noise.given) continue;
+      double ss = 0.0;
+      for (std::size_t i = 0; i < data.points.size(); ++i) {
+        const auto& y = data.points[i].force[c];
+        if (!y || !used(i)) continue;
+        double e = *y - prev[i].vector()(c);
+        if (noise.model == NoiseModel::relative)
+          e /= std::max(std::abs(prev[i].vector()(c)), floor_rel[c]);
+        ss += e * e;
+      }
+      const double dof_c = counts[c] * (1.0 - static_cast<double>(p_free) / n);
+      const double s_new = std::sqrt(ss / std::max(dof_c, 1.0));
+      if (s_new > 0.0) {
+        change = std::max(change, std::abs(s_new - scale[c]) / scale[c]);
+        scale[c] = s_new;
+      }
+    }
+    if (round > 0 && change < 1e-3) break;
+  }
+  report.converged = summary.IsSolutionUsable();
+  report.solver_summary = summary.BriefReport();
+
+  // Weighted Jacobian at the optimum (tangent space: free parameters only).
+  ceres::CRSMatrix crs;
+  std::vector<double> residuals;
+  double cost = 0.0;
+  problem->Evaluate(ceres::Problem::EvaluateOptions(), &cost, &residuals, nullptr, &crs);
+  const std::vector<int>& free_index = active;
+  Eigen::MatrixXd J = Eigen::MatrixXd::Zero(crs.num_rows, crs.num_cols);
+  for (int r = 0; r < crs.num_rows; ++r)
+    for (int k = crs.rows[r]; k < crs.rows[r + 1]; ++k) J(r, crs.cols[k]) = crs.values[k];
+  report.residuals = static_cast<int>(residuals.size());
+  report.chi2 = 0.0;
+  for (double r : residuals) report.chi2 += r * r;
+
+  // Parameters the data cannot determine: zero columns or the null space of J.
+  std::array<bool, K> undetermined{};
+  if (J.cols() > 0) {
+    Eigen::VectorXd norms = J.colwise().norm();
+    Eigen::MatrixXd Jn = J;
+    for (int j = 0; j < J.cols(); ++j)
+      if (norms(j) > 0.0) Jn.col(j) /= norms(j);
+    Eigen::JacobiSVD<Eigen::MatrixXd> svd(Jn, Eigen::ComputeThinV);
+    const Eigen::VectorXd sv = svd.singularValues();
+    for (int j = 0; j < J.cols(); ++j)
+      if (!(norms(j) > 1e-12 * norms.maxCoeff())) undetermined[free_index[j]] = true;
+    for (int sidx = 0; sidx < sv.size(); ++sidx) {
+      if (sv(sidx) > 1e-7 * sv(0)) continue;
+      for (int j = 0; j < J.cols(); ++j)
+        if (std::abs(svd.matrixV()(j, sidx)) > 0.3) undetermined[free_index[j]] = true;
+    }
+  }
+  std::vector<int> est;  // free and determined
+  for (int i : free_index)
+    if (!undetermined[i]) est.push_back(i);
+  report.free_parameters = static_cast<int>(est.size());
+  int estimated_scales = 0;  // each estimated noise scale uses up a degree of freedom too
+  for (int c = 0; c < kChannels; ++c) estimated_scales += counts[c] > 0 && !noise.given;
+  report.degrees_of_freedom = report.residuals - report.free_parameters - estimated_scales;
+
+  Eigen::MatrixXd cov = Eigen::MatrixXd::Zero(K, K);
+  bool have_cov = false;
+  if (!est.empty() && report.degrees_of_freedom > 0) {
+    std::vector<int> hold;  // packed positions of undetermined parameters
+    for (std::size_t j = 0; j < active.size(); ++j)
+      if (undetermined[active[j]]) hold.push_back(static_cast<int>(j));
+    if (!hold.empty())
+      problem->SetManifold(packed.data(),
+                           new ceres::SubsetManifold(static_cast<int>(active.size()), hold));
+    ceres::Covariance::Options copt;
+    copt.algorithm_type = ceres::DENSE_SVD;
+    copt.null_space_rank = -1;
+    ceres::Covariance covariance(copt);
+    std::vector<std::pair<const double*, const double*>> blocks{{packed.data(), packed.data()}};
+    if (covariance.Compute(blocks, problem.get())) {
+      std::vector<double> c(est.size() * est.size());
+      covariance.GetCovarianceBlockInTangentSpace(packed.data(), packed.data(), c.data());
+      const double s2 = report.chi2 / (report.residuals - report.free_parameters);
+      for (std::size_t a = 0; a < est.size(); ++a)
+        for (std::size_t b = 0; b < est.size(); ++b)
+          cov(est[a], est[b]) = s2 * c[a * est.size() + b];
+      have_cov = true;
+    }
+  }
+  const double tq =
+      report.degrees_of_freedom > 0 ? student_t_quantile(0.975, report.degrees_of_freedom) : kNaN;
+  for (int i = 0; i < K; ++i) {
+    if (!reported(spec, i)) continue;
+    ParameterEstimate e;
+    e.name = parameter_info(i).name;
+    e.unit = parameter_info(i).unit;
+    e.value = theta[i];
+    e.fixed = !spec.free[i];
+    e.determined = spec.free[i] && !undetermined[i];
+    if (e.determined && have_cov && cov(i, i) >= 0.0) {
+      e.std_error = std::sqrt(cov(i, i));
+      e.ci95 = std::array<double, 2>{e.value - tq * e.std_error, e.value + tq * e.std_error};
+    } else {
+      e.determined = false;
+    }
+    report.parameters.push_back(e);
+  }
+  if (spec.exact_only && spec.profile_model) {
+    // The exact model has no a, m, M0 of its own: report the profile's asymptote-matched
+    // values (fixed, no interval), so that a report always carries the law's parameters.
+    const double derived[3] = {spec.profile_a, theta[kF0] * spec.radius_m * spec.profile_m0_ratio,
+                               spec.profile_m};
+    const int index[3] = {kA, kM0, kMShape};
+    for (int j = 0; j < 3; ++j) {
+      ParameterEstimate e;
+      e.name = parameter_info(index[j]).name;
+      e.unit = parameter_info(index[j]).unit;
+      e.value = derived[j];
+      e.fixed = true;
+      e.determined = false;
+      e.derived = true;
+      report.parameters.insert(report.parameters.begin() + 1 + j, e);
+    }
+  }
+  if (spec.normal_load_n) {
+    const ParameterEstimate& F0 = report.parameters[0];
+    const double N = *spec.normal_load_n;
+    ParameterEstimate f;
+    f.name = "f";
+    f.unit = "1";
+    f.value = F0.value / N;
+    f.fixed = F0.fixed;
+    f.determined = F0.determined;
+    f.std_error = F0.std_error / N;
+    if (F0.ci95) f.ci95 = std::array<double, 2>{(*F0.ci95)[0] / N, (*F0.ci95)[1] / N};
+    report.parameters.push_back(f);
+  }
+  report.correlation = Eigen::MatrixXd::Identity(est.size(), est.size());
+  for (std::size_t a = 0; a < est.size(); ++a) {
+    report.correlation_names.push_back(parameter_info(est[a]).name);
+    for (std::size_t b = 0; b < est.size(); ++b)
+      if (have_cov && cov(est[a], est[a]) > 0 && cov(est[b], est[b]) > 0)
+        report.correlation(a, b) =
+            cov(est[a], est[b]) / std::sqrt(cov(est[a], est[a]) * cov(est[b], est[b]));
+  }
+  if (!spec.exact_only) report.law = fractional_law_of(spec, theta.data());
+
+  // Quality on the used points: diagnostics, Gaussian -2 log L with the noise scales.
+  MeasuredData subset;
+  std::vector<Resultants<double>> sub_pred;
+  for (std::size_t i = 0; i < data.points.size(); ++i)
+    if (used(i)) {
+      subset.points.push_back(data.points[i]);
+      sub_pred.push_back(prev[i]);
+    }
+  report.prediction = prev;
+  report.noise_scale = scale;
+  report.channels = residual_diagnostics(subset, sub_pred, spec.radius_m, scale);
+  report.residual_white = std::all_of(report.channels.begin(), report.channels.end(),
+                                      [](const ChannelDiagnostics& d) { return d.white; });
+  double log_det = 0.0, err2 = 0.0;
+  for (std::size_t i = 0; i < data.points.size(); ++i) {
+    if (!used(i)) continue;
+    for (int c = 0; c < kChannels; ++c) {
+      if (!data.points[i].force[c]) continue;
+      double sc = scale[c];
+      if (noise.model == NoiseModel::relative)
+        sc *= std::max(std::abs(prev[i].vector()(c)), floor_rel[c]);
+      log_det += std::log(2.0 * std::numbers::pi * sc * sc);
+    }
+  }
+  const int measured = static_cast<int>(report.channels.size());
+  for (int c = 0, k = 0; c < kChannels; ++c) {
+    if (counts[c] == 0) continue;
+    const double rel = report.channels[k++].rms / std::max(peak[c], 1e-300);
+    err2 += rel * rel;
+  }
+  report.error = std::sqrt(err2 / std::max(measured, 1));
+  const int k_params = report.free_parameters + (noise.given ? 0 : measured);
+  report.m2ll = log_det + report.chi2;
+  report.aic = report.m2ll + 2.0 * k_params;
+  report.bic = report.m2ll + k_params * std::log(static_cast<double>(report.residuals));
+  if (estimate) *estimate = theta;
+  return report;
+}
+
+void weighted_jacobian(const MeasuredData& data, const ModelSpec& spec,
+                       const std::array<double, K>& theta_in,
+                       const std::array<double, kChannels>& scale, NoiseModel noise,
+                       Eigen::VectorXd* r, Eigen::MatrixXd* J, const std::vector<char>& use,
+                       std::vector<int>* row_point) {
+  std::array<double, K> theta = theta_in;
+  std::array<double, kChannels> floor_rel{};
+  for (int c = 0; c < kChannels; ++c) floor_rel[c] = 0.05 * std::max(channel_peak(data, c), 1e-12);
+  const std::vector<Resultants<double>> pred = evaluate_all(spec, theta.data(), data);
+  // Columns for the parameters that are free or scored (non-null or listed as free); the
+  // others get zero columns.
+  std::vector<int> active;
+  for (int i = 0; i < K; ++i)
+    if (spec.free[i] || spec.value[i] != parameter_info(i).null_value || i <= kKx ||
+        (i >= kKy && i <= kXMzFy) || i == kShapeBlend)
+      active.push_back(i);
+  std::vector<double> packed(active.size());
+  for (std::size_t j = 0; j < active.size(); ++j) packed[j] = theta[active[j]];
+  ceres::Problem problem;
+  add_points(problem, data, spec, active, theta, packed.data(), scale, noise, floor_rel, pred, use,
+             RobustLoss::none, 1.0);
+  if (row_point) {
+    row_point->clear();
+    for (std::size_t i = 0; i < data.points.size(); ++i) {
+      if (!use.empty() && !use[i]) continue;
+      for (int c = 0; c < kChannels; ++c)
+        if (data.points[i].force[c]) row_point->push_back(static_cast<int>(i));
+    }
+  }
+  ceres::CRSMatrix crs;
+  std::vector<double> res;
+  double cost = 0.0;
+  problem.Evaluate(ceres::Problem::EvaluateOptions(), &cost, &res, nullptr, &crs);
+  *r = Eigen::Map<Eigen::VectorXd>(res.data(), static_cast<Eigen::Index>(res.size()));
+  *J = Eigen::MatrixXd::Zero(crs.num_rows, K);
+  for (int row = 0; row < crs.num_rows; ++row)
+    for (int k = crs.rows[row]; k < crs.rows[row + 1]; ++k)
+      (*J)(row, active[crs.cols[k]]) = crs.values[k];
+}
+
+FitReport fit_fractional_law(const MeasuredData& data, const IdentificationOptions& o) {
+  return fit_model(data, base_spec_for(data, o), noise_settings_for(o));
+}
+
+}  // namespace contensou

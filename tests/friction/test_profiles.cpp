@@ -1,0 +1,165 @@
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdio>
+#include <fstream>
+#include <numbers>
+
+#include "contensou/friction/error.hpp"
+#include "contensou/friction/pressure_profile.hpp"
+#include "contensou/friction/quadrature.hpp"
+
+using namespace contensou;
+
+// Independent oracle: composite 20-point Gauss-Legendre of shape_value(rho) rho^n on [lo, hi].
+double brute_moment(const PressureProfile& p, int n, double lo = 0.0, double hi = 1.0,
+                    int panels = 400) {
+  const GaussLegendreRule g = gauss_legendre(20);
+  double s = 0.0;
+  for (int k = 0; k < panels; ++k) {
+    const double a = lo + (hi - lo) * k / panels, b = lo + (hi - lo) * (k + 1) / panels;
+    for (int i = 0; i < 20; ++i) {
+      const double r = 0.5 * (a + b) + 0.5 * (b - a) * g.nodes[i];
+      s += 0.5 * (b - a) * g.weights[i] * shape_value(p, r) * std::pow(r, n);
+    }
+  }
+  return s;
+}
+
+TEST(Profiles, SeedTireMomentsMatchTheory) {
+  const PressureProfile p = seed_tire_profile();
+  // theory.md section 5.
+  EXPECT_NEAR(moment(p, 0), 0.895037, 1e-6);
+  EXPECT_NEAR(moment(p, 1), 0.454090, 1e-6);
+  EXPECT_NEAR(moment(p, 2), 0.275405, 1e-6);
+  EXPECT_NEAR(moment(p, 3), 0.180766, 1e-6);
+  const double a = std::pow(2 * moment(p, 1) / moment(p, 0), 2);
+  const double m = std::pow(2 * moment(p, 2) / moment(p, 3), 2);
+  EXPECT_NEAR(a, 1.0296, 5e-5);
+  EXPECT_NEAR(m, 9.2848, 5e-5);
+  // The seed's m = 1.72 is the reciprocal formula.
+  EXPECT_NEAR(std::pow(2 * moment(p, 3) / moment(p, 2), 2), 1.7232, 5e-5);
+  EXPECT_NEAR(shape_value(p, 0.0), 0.584, 5e-4);
+}
+
+TEST(Profiles, ClosedFormMomentsAgreeWithQuadrature) {
+  for (int n = 0; n <= 9; ++n) {
+    EXPECT_NEAR(moment(uniform_profile(), n), 1.0 / (n + 1), 1e-15);
+    EXPECT_NEAR(moment(seed_tire_profile(), n), brute_moment(seed_tire_profile(), n), 1e-13)
+        << "n = " << n;
+    const PressureProfile wide = cosine_series_profile(2.3, {0.2, -0.4, 0.9, 0.05});
+    EXPECT_NEAR(moment(wide, n), brute_moment(wide, n), 1e-13) << "n = " << n;
+  }
+  // Hertz: A^0 = pi/4, A^1 = 1/3, A^2 = pi/16, A^3 = 2/15.
+  const PressureProfile h = hertz_profile();
+  EXPECT_NEAR(moment(h, 0), std::numbers::pi / 4, 1e-15);
+  EXPECT_NEAR(moment(h, 1), 1.0 / 3, 1e-15);
+  EXPECT_NEAR(moment(h, 2), std::numbers::pi / 16, 1e-15);
+  EXPECT_NEAR(moment(h, 3), 2.0 / 15, 1e-15);
+}
+
+TEST(Profiles, SeedTireIsNegativeAtTheRimAndClippingIsExplicit) {
+  PressureProfile p = seed_tire_profile();
+  const auto neg = negative_intervals(p);
+  ASSERT_EQ(neg.size(), 1u);
+  EXPECT_NEAR(neg[0].first, 0.9936, 1e-4);
+  EXPECT_DOUBLE_EQ(neg[0].second, 1.0);
+  EXPECT_NEAR(shape_value(p, 1.0), -0.0265, 1e-4);
+  p.clip_negative = true;
+  EXPECT_EQ(shape_value(p, 1.0), 0.0);
+  for (int n = 0; n <= 3; ++n) {
+    const double clipped = moment(p, n);
+    EXPECT_NEAR(clipped, brute_moment(p, n, 0.0, neg[0].first), 1e-13);
+    PressureProfile raw = seed_tire_profile();
+    EXPECT_GT(clipped, moment(raw, n));  // the removed part was negative
+  }
+  EXPECT_TRUE(negative_intervals(uniform_profile()).empty());
+  EXPECT_TRUE(negative_intervals(hertz_profile()).empty());
+}
+
+TEST(Profiles, TabulatedIsShapePreservingAndExactOnKnots) {
+  const std::vector<double> rho{0.0, 0.2, 0.5, 0.6, 0.9, 1.0};
+  const std::vector<double> p{1.0, 1.0, 0.4, 0.4, 0.1, 0.0};  // monotone non-increasing
+  const PressureProfile t = tabulated_profile(rho, p);
+  for (std::size_t k = 0; k < rho.size(); ++k) EXPECT_DOUBLE_EQ(shape_value(t, rho[k]), p[k]);
+  double prev = shape_value(t, 0.0);
+  for (int i = 1; i <= 1000; ++i) {
+    const double v = shape_value(t, i / 1000.0);
+    EXPECT_LE(v, prev + 1e-15) << "overshoot at rho = " << i / 1000.0;
+    EXPECT_GE(v, -1e-15);
+    prev = v;
+  }
+  // Flat between equal knots (no spurious extremum).
+  EXPECT_NEAR(shape_value(t, 0.55), 0.4, 1e-15);
+  // Even in rho: zero slope at the centre, p(h) - p(0) = O(h^2).
+  const PressureProfile sloped = tabulated_profile({0.0, 0.5, 1.0}, {1.0, 0.6, 0.1});
+  EXPECT_LT(std::abs(shape_value(sloped, 1e-4) - 1.0), 1e-6);
+  for (int n = 0; n <= 4; ++n) EXPECT_NEAR(moment(t, n), brute_moment(t, n), 1e-12);
+}
+
+TEST(Profiles, TabulatedConvergesToASmoothProfile) {
+  std::vector<double> rho, p;
+  for (int i = 0; i <= 100; ++i) {
+    rho.push_back(i / 100.0);
+    p.push_back(std::sqrt(1.0 - 0.75 * rho.back() * rho.back()));
+  }
+  const PressureProfile t = tabulated_profile(rho, p);
+  for (int i = 0; i <= 997; ++i) {
+    const double r = i / 997.0;
+    EXPECT_NEAR(shape_value(t, r), std::sqrt(1.0 - 0.75 * r * r), 2e-5);
+  }
+}
+
+void expect_invalid(const std::function<void()>& f, const std::string& parameter) {
+  try {
+    f();
+    FAIL() << "no exception for " << parameter;
+  } catch (const InvalidArgument& e) {
+    EXPECT_EQ(e.parameter(), parameter) << e.what();
+  }
+}
+
+TEST(Profiles, BadInputNamesTheParameter) {
+  expect_invalid([] { tabulated_profile({}, {}); }, "rho");
+  expect_invalid([] { tabulated_profile({0.0, 0.5, 0.4, 1.0}, {1, 1, 1, 1}); }, "rho[2]");
+  expect_invalid([] { tabulated_profile({0.0, 1.0}, {1.0}); }, "p");
+  expect_invalid([] { tabulated_profile({0.0, 0.8}, {1.0, 1.0}); }, "rho[last]");
+  expect_invalid([] { tabulated_profile({-0.1, 1.0}, {1.0, 1.0}); }, "rho[0]");
+  expect_invalid([] { tabulated_profile({0.0, 1.0}, {1.0, NAN}); }, "p[1]");
+  expect_invalid([] { cosine_series_profile(0.0, {1.0}); }, "w");
+  expect_invalid([] { cosine_series_profile(1.0, {}); }, "a");
+  expect_invalid([] { moment(uniform_profile(), -1); }, "n");
+}
+
+std::string write_temp(const std::string& name, const std::string& text) {
+  const std::string path = ::testing::TempDir() + name;
+  std::ofstream(path) << text;
+  return path;
+}
+
+TEST(Profiles, ReadsProfileCsvNormalisedByTheMeanPressure) {
+  const std::string path =
+      write_temp("profile.csv", "# measured\npressure_Pa,rho\n300000,0\n300000,0.5\n100000,1\n");
+  const MeasuredProfile m = read_profile_csv(path);
+  EXPECT_NEAR(2.0 * moment(m.profile, 1), 1.0, 1e-14);
+  EXPECT_NEAR(m.reference_pressure_pa * shape_value(m.profile, 0.25), 300000.0, 1e-6);
+  EXPECT_GT(m.reference_pressure_pa, 100000.0);
+  EXPECT_LT(m.reference_pressure_pa, 300000.0);
+}
+
+TEST(Profiles, ProfileCsvErrorsNameLineAndColumn) {
+  auto line_of = [](const std::string& text) {
+    try {
+      read_profile_csv(write_temp("bad.csv", text));
+    } catch (const ParseError& e) {
+      return e.line();
+    }
+    return -1;
+  };
+  EXPECT_EQ(line_of("rho,pressure_Pa\n0,1\n0.5,x\n1,1\n"), 3);
+  EXPECT_EQ(line_of("rho,pressure_Pa\n0,1\n0.6,1\n0.5,1\n1,1\n"), 4);  // unsorted
+  EXPECT_EQ(line_of("rho,pressure_Pa\n0,1\n0.5,1\n"), 3);              // does not reach rho = 1
+  EXPECT_EQ(line_of("rho,p\n0,1\n1,1\n"), 1);                          // missing column
+  EXPECT_EQ(line_of("rho,pressure_Pa\n0,1\n1.5,1\n"), 3);              // outside [0, 1]
+  EXPECT_EQ(line_of(""), 0);                                           // empty file
+}

@@ -1,0 +1,306 @@
+// The landing-gear model (docs/shimmy.md): free frequencies with friction off, Somieski's
+// nose-gear stability boundary against its Routh-Hurwitz form, convergence with the
+// tolerance, dissipation, mirror symmetry, the oscillation analysis and bad input.
+#include <gtest/gtest.h>
+
+#include <Eigen/Eigenvalues>
+#include <cmath>
+#include <numbers>
+#include <vector>
+
+#include "contensou/friction/error.hpp"
+#include "contensou/gear/landing_simulation.hpp"
+#include "contensou/gear/oscillation.hpp"
+#include "contensou/gear/stability_map.hpp"
+
+using namespace contensou;
+
+namespace {
+
+constexpr double kTwoPi = 2.0 * std::numbers::pi;
+
+// A gear that never lands: free vibration from an initial deflection.
+GearConfig airborne(double psi0, double y0) {
+  GearConfig c;
+  c.scenario.touchdown_time_s = 10.0;
+  c.scenario.end_time_s = 0.5;
+  c.scenario.braking = false;
+  c.scenario.initial_torsion_rad = psi0;
+  c.scenario.initial_lateral_m = y0;
+  return c;
+}
+
+OscillationEstimate analyse(const LandingRun& r, int position, int rate) {
+  std::vector<double> t, v, p;
+  for (const LandingSample& s : r.samples) {
+    t.push_back(s.t);
+    p.push_back(s.x[position]);
+    v.push_back(s.x[rate]);
+  }
+  return analyse_oscillation(t, v, p);
+}
+
+}  // namespace
+
+TEST(Oscillation, RecoversFrequencyGrowthAndAmplitudeOfADampedSine) {
+  for (double sigma : {-3.0, 0.0, 2.0}) {
+    const double f = 17.0, w = kTwoPi * f;
+    std::vector<double> t, x, v;
+    for (int i = 0; i <= 20000; ++i) {
+      const double ti = i * 5e-5;
+      t.push_back(ti);
+      x.push_back(0.01 * std::exp(sigma * ti) * std::sin(w * ti) + 0.3);  // offset is ignored
+      v.push_back(0.01 * std::exp(sigma * ti) * (sigma * std::sin(w * ti) + w * std::cos(w * ti)));
+    }
+    const OscillationEstimate e = analyse_oscillation(t, v, x);
+    ASSERT_TRUE(e.valid());
+    EXPECT_NEAR(e.frequency_hz, f, 0.01);
+    EXPECT_NEAR(e.growth_rate_per_s, sigma, 0.02);
+    EXPECT_NEAR(e.last_amplitude, 0.01 * std::exp(sigma * 0.97), 0.01 * std::exp(sigma) * 0.05);
+  }
+}
+
+TEST(Oscillation, TooFewCrossingsAreInvalidAndLengthsMustMatch) {
+  std::vector<double> t{0, 1, 2, 3}, v{1, -1, 1, -1}, x{0, 0, 0, 0};
+  EXPECT_FALSE(analyse_oscillation(t, v, x).valid());
+  std::vector<double> shorter{0, 1};
+  EXPECT_THROW(analyse_oscillation(t, shorter, x), InvalidArgument);
+}
+
+TEST(LandingGear, FreeTorsionalAndLateralFrequenciesWithFrictionOff) {
+  const GearConfig c = airborne(0.01, 0.002);
+  const GearStructure& g = c.structure;
+  const LandingRun r = simulate_landing(make_gear_model(c, ContactModel::coupled), {1e-9});
+  // Damped oscillators: omega_d = sqrt(k/I - (c/2I)^2), decay c / 2I.
+  const double zt = g.torsional_damping_nms_per_rad / (2 * g.torsional_inertia_kgm2);
+  const double ft =
+      std::sqrt(g.torsional_stiffness_nm_per_rad / g.torsional_inertia_kgm2 - zt * zt) / kTwoPi;
+  const double zy = g.lateral_damping_ns_per_m / (2 * g.lateral_mass_kg);
+  const double fy = std::sqrt(g.lateral_stiffness_n_per_m / g.lateral_mass_kg - zy * zy) / kTwoPi;
+  const OscillationEstimate et = analyse(r, kPsi, kPsiDot), ey = analyse(r, kY, kYDot);
+  EXPECT_NEAR(et.frequency_hz, ft, 1e-3 * ft);
+  EXPECT_NEAR(et.growth_rate_per_s, -zt, 0.02);
+  EXPECT_NEAR(ey.frequency_hz, fy, 1e-3 * fy);
+  EXPECT_NEAR(ey.growth_rate_per_s, -zy, 0.02);
+  EXPECT_TRUE(r.events.empty());
+  EXPECT_EQ(r.metrics.torsion.half_cycles, et.half_cycles);  // window: the whole run
+}
+
+namespace {
+
+// Somieski's nose gear: torsion psi with a stretched-string tire (lambda), no lateral bending.
+// Linearised numerically (central differences of gear_rhs) about straight rolling.
+Eigen::Matrix3d nose_gear_matrix(const GearModel& m) {
+  GearMode mode;
+  mode.loaded = true;
+  mode.rolling = true;
+  const double t = m.config.scenario.touchdown_time_s + 2 * m.config.scenario.load_ramp_s;
+  GearState x0 = GearState::Zero();
+  x0[kSpin] = m.config.scenario.forward_speed_mps / m.config.structure.wheel_radius_m;
+  const int idx[3] = {kPsi, kPsiDot, kLambda};
+  Eigen::Matrix3d A;
+  for (int j = 0; j < 3; ++j) {
+    const double h = 1e-7;
+    GearState xp = x0, xm = x0;
+    xp[idx[j]] += h;
+    xm[idx[j]] -= h;
+    const GearState d = (gear_rhs(m, mode, t, xp) - gear_rhs(m, mode, t, xm)) / (2 * h);
+    for (int i = 0; i < 3; ++i) A(i, j) = d[idx[i]];
+  }
+  return A;
+}
+
+double max_real_eigenvalue(const Eigen::Matrix3d& A) {
+  return Eigen::EigenSolver<Eigen::Matrix3d>(A).eigenvalues().real().maxCoeff();
+}
+
+GearConfig nose_gear(double V, double trail) {
+  GearConfig c;
+  c.scenario.forward_speed_mps = V;
+  c.scenario.drift_speed_mps = 0.0;
+  c.scenario.braking = false;
+  c.structure.trail_m = trail;
+  c.structure.offset_m = 0.0;
+  return c;
+}
+
+// Routh-Hurwitz: the characteristic polynomial of
+//   I psi'' = -k psi - d psi' - q lambda,  lambda' = V psi + (e - a) psi' - (V / sigma) lambda,
+// q = N (e C_Fa + C_Ma) / sigma, d = c_psi + kappa_t / V, is s^3 + a2 s^2 + a1 s + a0 with
+//   a2 = d/I + V/sigma, a1 = d V / (I sigma) + (q (e - a) + k) / I, a0 = V (k / sigma + q) / I,
+// stable iff a2, a0 > 0 and a2 a1 > a0. The boundary a2 a1 = a0 is a quadratic in d.
+double routh_hurwitz_critical_damping(const GearConfig& c, double patch_radius) {
+  const double I = c.structure.torsional_inertia_kgm2,
+               k = c.structure.torsional_stiffness_nm_per_rad;
+  const double V = c.scenario.forward_speed_mps, N = c.scenario.static_load_n;
+  const double sigma = c.rolling.relaxation_length_m, e = c.structure.trail_m, a = patch_radius;
+  const double q =
+      N * (e * c.rolling.cornering_coefficient + c.rolling.aligning_coefficient_m) / sigma;
+  const double K1 = (q * (e - a) + k) / I, a0 = V * (k / sigma + q) / I;
+  const double A = V / (I * I * sigma), B = K1 / I + V * V / (I * sigma * sigma),
+               C = V / sigma * K1 - a0;
+  const double d = (-B + std::sqrt(B * B - 4 * A * C)) / (2 * A);
+  return d - c.rolling.tread_moment_nm2_per_rad / V;
+}
+
+}  // namespace
+
+TEST(LandingGear, SomieskiNoseGearBoundaryMatchesRouthHurwitz) {
+  for (const auto& [V, e] : {std::pair{30.0, 0.05}, std::pair{70.0, 0.05}, std::pair{70.0, 0.12},
+                             std::pair{100.0, 0.0}}) {
+    GearConfig c = nose_gear(V, e);
+    const GearModel probe = make_gear_model(c, ContactModel::nonholonomic);
+    const double R =
+        contact_state(probe, {true, true, false}, 1.0, GearState::Zero()).patch_radius_m;
+    const double expected = routh_hurwitz_critical_damping(c, R);
+    ASSERT_GT(expected, 1.0) << "choose cases with a positive critical damping";
+    // Numerical boundary: bisection on the sign of the largest real part.
+    double lo = 0.0, hi = 10.0 * expected;
+    for (int i = 0; i < 60; ++i) {
+      c.structure.torsional_damping_nms_per_rad = 0.5 * (lo + hi);
+      const bool unstable =
+          max_real_eigenvalue(nose_gear_matrix(make_gear_model(c, ContactModel::nonholonomic))) > 0;
+      (unstable ? lo : hi) = 0.5 * (lo + hi);
+    }
+    EXPECT_NEAR(0.5 * (lo + hi), expected, 1e-5 * expected) << "V = " << V << ", e = " << e;
+  }
+}
+
+TEST(LandingGear, SimulatedNoseGearGrowsBelowTheBoundaryAndDecaysAbove) {
+  GearConfig c = nose_gear(70.0, 0.05);
+  c.structure.lateral_stiffness_n_per_m = 1e10;  // a rigid strut laterally
+  c.structure.lateral_damping_ns_per_m = 3.5e6;
+  c.scenario.initial_torsion_rad = 1e-3;
+  const GearModel probe = make_gear_model(c, ContactModel::nonholonomic);
+  const double R = contact_state(probe, {true, true, false}, 1.0, GearState::Zero()).patch_radius_m;
+  const double critical = routh_hurwitz_critical_damping(c, R);
+  for (double factor : {0.7, 1.3}) {
+    c.structure.torsional_damping_nms_per_rad = factor * critical;
+    const LandingRun r = simulate_landing(make_gear_model(c, ContactModel::nonholonomic), {1e-8});
+    ASSERT_TRUE(r.metrics.torsion.valid());
+    if (factor < 1)
+      EXPECT_GT(r.metrics.torsion.growth_rate_per_s, 0.1);
+    else
+      EXPECT_LT(r.metrics.torsion.growth_rate_per_s, -0.1);
+  }
+}
+
+TEST(LandingGear, ResultsConvergeAsTheToleranceTightens) {
+  const GearModel m = make_gear_model(GearConfig{}, ContactModel::coupled);
+  std::vector<double> growth, peak;
+  for (double rtol : {1e-5, 1e-7, 1e-9}) {
+    const LandingRun r = simulate_landing(m, {rtol, 5e-4, false});
+    growth.push_back(r.metrics.torsion.growth_rate_per_s);
+    peak.push_back(r.metrics.peak_torsion_rad);
+  }
+  EXPECT_LT(std::abs(growth[1] - growth[2]), 0.05);
+  EXPECT_LT(std::abs(peak[1] - peak[2]), 0.01 * peak[2]);
+  EXPECT_LE(std::abs(peak[1] - peak[2]), std::abs(peak[0] - peak[2]) + 1e-12);
+}
+
+TEST(LandingGear, SlidingFrictionDissipatesAlongTheWholeLanding) {
+  for (ContactModel cm : {ContactModel::coupled, ContactModel::decoupled}) {
+    const LandingRun r = simulate_landing(make_gear_model(GearConfig{}, cm));
+    int sliding = 0;
+    for (const LandingSample& s : r.samples) {
+      if (s.rolling || s.contact.load_n <= 0) continue;
+      ++sliding;
+      EXPECT_LE(friction_power(s.contact.force, s.contact.slip), 1e-9 * s.contact.load_n)
+          << to_string(cm) << " at t = " << s.t;
+    }
+    EXPECT_GT(sliding, 100) << to_string(cm);
+  }
+}
+
+TEST(LandingGear, MirroredGearGivesMirroredMotion) {
+  GearConfig c;
+  GearConfig m = c;
+  m.structure.offset_m = -c.structure.offset_m;
+  m.scenario.drift_speed_mps = -c.scenario.drift_speed_mps;
+  for (ContactModel cm : {ContactModel::coupled, ContactModel::nonholonomic}) {
+    const LandingRun a = simulate_landing(make_gear_model(c, cm), {1e-9});
+    const LandingRun b = simulate_landing(make_gear_model(m, cm), {1e-9});
+    ASSERT_EQ(a.samples.size(), b.samples.size());
+    double worst = 0.0;
+    for (std::size_t i = 0; i < a.samples.size(); ++i)
+      worst = std::max(worst, std::abs(a.samples[i].x[kPsi] + b.samples[i].x[kPsi]));
+    EXPECT_LT(worst, 1e-3 * a.metrics.peak_torsion_rad) << to_string(cm);
+    EXPECT_NEAR(a.samples.back().x[kSpin], b.samples.back().x[kSpin], 1e-6);
+  }
+}
+
+TEST(LandingGear, EventsComeInTheirOrder) {
+  const LandingRun r = simulate_landing(make_gear_model(GearConfig{}, ContactModel::coupled));
+  std::vector<std::string> names;
+  for (const LandingEvent& e : r.events) names.push_back(e.what);
+  ASSERT_GE(names.size(), 5u);
+  EXPECT_EQ(names[0], "load onset");
+  EXPECT_EQ(names[1], "full load");  // spin-up ends after the 0.1 s ramp with these numbers
+  EXPECT_EQ(names[2], "spin-up");
+  EXPECT_EQ(names[3], "brake on");
+  EXPECT_EQ(names[4], "sliding");  // the anti-skid's target slip 0.15 exceeds sliding_slip
+  ASSERT_TRUE(r.spin_up_s.has_value());
+  EXPECT_GT(*r.spin_up_s, 0.0);
+  // At the end of spin-up the patch's slip ratio is rolling_slip.
+  EXPECT_NEAR(r.events[2].t - GearConfig{}.scenario.touchdown_time_s, *r.spin_up_s, 1e-12);
+}
+
+TEST(LandingGear, ExactIntegralsRunAndAgreeOnTheTorsionalFrequency) {
+  GearConfig c;
+  c.scenario.end_time_s = 0.6;
+  c.scenario.brake_off_s = 0.55;
+  const LandingRun law = simulate_landing(make_gear_model(c, ContactModel::coupled), {1e-6});
+  c.tire.exact_integrals = true;
+  const LandingRun exact = simulate_landing(make_gear_model(c, ContactModel::coupled), {1e-6});
+  ASSERT_TRUE(exact.metrics.torsion.valid());
+  EXPECT_NEAR(exact.metrics.torsion.frequency_hz, law.metrics.torsion.frequency_hz,
+              0.03 * law.metrics.torsion.frequency_hz);
+  EXPECT_TRUE(std::isfinite(exact.metrics.torsion.growth_rate_per_s));
+}
+
+TEST(LandingGear, BadInputIsRejectedByName) {
+  GearConfig c;
+  c.structure.torsional_inertia_kgm2 = -1.0;
+  try {
+    validate(c);
+    FAIL() << "no exception";
+  } catch (const InvalidArgument& e) {
+    EXPECT_EQ(e.parameter(), "structure.torsional_inertia_kgm2");
+  }
+  c = GearConfig{};
+  c.scenario.brake_off_s = 0.1;  // before brake_on_s
+  EXPECT_THROW(validate(c), InvalidArgument);
+  c = GearConfig{};
+  c.tire.law_coefficients = "magic";
+  EXPECT_THROW(make_gear_model(c, ContactModel::coupled), InvalidArgument);
+  EXPECT_THROW(contact_model_from_string("rolling"), InvalidArgument);
+  EXPECT_EQ(gear_parameter(c, "structure.nope"), nullptr);
+  EXPECT_THROW(simulate_landing(make_gear_model(GearConfig{}, ContactModel::coupled), {0.0}),
+               InvalidArgument);
+  EXPECT_THROW(stability_map(make_gear_model(GearConfig{}, ContactModel::coupled),
+                             {"structure.nope", 0, 1, 2}, {"structure.offset_m", 0, 1, 2}, {}, {}),
+               InvalidArgument);
+}
+
+TEST(StabilityMap, CellsMatchSingleRunsAndCoverTheGrid) {
+  const GearModel m = make_gear_model(GearConfig{}, ContactModel::coupled);
+  const MapAxis x{"scenario.forward_speed_mps", 40.0, 70.0, 3};
+  const MapAxis y{"structure.torsional_damping_nms_per_rad", 0.0, 300.0, 2};
+  int calls = 0;
+  const StabilityMap map = stability_map(m, x, y, {}, {}, 2, [&](int, int) { ++calls; });
+  ASSERT_EQ(map.cells.size(), 6u);
+  EXPECT_GE(calls, 1);
+  const MapCell& cell = map.cells[1 * 3 + 2];  // x = 70, y = 300
+  EXPECT_DOUBLE_EQ(cell.x, 70.0);
+  EXPECT_DOUBLE_EQ(cell.y, 300.0);
+  GearModel single = m;
+  single.config.scenario.forward_speed_mps = 70.0;
+  single.config.structure.torsional_damping_nms_per_rad = 300.0;
+  const LandingRun r = simulate_landing(single);
+  EXPECT_DOUBLE_EQ(cell.growth_rate_per_s, r.metrics.torsion.growth_rate_per_s);
+  EXPECT_EQ(cell.shimmy, r.metrics.shimmy);
+  // More torsional damping never makes the coupled gear less stable at the same speed.
+  for (int i = 0; i < 3; ++i)
+    EXPECT_LT(map.cells[static_cast<std::size_t>(3 + i)].growth_rate_per_s,
+              map.cells[static_cast<std::size_t>(i)].growth_rate_per_s);
+}
