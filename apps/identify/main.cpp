@@ -60,8 +60,8 @@ int run_fit(const std::string& data_path, double radius, std::optional<double> l
             bool speed_inside) {
   IdentificationOptions o;
   o.radius_m = radius;
-  detail::require_positive("--radius", radius);
-  if (load) detail::require_positive("--normal-load", *load);
+  require_positive("--radius", radius);
+  if (load) require_positive("--normal-load", *load);
   o.normal_load_n = load;
   if (!profile_spec.empty()) {
     const ProfileChoice p = load_profile(profile_spec);

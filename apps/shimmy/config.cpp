@@ -170,11 +170,10 @@ ShimmyConfig read_shimmy_config(const std::string& path) {
   walk(j, "");
   try {
     validate(c.gear);
-    detail::require_positive("solver.relative_tolerance", c.solver.relative_tolerance);
-    detail::require_positive("solver.output_interval_s", c.solver.output_interval_s);
-    detail::require_positive("shimmy.amplitude_threshold_rad", c.criterion.amplitude_threshold_rad);
-    detail::require_finite("shimmy.sustained_growth_rate_per_s",
-                           c.criterion.sustained_growth_rate_per_s);
+    require_positive("solver.relative_tolerance", c.solver.relative_tolerance);
+    require_positive("solver.output_interval_s", c.solver.output_interval_s);
+    require_positive("shimmy.amplitude_threshold_rad", c.criterion.amplitude_threshold_rad);
+    require_finite("shimmy.sustained_growth_rate_per_s", c.criterion.sustained_growth_rate_per_s);
   } catch (const InvalidArgument& e) {
     r.fail_at_key(e.parameter(), e.what(), false);
   }

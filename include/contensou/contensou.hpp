@@ -1,15 +1,8 @@
-// contensou: coupled sliding-spinning dry friction over a contact patch. Umbrella header.
+// contensou: coupled sliding-spinning dry friction over a contact patch.
+// The dependency-free core (Eigen only): the friction module. Identification (Ceres) and the
+// landing gear (SUNDIALS) have umbrellas of their own: contensou/identification.hpp and
+// contensou/gear.hpp. See docs/architecture.md.
 #pragma once
 
-#include "contensou/friction/contact_patch.hpp"
-#include "contensou/friction/csv.hpp"
-#include "contensou/friction/error.hpp"
-#include "contensou/friction/exact_resultants.hpp"
-#include "contensou/friction/fractional_law.hpp"
-#include "contensou/friction/kinematics.hpp"
-#include "contensou/friction/model_error.hpp"
-#include "contensou/friction/pressure_profile.hpp"
-#include "contensou/friction/quadrature.hpp"
-#include "contensou/gear/landing_gear.hpp"
-#include "contensou/gear/oscillation.hpp"
+#include "contensou/friction.hpp"
 #include "contensou/version.hpp"

@@ -22,22 +22,22 @@ double normal_load(const ContactPatch& patch) {
 }
 
 void validate(const ContactPatch& patch) {
-  detail::require_positive("radius_m", patch.radius_m);
-  detail::require_positive("reference_pressure_pa", patch.reference_pressure_pa);
-  detail::require_non_negative("friction", patch.friction);
-  detail::require_positive("kappa", patch.kappa);
-  detail::require_finite("kx", patch.profile.kx);
-  detail::require_finite("ky", patch.profile.ky);
+  require_positive("radius_m", patch.radius_m);
+  require_positive("reference_pressure_pa", patch.reference_pressure_pa);
+  require_non_negative("friction", patch.friction);
+  require_positive("kappa", patch.kappa);
+  require_finite("kx", patch.profile.kx);
+  require_finite("ky", patch.profile.ky);
   const double k = std::hypot(patch.profile.kx, patch.profile.ky);
   if (!(k < 1.0))
-    throw InvalidArgument("|(kx, ky)|", detail::format_value(k),
+    throw InvalidArgument("|(kx, ky)|", format_value(k),
                           "the pressure shift must be < 1 so that the pressure stays positive");
   if (patch.slip_speed_friction) {
     const auto& s = *patch.slip_speed_friction;
-    detail::require_non_negative("slip_speed_friction.static_coefficient", s.static_coefficient);
-    detail::require_non_negative("slip_speed_friction.kinetic_coefficient", s.kinetic_coefficient);
-    detail::require_positive("slip_speed_friction.reference_speed", s.reference_speed);
-    detail::require_positive("slip_speed_friction.exponent", s.exponent);
+    require_non_negative("slip_speed_friction.static_coefficient", s.static_coefficient);
+    require_non_negative("slip_speed_friction.kinetic_coefficient", s.kinetic_coefficient);
+    require_positive("slip_speed_friction.reference_speed", s.reference_speed);
+    require_positive("slip_speed_friction.exponent", s.exponent);
   }
 }
 

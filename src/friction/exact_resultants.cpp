@@ -67,8 +67,8 @@ ChebyshevFit fit_chebyshev(const std::function<double(double)>& q, double tol) {
 
 ExactModel<double> make_exact_model(const ContactPatch& patch, double representation_tolerance) {
   if (!(representation_tolerance > 0.0 && representation_tolerance < 1e-3))
-    throw InvalidArgument("representation_tolerance",
-                          detail::format_value(representation_tolerance), "must lie in (0, 1e-3)");
+    throw InvalidArgument("representation_tolerance", format_value(representation_tolerance),
+                          "must lie in (0, 1e-3)");
   validate(patch);
   ExactModel<double> m;
   const PressureProfile& prof = patch.profile;

@@ -10,18 +10,18 @@
 namespace contensou {
 
 void validate(const FractionalLaw<double>& p) {
-  detail::require_non_negative("F0", p.F0);
-  detail::require_non_negative("M0", p.M0);
-  detail::require_positive("a", p.a);
-  detail::require_positive("m", p.m);
-  detail::require_positive("c", p.c);
-  detail::require_positive("a_k", p.a_k);
-  detail::require_positive("kappa", p.kappa);
-  detail::require_finite("kx", p.kx);
-  detail::require_finite("ky", p.ky);
-  detail::require_non_negative("Mk", p.Mk);
-  detail::require_positive("radius", p.radius);
-  detail::require_positive("regularization_speed", p.regularization_speed);
+  require_non_negative("F0", p.F0);
+  require_non_negative("M0", p.M0);
+  require_positive("a", p.a);
+  require_positive("m", p.m);
+  require_positive("c", p.c);
+  require_positive("a_k", p.a_k);
+  require_positive("kappa", p.kappa);
+  require_finite("kx", p.kx);
+  require_finite("ky", p.ky);
+  require_non_negative("Mk", p.Mk);
+  require_positive("radius", p.radius);
+  require_positive("regularization_speed", p.regularization_speed);
 }
 
 FractionalWithJacobian fractional_resultants_with_jacobian(const FractionalLaw<double>& p,
@@ -186,9 +186,9 @@ FractionalLaw<double> fractional_law_from_patch(const ContactPatch& patch) {
 
 FractionalLaw<double> fractional_law_fitted(const ContactPatch& patch, double psi_min,
                                             double psi_max, int n) {
-  detail::require_positive("psi_min", psi_min);
+  require_positive("psi_min", psi_min);
   if (!(psi_max > psi_min))
-    throw InvalidArgument("psi_max", detail::format_value(psi_max), "must exceed psi_min");
+    throw InvalidArgument("psi_max", format_value(psi_max), "must exceed psi_min");
   if (n < 3) throw InvalidArgument("n", std::to_string(n), "need at least 3 ratios");
   FractionalLaw<double> law = fractional_law_from_patch(patch);
   ContactPatch iso = patch;

@@ -10,9 +10,9 @@ namespace contensou {
 
 ModelErrorReport model_error_report(const ContactPatch& patch, double psi_min, double psi_max,
                                     int points) {
-  detail::require_positive("psi_min", psi_min);
+  require_positive("psi_min", psi_min);
   if (!(psi_max > psi_min))
-    throw InvalidArgument("psi_max", detail::format_value(psi_max), "must exceed psi_min");
+    throw InvalidArgument("psi_max", format_value(psi_max), "must exceed psi_min");
   if (points < 2) throw InvalidArgument("points", std::to_string(points), "need at least 2");
   ModelErrorReport report;
   report.psi_min = psi_min;

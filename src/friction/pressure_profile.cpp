@@ -187,10 +187,10 @@ PressureProfile hertz_profile() {
 }
 
 PressureProfile cosine_series_profile(double w, std::vector<double> a) {
-  detail::require_positive("w", w);
+  require_positive("w", w);
   if (a.empty()) throw InvalidArgument("a", "[]", "cosine series needs at least one coefficient");
   for (std::size_t k = 0; k < a.size(); ++k)
-    detail::require_finite(("a[" + std::to_string(k) + "]").c_str(), a[k]);
+    require_finite(("a[" + std::to_string(k) + "]").c_str(), a[k]);
   PressureProfile p;
   p.shape = CosineSeriesShape{w, std::move(a)};
   return p;
@@ -205,17 +205,17 @@ PressureProfile tabulated_profile(std::vector<double> rho, std::vector<double> p
                           "must have as many values as rho (" + std::to_string(rho.size()) + ")");
   for (std::size_t k = 0; k < rho.size(); ++k) {
     const std::string name = "rho[" + std::to_string(k) + "]";
-    detail::require_finite(name.c_str(), rho[k]);
-    detail::require_finite(("p[" + std::to_string(k) + "]").c_str(), p[k]);
+    require_finite(name.c_str(), rho[k]);
+    require_finite(("p[" + std::to_string(k) + "]").c_str(), p[k]);
     if (rho[k] < 0.0 || rho[k] > 1.0 + 1e-12)
-      throw InvalidArgument(name, detail::format_value(rho[k]), "must lie in [0, 1]");
+      throw InvalidArgument(name, format_value(rho[k]), "must lie in [0, 1]");
     if (k > 0 && !(rho[k] > rho[k - 1]))
       throw InvalidArgument(
-          name, detail::format_value(rho[k]),
-          "rho must be strictly increasing (previous " + detail::format_value(rho[k - 1]) + ")");
+          name, format_value(rho[k]),
+          "rho must be strictly increasing (previous " + format_value(rho[k - 1]) + ")");
   }
   if (rho.back() < 1.0 - 1e-9)
-    throw InvalidArgument("rho[last]", detail::format_value(rho.back()),
+    throw InvalidArgument("rho[last]", format_value(rho.back()),
                           "a tabulated profile must reach the rim, rho = 1");
   rho.back() = 1.0;
   TabulatedShape t;
@@ -245,10 +245,10 @@ MeasuredProfile read_profile_csv(const std::string& path) {
     const double r = *row.cells[ir];
     if (r < 0.0 || r > 1.0 + 1e-12)
       throw ParseError(path, row.line, row.columns[ir],
-                       "rho = " + detail::format_value(r) + " outside [0, 1]");
+                       "rho = " + format_value(r) + " outside [0, 1]");
     if (!rho.empty() && !(r > rho.back()))
       throw ParseError(path, row.line, row.columns[ir],
-                       "rho = " + detail::format_value(r) + " not increasing");
+                       "rho = " + format_value(r) + " not increasing");
     rho.push_back(r);
     p.push_back(*row.cells[ip]);
   }

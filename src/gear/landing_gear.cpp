@@ -32,8 +32,6 @@ ContactModel contact_model_from_string(const std::string& name) {
 }
 
 void validate(const GearConfig& c) {
-  using detail::require_finite;
-  using detail::require_positive;
   const GearStructure& g = c.structure;
   require_positive("structure.lateral_mass_kg", g.lateral_mass_kg);
   require_positive("structure.lateral_stiffness_n_per_m", g.lateral_stiffness_n_per_m);
@@ -50,7 +48,7 @@ void validate(const GearConfig& c) {
   require_positive("tire.inflation_pressure_pa", t.inflation_pressure_pa);
   require_finite("tire.rolling_shift", t.rolling_shift);
   if (std::abs(t.rolling_shift) >= 1.0)
-    throw InvalidArgument("tire.rolling_shift", detail::format_value(t.rolling_shift),
+    throw InvalidArgument("tire.rolling_shift", format_value(t.rolling_shift),
                           "must lie in (-1, 1) so that the pressure stays positive");
   require_positive("tire.friction.static_coefficient", t.friction.static_coefficient);
   require_positive("tire.friction.kinetic_coefficient", t.friction.kinetic_coefficient);
@@ -74,10 +72,10 @@ void validate(const GearConfig& c) {
   require_finite("scenario.drift_speed_mps", s.drift_speed_mps);
   require_positive("scenario.static_load_n", s.static_load_n);
   if (!(s.touchdown_time_s >= 0.0))
-    throw InvalidArgument("scenario.touchdown_time_s", detail::format_value(s.touchdown_time_s),
+    throw InvalidArgument("scenario.touchdown_time_s", format_value(s.touchdown_time_s),
                           "must be >= 0");
   if (!(s.touchdown_time_s < 1e6))
-    throw InvalidArgument("scenario.touchdown_time_s", detail::format_value(s.touchdown_time_s),
+    throw InvalidArgument("scenario.touchdown_time_s", format_value(s.touchdown_time_s),
                           "must be finite");
   require_positive("scenario.load_ramp_s", s.load_ramp_s);
   require_positive("scenario.end_time_s", s.end_time_s);
@@ -85,15 +83,15 @@ void validate(const GearConfig& c) {
   require_finite("scenario.initial_lateral_m", s.initial_lateral_m);
   require_positive("scenario.rolling_slip", s.rolling_slip);
   if (!(s.sliding_slip > s.rolling_slip && s.sliding_slip < 1.0))
-    throw InvalidArgument("scenario.sliding_slip", detail::format_value(s.sliding_slip),
+    throw InvalidArgument("scenario.sliding_slip", format_value(s.sliding_slip),
                           "must lie between rolling_slip and 1");
   if (s.braking) {
     if (!(s.brake_off_s > s.brake_on_s && s.brake_on_s >= 0.0))
-      throw InvalidArgument("scenario.brake_off_s", detail::format_value(s.brake_off_s),
+      throw InvalidArgument("scenario.brake_off_s", format_value(s.brake_off_s),
                             "must come after brake_on_s >= 0");
     require_positive("scenario.brake_max_torque_nm", s.brake_max_torque_nm);
     if (!(s.brake_target_slip > 0.0 && s.brake_target_slip < 1.0))
-      throw InvalidArgument("scenario.brake_target_slip", detail::format_value(s.brake_target_slip),
+      throw InvalidArgument("scenario.brake_target_slip", format_value(s.brake_target_slip),
                             "must lie in (0, 1)");
     require_positive("scenario.brake_slip_band", s.brake_slip_band);
   }

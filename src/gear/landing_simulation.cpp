@@ -116,8 +116,8 @@ LandingRun simulate_landing(const GearModel& model, const SolverOptions& options
                             const ShimmyCriterion& criterion) {
   const auto clock_start = std::chrono::steady_clock::now();
   validate(model.config);
-  detail::require_positive("solver.relative_tolerance", options.relative_tolerance);
-  detail::require_positive("solver.output_interval_s", options.output_interval_s);
+  require_positive("solver.relative_tolerance", options.relative_tolerance);
+  require_positive("solver.output_interval_s", options.output_interval_s);
   if (options.max_steps < 1)
     throw InvalidArgument("solver.max_steps", std::to_string(options.max_steps), "must be >= 1");
   const LandingScenario& s = model.config.scenario;

@@ -20,8 +20,8 @@ StabilityMap stability_map(const GearModel& base, const MapAxis& x, const MapAxi
       throw InvalidArgument("map parameter", a->parameter, "is not a gear parameter");
     if (a->points < 1 || a->points > 10000)
       throw InvalidArgument("map points", std::to_string(a->points), "must lie in 1..10000");
-    detail::require_finite("map from", a->from);
-    detail::require_finite("map to", a->to);
+    require_finite("map from", a->from);
+    require_finite("map to", a->to);
   }
   StabilityMap map{x, y, base.contact, {}};
   const int total = x.points * y.points;

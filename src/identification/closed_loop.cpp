@@ -55,8 +55,6 @@ std::vector<Candidate> catalogue(const MeasuredData& data, const ModelSpec& s) {
   return out;
 }
 
-// Score (LM) statistic of column j given the free columns of the current fit:
-// (z' r)^2 / (z' (I - P_A) z) / s^2, chi-square with 1 dof under the null.
 // The columns of a full Jacobian (all kModelParameters) that belong to the free parameters.
 Eigen::MatrixXd free_columns(const Eigen::MatrixXd& J, const ModelSpec& s) {
   std::vector<int> cols;
@@ -68,6 +66,8 @@ Eigen::MatrixXd free_columns(const Eigen::MatrixXd& J, const ModelSpec& s) {
   return A;
 }
 
+// Score (LM) statistic of column j given the free columns A of the current fit:
+// (z' r)^2 / (z' (I - P_A) z) / s^2, chi-square with 1 dof under the null.
 double lm_statistic(const Eigen::VectorXd& r, const Eigen::MatrixXd& J, const ModelSpec& s, int j) {
   const Eigen::MatrixXd A = free_columns(J, s);
   const Eigen::VectorXd z = J.col(j);
@@ -133,153 +133,147 @@ void say(const ClosedLoopOptions& o, const std::string& line) {
   if (o.progress) o.progress(line);
 }
 
-}  // namespace
-
-ClosedLoopReport close_the_loop(const MeasuredData& data, const IdentificationOptions& options,
-                                const ClosedLoopOptions& loop) {
-  ClosedLoopReport report;
-  ModelSpec spec = base_spec_for(data, options);
-  const NoiseSettings noise = noise_settings_for(options);
+// The model the loop stands on: its spec, its estimate and its fit.
+struct LoopState {
+  ModelSpec spec;
   std::array<double, K> theta{};
-  say(loop, "fitting the base law");
-  FitReport fit = fit_model(data, spec, noise, &theta);
-  spec.value = theta;
-  report.base = fit;
-  for (int step = 1; step <= loop.max_steps; ++step) {
-    std::vector<Candidate> cands = catalogue(data, spec);
-    if (cands.empty()) break;
-    say(loop, "step " + std::to_string(step) + ": scoring " + std::to_string(cands.size()) +
-                  " candidate effects");
-    // One Jacobian at the null of every candidate (shape needs the exact integrals).
-    ModelSpec scoring = spec;
-    const bool score_shape = !spec.uses_exact();
-    if (score_shape) scoring.free[kShapeBlend] = true;  // lambda = 0: exact part evaluated
-    Eigen::VectorXd r;
-    Eigen::MatrixXd J;
-    weighted_jacobian(data, scoring, theta, fit.noise_scale, noise.model, &r, &J);
-    std::vector<CandidateScore> scores;
-    const std::vector<double> grid = speed_grid(data, spec.radius_m);
-    double best_speed_ref = grid[grid.size() / 2];
-    for (const Candidate& c : cands) {
-      CandidateScore sc{c.effect, c.detail, 0.0, 1.0};
-      if (c.scan_speed) {
-        // Score beta at each w_s of the scan; Bonferroni over the scan.
-        ModelSpec sp = spec;
-        sp.speed_in_exact = loop.speed_inside_integrals && spec.uses_exact();
-        double best = 0.0;
-        for (double w : grid) {
-          std::array<double, K> th = theta;
-          th[kSpeedRef] = w;
-          Eigen::VectorXd rs;
-          Eigen::MatrixXd Js;
-          weighted_jacobian(data, sp, th, fit.noise_scale, noise.model, &rs, &Js);
-          const double lm = lm_statistic(rs, Js, spec, kSpeedDrop);
-          if (lm > best) {
-            best = lm;
-            best_speed_ref = w;
-          }
+  FitReport fit;
+};
+
+// f(w) at the local slip speed inside the integrals when asked for and when the model has a
+// speed dependence and the exact integrals.
+void set_speed_inside(ModelSpec& s, const ClosedLoopOptions& loop) {
+  s.speed_in_exact = loop.speed_inside_integrals && s.uses_exact() &&
+                     (s.free[kSpeedDrop] || s.value[kSpeedDrop] != 0.0);
+}
+
+LoopState fit_state(const MeasuredData& data, ModelSpec spec, const NoiseSettings& noise) {
+  LoopState st;
+  st.fit = fit_model(data, spec, noise, &st.theta);
+  spec.value = st.theta;
+  st.spec = spec;
+  return st;
+}
+
+// Score step: the score statistic of every candidate at its null, from one Jacobian of the
+// current fit (with the shape blend's column evaluated at lambda = 0). speed_dependence is
+// scored at each w_s of a scan (Bonferroni over the scan); *best_speed_ref gets the best w_s.
+std::vector<CandidateScore> score_candidates(const MeasuredData& data, const LoopState& st,
+                                             const std::vector<Candidate>& cands,
+                                             NoiseModel noise_model, const ClosedLoopOptions& loop,
+                                             double* best_speed_ref) {
+  ModelSpec scoring = st.spec;
+  if (!st.spec.uses_exact()) scoring.free[kShapeBlend] = true;
+  Eigen::VectorXd r;
+  Eigen::MatrixXd J;
+  weighted_jacobian(data, scoring, st.theta, st.fit.noise_scale, noise_model, &r, &J);
+  const std::vector<double> grid = speed_grid(data, st.spec.radius_m);
+  *best_speed_ref = grid[grid.size() / 2];
+  std::vector<CandidateScore> scores;
+  for (const Candidate& c : cands) {
+    CandidateScore sc{c.effect, c.detail, 0.0, 1.0};
+    if (c.scan_speed) {
+      ModelSpec sp = st.spec;
+      sp.speed_in_exact = loop.speed_inside_integrals && st.spec.uses_exact();
+      double best = 0.0;
+      for (double w : grid) {
+        std::array<double, K> th = st.theta;
+        th[kSpeedRef] = w;
+        Eigen::VectorXd rs;
+        Eigen::MatrixXd Js;
+        weighted_jacobian(data, sp, th, st.fit.noise_scale, noise_model, &rs, &Js);
+        const double lm = lm_statistic(rs, Js, st.spec, kSpeedDrop);
+        if (lm > best) {
+          best = lm;
+          *best_speed_ref = w;
         }
-        sc.statistic = best;
-        sc.p_value = std::min(1.0, chi2_survival(best, 1.0) * static_cast<double>(grid.size()));
-      } else {
-        sc.statistic = lm_statistic(r, J, spec, c.scored);
-        sc.p_value = chi2_survival(sc.statistic, 1.0);
       }
-      scores.push_back(sc);
+      sc.statistic = best;
+      sc.p_value = std::min(1.0, chi2_survival(best, 1.0) * static_cast<double>(grid.size()));
+    } else {
+      sc.statistic = lm_statistic(r, J, st.spec, c.scored);
+      sc.p_value = chi2_survival(sc.statistic, 1.0);
     }
-    std::vector<std::size_t> order(cands.size());
-    for (std::size_t i = 0; i < order.size(); ++i) order[i] = i;
-    std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) {
-      return scores[a].p_value < scores[b].p_value;
-    });
-    std::vector<CandidateScore> sorted;
-    for (std::size_t i : order) sorted.push_back(scores[i]);
-    const double threshold = loop.alpha / static_cast<double>(cands.size());
-    // Try the candidates in order of significance: the first that passes all three tests is
-    // accepted; those whose score is not significant are not fitted (the top one always is).
-    bool accepted_any = false;
-    for (std::size_t rank = 0; rank < order.size(); ++rank) {
-      if (rank > 0 && sorted[rank].p_value >= threshold) break;
-      const Candidate& best = cands[order[rank]];
-      LoopStep trial;
-      trial.scores = sorted;
-      trial.effect = best.effect;
-      trial.detail = best.detail;
-      say(loop, "step " + std::to_string(step) + ": fitting " + best.effect +
-                    (best.detail.empty() ? "" : " (" + best.detail + ")"));
-      // Fit the extension. For shape, the blend's end point lambda = 1: the exact integrals
-      // alone (the law's a, M0, m drop out). LR(exact vs law) is a lower bound of LR(blend vs
-      // law), so testing it with the blend's degrees of freedom is conservative, and the fit
-      // avoids the blend's degeneracy near lambda = 1.
-      ModelSpec ext = spec;
-      for (int p : best.parameters) ext.free[p] = true;
-      if (best.effect == "shape") {
-        ext.exact_only = true;
-        for (int p : {kA, kM0, kMShape, kShapeBlend}) ext.free[p] = false;
-        ext.value[kShapeBlend] = 1.0;
-      }
-      if (best.scan_speed) {
-        ext.value[kSpeedRef] = best_speed_ref;
-        ext.value[kSpeedDrop] = 0.05;
-      }
-      ext.speed_in_exact = loop.speed_inside_integrals && ext.uses_exact() &&
-                           (ext.free[kSpeedDrop] || ext.value[kSpeedDrop] != 0.0);
-      std::array<double, K> theta_ext{};
-      FitReport fit_ext = fit_model(data, ext, noise, &theta_ext);
-      ext.value = theta_ext;
-      const int q = static_cast<int>(best.parameters.size());
-      trial.lr = std::max(0.0, fit.m2ll - fit_ext.m2ll);
-      trial.lr_dof = q;
-      trial.lr_p_value = chi2_survival(trial.lr, q);
-      trial.threshold = threshold;
-      trial.bic_before = fit.bic;
-      trial.bic_after = fit_ext.bic;
-      trial.cv_before = cv_error(data, spec, theta, fit.noise_scale, noise.model, loop.folds);
-      trial.cv_after = cv_error(data, ext, theta_ext, fit.noise_scale, noise.model, loop.folds);
-      const bool lr_ok = trial.lr_p_value < trial.threshold;
-      const bool bic_ok = trial.bic_after < trial.bic_before;
-      const bool cv_ok = trial.cv_after < trial.cv_before;
-      trial.accepted = lr_ok && bic_ok && cv_ok;
-      trial.verdict =
-          std::string(lr_ok ? "LR significant" : "LR not significant") +
-          (bic_ok ? ", BIC improves" : ", BIC does not improve") +
-          (cv_ok ? ", cross-validated error improves" : ", cross-validated error does not improve");
-      if (best.effect == "shape") trial.verdict += "; the exact integrals replace the law";
-      trial.error_before = fit.error;
-      trial.channels_before = fit.channels;
-      trial.fit_before = fit;
-      for (const ParameterEstimate& e : fit_ext.parameters)
-        for (int p : best.parameters)
-          if (e.name == parameter_info(p).name) trial.parameters.push_back(e);
-      if (best.effect == "shape") {  // the blend at its end point: the exact integrals alone
-        ParameterEstimate blend;
-        blend.name = parameter_info(kShapeBlend).name;
-        blend.unit = parameter_info(kShapeBlend).unit;
-        blend.value = 1.0;
-        blend.fixed = true;
-        blend.determined = false;
-        trial.parameters.insert(trial.parameters.begin(), blend);
-      }
-      trial.error_after = fit_ext.error;
-      trial.channels_after = fit_ext.channels;
-      trial.fit_after = fit_ext;
-      say(loop, "step " + std::to_string(step) + ": " + best.effect +
-                    (trial.accepted ? " accepted" : " rejected") + " (" + trial.verdict + ")");
-      report.steps.push_back(trial);
-      if (trial.accepted) {
-        report.accepted_effects.push_back(best.effect);
-        spec = ext;
-        theta = theta_ext;
-        fit = fit_ext;
-        accepted_any = true;
-        break;
-      }
-    }
-    if (!accepted_any) break;
+    scores.push_back(sc);
   }
-  // Backward pass: an effect accepted early may stand in for ones found later. Refit without
-  // each accepted effect (shape excepted) and remove it if it is no longer significant at
-  // alpha / (number accepted) or BIC prefers the model without it; repeat until none goes.
+  return scores;
+}
+
+// The current model extended by a candidate effect. For shape, the blend's end point
+// lambda = 1: the exact integrals alone (the law's a, M0, m drop out). LR(exact vs law) is a
+// lower bound of LR(blend vs law), so testing it with the blend's degrees of freedom is
+// conservative, and the fit avoids the blend's degeneracy near lambda = 1.
+ModelSpec extend(const ModelSpec& spec, const Candidate& c, double speed_ref,
+                 const ClosedLoopOptions& loop) {
+  ModelSpec ext = spec;
+  for (int p : c.parameters) ext.free[p] = true;
+  if (c.effect == "shape") {
+    ext.exact_only = true;
+    for (int p : {kA, kM0, kMShape, kShapeBlend}) ext.free[p] = false;
+    ext.value[kShapeBlend] = 1.0;
+  }
+  if (c.scan_speed) {
+    ext.value[kSpeedRef] = speed_ref;
+    ext.value[kSpeedDrop] = 0.05;
+  }
+  set_speed_inside(ext, loop);
+  return ext;
+}
+
+// Test step: the extension against the current model by (1) the likelihood-ratio test at
+// `threshold`, (2) BIC and (3) the cross-validated error; accepted when all three agree.
+LoopStep test_extension(const MeasuredData& data, const LoopState& cur, const LoopState& ext,
+                        const Candidate& c, double threshold, NoiseModel noise_model,
+                        const ClosedLoopOptions& loop) {
+  LoopStep trial;
+  trial.effect = c.effect;
+  trial.detail = c.detail;
+  const int q = static_cast<int>(c.parameters.size());
+  trial.lr = std::max(0.0, cur.fit.m2ll - ext.fit.m2ll);
+  trial.lr_dof = q;
+  trial.lr_p_value = chi2_survival(trial.lr, q);
+  trial.threshold = threshold;
+  trial.bic_before = cur.fit.bic;
+  trial.bic_after = ext.fit.bic;
+  trial.cv_before =
+      cv_error(data, cur.spec, cur.theta, cur.fit.noise_scale, noise_model, loop.folds);
+  trial.cv_after =
+      cv_error(data, ext.spec, ext.theta, cur.fit.noise_scale, noise_model, loop.folds);
+  const bool lr_ok = trial.lr_p_value < trial.threshold;
+  const bool bic_ok = trial.bic_after < trial.bic_before;
+  const bool cv_ok = trial.cv_after < trial.cv_before;
+  trial.accepted = lr_ok && bic_ok && cv_ok;
+  trial.verdict =
+      std::string(lr_ok ? "LR significant" : "LR not significant") +
+      (bic_ok ? ", BIC improves" : ", BIC does not improve") +
+      (cv_ok ? ", cross-validated error improves" : ", cross-validated error does not improve");
+  if (c.effect == "shape") trial.verdict += "; the exact integrals replace the law";
+  trial.error_before = cur.fit.error;
+  trial.channels_before = cur.fit.channels;
+  trial.fit_before = cur.fit;
+  for (const ParameterEstimate& e : ext.fit.parameters)
+    for (int p : c.parameters)
+      if (e.name == parameter_info(p).name) trial.parameters.push_back(e);
+  if (c.effect == "shape") {  // the blend at its end point: the exact integrals alone
+    ParameterEstimate blend;
+    blend.name = parameter_info(kShapeBlend).name;
+    blend.unit = parameter_info(kShapeBlend).unit;
+    blend.value = 1.0;
+    blend.fixed = true;
+    blend.determined = false;
+    trial.parameters.insert(trial.parameters.begin(), blend);
+  }
+  trial.error_after = ext.fit.error;
+  trial.channels_after = ext.fit.channels;
+  trial.fit_after = ext.fit;
+  return trial;
+}
+
+// Backward pass: an effect accepted early may stand in for ones found later. Refit without
+// each accepted effect (shape excepted) and remove it if it is no longer significant at
+// alpha / (number accepted) or BIC prefers the model without it; repeat until none goes.
+void prune(const MeasuredData& data, const NoiseSettings& noise, const ClosedLoopOptions& loop,
+           LoopState& st, ClosedLoopReport& report) {
   bool removed = true;
   while (removed && report.accepted_effects.size() > 1) {
     removed = false;
@@ -287,29 +281,24 @@ ClosedLoopReport close_the_loop(const MeasuredData& data, const IdentificationOp
     for (std::size_t k = 0; k < report.steps.size() && !removed; ++k) {
       LoopStep& acc = report.steps[k];
       if (!acc.accepted || acc.effect == "shape" || acc.removed) continue;
-      ModelSpec without = spec;
+      ModelSpec without = st.spec;
       for (const ParameterEstimate& e : acc.parameters) {
         const int i = parameter_index_by_name(e.name);
         if (i < 0) continue;
         without.free[i] = false;
         without.value[i] = parameter_info(i).null_value;
       }
-      without.speed_in_exact = loop.speed_inside_integrals && without.uses_exact() &&
-                               (without.free[kSpeedDrop] || without.value[kSpeedDrop] != 0.0);
+      set_speed_inside(without, loop);
       say(loop, "backward: refitting without " + acc.effect);
-      std::array<double, K> theta_wo{};
-      FitReport fit_wo = fit_model(data, without, noise, &theta_wo);
-      const double lr = std::max(0.0, fit_wo.m2ll - fit.m2ll);
+      const LoopState wo = fit_state(data, without, noise);
+      const double lr = std::max(0.0, wo.fit.m2ll - st.fit.m2ll);
       const double p = chi2_survival(lr, static_cast<double>(acc.parameters.size()));
-      if (p >= threshold || fit_wo.bic < fit.bic) {
+      if (p >= threshold || wo.fit.bic < st.fit.bic) {
         acc.removed = true;
         acc.verdict += "; removed in the backward pass (without it: LR p = " + std::to_string(p) +
-                       ", BIC " + std::to_string(fit_wo.bic) + " vs " + std::to_string(fit.bic) +
+                       ", BIC " + std::to_string(wo.fit.bic) + " vs " + std::to_string(st.fit.bic) +
                        ")";
-        without.value = theta_wo;
-        spec = without;
-        theta = theta_wo;
-        fit = fit_wo;
+        st = wo;
         const auto it =
             std::find(report.accepted_effects.begin(), report.accepted_effects.end(), acc.effect);
         if (it != report.accepted_effects.end()) report.accepted_effects.erase(it);
@@ -318,9 +307,64 @@ ClosedLoopReport close_the_loop(const MeasuredData& data, const IdentificationOp
       }
     }
   }
-  report.final_fit = fit;
-  report.final_spec = spec;
-  report.structure_remains = !fit.residual_white;
+}
+
+std::string step_label(int step) {
+  return "step " + std::to_string(step) + ": ";
+}
+
+}  // namespace
+
+// The loop of the header: base fit; then per step score, rank, fit and test the candidates
+// (the first that passes is accepted); then prune.
+ClosedLoopReport close_the_loop(const MeasuredData& data, const IdentificationOptions& options,
+                                const ClosedLoopOptions& loop) {
+  ClosedLoopReport report;
+  const NoiseSettings noise = noise_settings_for(options);
+  say(loop, "fitting the base law");
+  LoopState st = fit_state(data, base_spec_for(data, options), noise);
+  report.base = st.fit;
+  for (int step = 1; step <= loop.max_steps; ++step) {
+    const std::vector<Candidate> cands = catalogue(data, st.spec);
+    if (cands.empty()) break;
+    say(loop, step_label(step) + "scoring " + std::to_string(cands.size()) + " candidate effects");
+    double speed_ref = 0.0;
+    const std::vector<CandidateScore> scores =
+        score_candidates(data, st, cands, noise.model, loop, &speed_ref);
+    std::vector<std::size_t> order(cands.size());
+    for (std::size_t i = 0; i < order.size(); ++i) order[i] = i;
+    std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) {
+      return scores[a].p_value < scores[b].p_value;
+    });
+    std::vector<CandidateScore> sorted;
+    for (std::size_t i : order) sorted.push_back(scores[i]);
+    const double threshold = loop.alpha / static_cast<double>(cands.size());
+    // Candidates in order of significance: the most significant is always fitted, the others
+    // while their score is significant; the first that passes the tests is accepted.
+    bool accepted_any = false;
+    for (std::size_t rank = 0; rank < order.size() && !accepted_any; ++rank) {
+      if (rank > 0 && sorted[rank].p_value >= threshold) break;
+      const Candidate& c = cands[order[rank]];
+      say(loop, step_label(step) + "fitting " + c.effect +
+                    (c.detail.empty() ? "" : " (" + c.detail + ")"));
+      const LoopState ext = fit_state(data, extend(st.spec, c, speed_ref, loop), noise);
+      LoopStep trial = test_extension(data, st, ext, c, threshold, noise.model, loop);
+      trial.scores = sorted;
+      say(loop, step_label(step) + c.effect + (trial.accepted ? " accepted" : " rejected") + " (" +
+                    trial.verdict + ")");
+      report.steps.push_back(trial);
+      if (trial.accepted) {
+        report.accepted_effects.push_back(c.effect);
+        st = ext;
+        accepted_any = true;
+      }
+    }
+    if (!accepted_any) break;
+  }
+  prune(data, noise, loop, st, report);
+  report.final_fit = st.fit;
+  report.final_spec = st.spec;
+  report.structure_remains = !st.fit.residual_white;
   return report;
 }
 

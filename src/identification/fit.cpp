@@ -8,6 +8,7 @@
 #include <memory>
 #include <numbers>
 #include <numeric>
+#include <optional>
 
 #include "contensou/friction/error.hpp"
 #include "contensou/identification/effect_model.hpp"
@@ -154,8 +155,8 @@ bool reported(const ModelSpec& s, int i) {
 }  // namespace
 
 ModelSpec base_spec_for(const MeasuredData& data, const IdentificationOptions& o) {
-  detail::require_positive("radius", o.radius_m);
-  if (o.normal_load_n) detail::require_positive("normal load", *o.normal_load_n);
+  require_positive("radius", o.radius_m);
+  if (o.normal_load_n) require_positive("normal load", *o.normal_load_n);
   ModelSpec s = base_model_spec(o.radius_m, o.normal_load_n);
   s.regularization_speed = o.regularization_speed;
   if (o.profile) {
@@ -188,7 +189,7 @@ ModelSpec base_spec_for(const MeasuredData& data, const IdentificationOptions& o
     const int i = parameter_index_by_name(name);
     if (i < 0 || i > kKx)
       throw InvalidArgument("fix", name, "unknown parameter (use F0_N, a, M0_Nm, m or kx)");
-    detail::require_finite(name.c_str(), value);
+    require_finite(name.c_str(), value);
     s.free[i] = false;
     s.value[i] = value;
   }
@@ -275,55 +276,116 @@ std::vector<ChannelDiagnostics> residual_diagnostics(const MeasuredData& data,
   return out;
 }
 
-FitReport fit_model(const MeasuredData& data, const ModelSpec& spec, const NoiseSettings& noise,
-                    std::array<double, K>* estimate, const std::vector<char>& use) {
-  detail::require_positive("radius", spec.radius_m);
-  auto used = [&](std::size_t i) { return use.empty() || use[i]; };
-  std::array<int, kChannels> counts{};
-  int n = 0;
+namespace {
+
+// What a fit works on: the used points, the measured values per channel, the active (free)
+// parameters and the start values the inactive ones are held at. Ceres' cost functions point
+// into it, so it outlives the problem.
+struct FitSetup {
+  FitSetup(const MeasuredData& d, const ModelSpec& sp, const NoiseSettings& ns,
+           const std::vector<char>& u)
+      : data(d), spec(sp), noise(ns), use(u) {}
+  const MeasuredData& data;
+  const ModelSpec& spec;
+  const NoiseSettings& noise;
+  const std::vector<char>& use;
+  std::array<int, kChannels> counts{};  // measured values per channel
+  int n = 0;                            // measured values in all
+  int p_free = 0;
+  std::array<double, kChannels> peak{};       // largest |y| per channel
+  std::array<double, kChannels> floor_rel{};  // 5 % of the peak: floor of relative noise
+  std::vector<int> active;                    // free parameters, in index order
+  std::array<double, K> theta_const{};        // values of the others
+
+  bool used(std::size_t i) const { return use.empty() || use[i]; }
+};
+
+FitSetup prepare_fit(const MeasuredData& data, const ModelSpec& spec, const NoiseSettings& noise,
+                     const std::vector<char>& use) {
+  require_positive("radius", spec.radius_m);
+  FitSetup s(data, spec, noise, use);
   for (std::size_t i = 0; i < data.points.size(); ++i)
-    if (used(i))
-      for (int c = 0; c < kChannels; ++c) counts[c] += data.points[i].force[c].has_value();
-  for (int c = 0; c < kChannels; ++c) n += counts[c];
-  const int p_free = static_cast<int>(std::count(spec.free.begin(), spec.free.end(), true));
-  if (n <= p_free)
+    if (s.used(i))
+      for (int c = 0; c < kChannels; ++c) s.counts[c] += data.points[i].force[c].has_value();
+  for (int c = 0; c < kChannels; ++c) s.n += s.counts[c];
+  s.p_free = static_cast<int>(std::count(spec.free.begin(), spec.free.end(), true));
+  if (s.n <= s.p_free)
     throw InvalidArgument(
-        "data", std::to_string(n) + " measured values",
-        "need more measured values than free parameters (" + std::to_string(p_free) + ")");
-  std::array<double, K> theta = spec.value;
-  std::array<double, kChannels> peak{};
-  for (int c = 0; c < kChannels; ++c) peak[c] = channel_peak(data, c);
+        "data", std::to_string(s.n) + " measured values",
+        "need more measured values than free parameters (" + std::to_string(s.p_free) + ")");
+  for (int c = 0; c < kChannels; ++c) {
+    s.peak[c] = channel_peak(data, c);
+    s.floor_rel[c] = 0.05 * std::max(s.peak[c], 1e-12);
+  }
+  for (int i = 0; i < K; ++i)
+    if (spec.free[i]) s.active.push_back(i);
+  s.theta_const = spec.value;
+  return s;
+}
+
+// A solved problem: the estimate, the noise scales and the predictions at the optimum.
+struct Solution {
+  std::unique_ptr<ceres::Problem> problem;
+  std::vector<double> packed;  // the active parameters (Ceres' parameter block)
+  std::array<double, K> theta{};
+  std::array<double, kChannels> scale{};
+  std::vector<Resultants<double>> prediction;
+  ceres::Solver::Summary summary;
+};
+
+// Start noise scales: the given ones, or 5 % (of the channel's peak for additive noise).
+std::array<double, kChannels> initial_noise_scales(const FitSetup& s) {
   std::array<double, kChannels> scale{};
   for (int c = 0; c < kChannels; ++c)
-    scale[c] = noise.given
-                   ? (*noise.given)[c]
-                   : (noise.model == NoiseModel::relative ? 0.05 : 0.05 * std::max(peak[c], 1e-12));
-  if (noise.given)
+    scale[c] = s.noise.given ? (*s.noise.given)[c]
+                             : (s.noise.model == NoiseModel::relative ? 0.05 : s.floor_rel[c]);
+  if (s.noise.given)
     for (int c = 0; c < kChannels; ++c)
-      if (counts[c] > 0) detail::require_positive("noise scale", scale[c]);
-  std::array<double, kChannels> floor_rel{};
-  for (int c = 0; c < kChannels; ++c) floor_rel[c] = 0.05 * std::max(peak[c], 1e-12);
+      if (s.counts[c] > 0) require_positive("noise scale", scale[c]);
+  return scale;
+}
 
-  std::vector<Resultants<double>> prev;
-  FitReport report;
-  ceres::Solver::Summary summary;
-  const int rounds =
-      noise.given && noise.model == NoiseModel::additive ? 1 : std::max(1, noise.iterations);
-  std::unique_ptr<ceres::Problem> problem;
-  std::vector<int> active;
-  for (int i = 0; i < K; ++i)
-    if (spec.free[i]) active.push_back(i);
-  std::vector<double> packed(active.size());
-  for (std::size_t j = 0; j < active.size(); ++j) packed[j] = theta[active[j]];
-  const std::array<double, K> theta_const = theta;
-  auto unpack = [&] {
-    for (std::size_t j = 0; j < active.size(); ++j) theta[active[j]] = packed[j];
-  };
+// Noise scales from the residual scatter of each channel, s_c^2 = sum e^2 / (n_c (1 - p / n))
+// (e relative to the prediction for relative noise); returns the largest relative change.
+double estimate_noise_scales(const FitSetup& s, const std::vector<Resultants<double>>& prediction,
+                             std::array<double, kChannels>& scale) {
+  double change = 0.0;
+  for (int c = 0; c < kChannels; ++c) {
+    if (s.counts[c] == 0 || s.noise.given) continue;
+    double ss = 0.0;
+    for (std::size_t i = 0; i < s.data.points.size(); ++i) {
+      const auto& y = s.data.points[i].force[c];
+      if (!y || !s.used(i)) continue;
+      double e = *y - prediction[i].vector()(c);
+      if (s.noise.model == NoiseModel::relative)
+        e /= std::max(std::abs(prediction[i].vector()(c)), s.floor_rel[c]);
+      ss += e * e;
+    }
+    const double dof_c = s.counts[c] * (1.0 - static_cast<double>(s.p_free) / s.n);
+    const double s_new = std::sqrt(ss / std::max(dof_c, 1.0));
+    if (s_new > 0.0) {
+      change = std::max(change, std::abs(s_new - scale[c]) / scale[c]);
+      scale[c] = s_new;
+    }
+  }
+  return change;
+}
+
+// Build the problem, solve, estimate the noise scales; repeated (warm-started) until the
+// scales settle, once when they are given and additive.
+Solution solve(const FitSetup& s) {
+  Solution sol;
+  sol.theta = s.spec.value;
+  sol.scale = initial_noise_scales(s);
+  sol.packed.resize(s.active.size());
+  for (std::size_t j = 0; j < s.active.size(); ++j) sol.packed[j] = sol.theta[s.active[j]];
+  const bool fixed_scales = s.noise.given && s.noise.model == NoiseModel::additive;
+  const int rounds = fixed_scales ? 1 : std::max(1, s.noise.iterations);
   for (int round = 0; round < rounds; ++round) {
-    problem = std::make_unique<ceres::Problem>();
-    add_points(*problem, data, spec, active, theta_const, packed.data(), scale, noise.model,
-               floor_rel, prev, use, noise.loss, noise.loss_scale);
-    set_bounds(*problem, packed.data(), active);
+    sol.problem = std::make_unique<ceres::Problem>();
+    add_points(*sol.problem, s.data, s.spec, s.active, s.theta_const, sol.packed.data(), sol.scale,
+               s.noise.model, s.floor_rel, sol.prediction, s.use, s.noise.loss, s.noise.loss_scale);
+    set_bounds(*sol.problem, sol.packed.data(), s.active);
     ceres::Solver::Options opt;
     opt.linear_solver_type = ceres::DENSE_QR;
     opt.max_num_iterations = 200;
@@ -331,108 +393,106 @@ FitReport fit_model(const MeasuredData& data, const ModelSpec& spec, const Noise
     opt.gradient_tolerance = 1e-12;
     opt.parameter_tolerance = 1e-10;
     opt.logging_type = ceres::SILENT;
-    ceres::Solve(opt, problem.get(), &summary);
-    unpack();
-    prev = evaluate_all(spec, theta.data(), data);
-    if (noise.given && noise.model == NoiseModel::additive) break;
-    double change = 0.0;
-    for (int c = 0; c < kChannels; ++c) {
-      if (counts[c] == 0 || noise.given) continue;
-      double ss = 0.0;
-      for (std::size_t i = 0; i < data.points.size(); ++i) {
-        const auto& y = data.points[i].force[c];
-        if (!y || !used(i)) continue;
-        double e = *y - prev[i].vector()(c);
-        if (noise.model == NoiseModel::relative)
-          e /= std::max(std::abs(prev[i].vector()(c)), floor_rel[c]);
-        ss += e * e;
-      }
-      const double dof_c = counts[c] * (1.0 - static_cast<double>(p_free) / n);
-      const double s_new = std::sqrt(ss / std::max(dof_c, 1.0));
-      if (s_new > 0.0) {
-        change = std::max(change, std::abs(s_new - scale[c]) / scale[c]);
-        scale[c] = s_new;
-      }
-    }
+    ceres::Solve(opt, sol.problem.get(), &sol.summary);
+    for (std::size_t j = 0; j < s.active.size(); ++j) sol.theta[s.active[j]] = sol.packed[j];
+    sol.prediction = evaluate_all(s.spec, sol.theta.data(), s.data);
+    if (fixed_scales) break;
+    const double change = estimate_noise_scales(s, sol.prediction, sol.scale);
     if (round > 0 && change < 1e-3) break;
   }
-  report.converged = summary.IsSolutionUsable();
-  report.solver_summary = summary.BriefReport();
+  return sol;
+}
 
-  // Weighted Jacobian at the optimum (tangent space: free parameters only).
+// The weighted Jacobian at the optimum (free parameters only); sets the report's residual
+// count and chi^2.
+Eigen::MatrixXd jacobian_at_optimum(ceres::Problem& problem, FitReport* report) {
   ceres::CRSMatrix crs;
   std::vector<double> residuals;
   double cost = 0.0;
-  problem->Evaluate(ceres::Problem::EvaluateOptions(), &cost, &residuals, nullptr, &crs);
-  const std::vector<int>& free_index = active;
+  problem.Evaluate(ceres::Problem::EvaluateOptions(), &cost, &residuals, nullptr, &crs);
   Eigen::MatrixXd J = Eigen::MatrixXd::Zero(crs.num_rows, crs.num_cols);
   for (int r = 0; r < crs.num_rows; ++r)
     for (int k = crs.rows[r]; k < crs.rows[r + 1]; ++k) J(r, crs.cols[k]) = crs.values[k];
-  report.residuals = static_cast<int>(residuals.size());
-  report.chi2 = 0.0;
-  for (double r : residuals) report.chi2 += r * r;
+  report->residuals = static_cast<int>(residuals.size());
+  report->chi2 = 0.0;
+  for (double r : residuals) report->chi2 += r * r;
+  return J;
+}
 
-  // Parameters the data cannot determine: zero columns or the null space of J.
+// Parameters the data cannot determine: zero columns of J, or a large share in a singular
+// vector of the column-normalised J (singular value below 1e-7 of the largest).
+std::array<bool, K> undetermined_parameters(const Eigen::MatrixXd& J,
+                                            const std::vector<int>& active) {
   std::array<bool, K> undetermined{};
-  if (J.cols() > 0) {
-    Eigen::VectorXd norms = J.colwise().norm();
-    Eigen::MatrixXd Jn = J;
+  if (J.cols() == 0) return undetermined;
+  const Eigen::VectorXd norms = J.colwise().norm();
+  Eigen::MatrixXd Jn = J;
+  for (int j = 0; j < J.cols(); ++j)
+    if (norms(j) > 0.0) Jn.col(j) /= norms(j);
+  Eigen::JacobiSVD<Eigen::MatrixXd> svd(Jn, Eigen::ComputeThinV);
+  const Eigen::VectorXd sv = svd.singularValues();
+  for (int j = 0; j < J.cols(); ++j)
+    if (!(norms(j) > 1e-12 * norms.maxCoeff())) undetermined[active[j]] = true;
+  for (int sidx = 0; sidx < sv.size(); ++sidx) {
+    if (sv(sidx) > 1e-7 * sv(0)) continue;
     for (int j = 0; j < J.cols(); ++j)
-      if (norms(j) > 0.0) Jn.col(j) /= norms(j);
-    Eigen::JacobiSVD<Eigen::MatrixXd> svd(Jn, Eigen::ComputeThinV);
-    const Eigen::VectorXd sv = svd.singularValues();
-    for (int j = 0; j < J.cols(); ++j)
-      if (!(norms(j) > 1e-12 * norms.maxCoeff())) undetermined[free_index[j]] = true;
-    for (int sidx = 0; sidx < sv.size(); ++sidx) {
-      if (sv(sidx) > 1e-7 * sv(0)) continue;
-      for (int j = 0; j < J.cols(); ++j)
-        if (std::abs(svd.matrixV()(j, sidx)) > 0.3) undetermined[free_index[j]] = true;
-    }
+      if (std::abs(svd.matrixV()(j, sidx)) > 0.3) undetermined[active[j]] = true;
   }
-  std::vector<int> est;  // free and determined
-  for (int i : free_index)
-    if (!undetermined[i]) est.push_back(i);
-  report.free_parameters = static_cast<int>(est.size());
-  int estimated_scales = 0;  // each estimated noise scale uses up a degree of freedom too
-  for (int c = 0; c < kChannels; ++c) estimated_scales += counts[c] > 0 && !noise.given;
-  report.degrees_of_freedom = report.residuals - report.free_parameters - estimated_scales;
+  return undetermined;
+}
 
+// Covariance of the determined parameters, s^2 (J^T J)^-1 with s^2 = chi^2 / (n - p) (Ceres
+// Covariance, the undetermined ones held); a K x K matrix, or nothing when it cannot be had.
+std::optional<Eigen::MatrixXd> parameter_covariance(const FitSetup& s, Solution& sol,
+                                                    const std::array<bool, K>& undetermined,
+                                                    const std::vector<int>& est,
+                                                    const FitReport& report) {
+  if (est.empty() || report.degrees_of_freedom <= 0) return std::nullopt;
+  std::vector<int> hold;  // packed positions of undetermined parameters
+  for (std::size_t j = 0; j < s.active.size(); ++j)
+    if (undetermined[s.active[j]]) hold.push_back(static_cast<int>(j));
+  if (!hold.empty())
+    sol.problem->SetManifold(sol.packed.data(),
+                             new ceres::SubsetManifold(static_cast<int>(s.active.size()), hold));
+  ceres::Covariance::Options copt;
+  copt.algorithm_type = ceres::DENSE_SVD;
+  copt.null_space_rank = -1;
+  ceres::Covariance covariance(copt);
+  const double* block = sol.packed.data();
+  std::vector<std::pair<const double*, const double*>> blocks{{block, block}};
+  if (!covariance.Compute(blocks, sol.problem.get())) return std::nullopt;
+  std::vector<double> c(est.size() * est.size());
+  covariance.GetCovarianceBlockInTangentSpace(block, block, c.data());
+  const double s2 = report.chi2 / (report.residuals - report.free_parameters);
   Eigen::MatrixXd cov = Eigen::MatrixXd::Zero(K, K);
-  bool have_cov = false;
-  if (!est.empty() && report.degrees_of_freedom > 0) {
-    std::vector<int> hold;  // packed positions of undetermined parameters
-    for (std::size_t j = 0; j < active.size(); ++j)
-      if (undetermined[active[j]]) hold.push_back(static_cast<int>(j));
-    if (!hold.empty())
-      problem->SetManifold(packed.data(),
-                           new ceres::SubsetManifold(static_cast<int>(active.size()), hold));
-    ceres::Covariance::Options copt;
-    copt.algorithm_type = ceres::DENSE_SVD;
-    copt.null_space_rank = -1;
-    ceres::Covariance covariance(copt);
-    std::vector<std::pair<const double*, const double*>> blocks{{packed.data(), packed.data()}};
-    if (covariance.Compute(blocks, problem.get())) {
-      std::vector<double> c(est.size() * est.size());
-      covariance.GetCovarianceBlockInTangentSpace(packed.data(), packed.data(), c.data());
-      const double s2 = report.chi2 / (report.residuals - report.free_parameters);
-      for (std::size_t a = 0; a < est.size(); ++a)
-        for (std::size_t b = 0; b < est.size(); ++b)
-          cov(est[a], est[b]) = s2 * c[a * est.size() + b];
-      have_cov = true;
-    }
-  }
+  for (std::size_t a = 0; a < est.size(); ++a)
+    for (std::size_t b = 0; b < est.size(); ++b) cov(est[a], est[b]) = s2 * c[a * est.size() + b];
+  return cov;
+}
+
+ParameterEstimate estimate_of(int i, double value) {
+  ParameterEstimate e;
+  e.name = parameter_info(i).name;
+  e.unit = parameter_info(i).unit;
+  e.value = value;
+  return e;
+}
+
+// Values, standard errors and Student-t 95 % intervals (n - p degrees of freedom) of the
+// reported parameters; the profile's derived a, M0, m for the exact model; f = F0 / N when the
+// load is known; the correlation matrix of the determined parameters.
+void report_parameters(const ModelSpec& spec, const std::array<double, K>& theta,
+                       const std::array<bool, K>& undetermined, const std::vector<int>& est,
+                       const std::optional<Eigen::MatrixXd>& cov, FitReport& report) {
   const double tq =
       report.degrees_of_freedom > 0 ? student_t_quantile(0.975, report.degrees_of_freedom) : kNaN;
   for (int i = 0; i < K; ++i) {
     if (!reported(spec, i)) continue;
-    ParameterEstimate e;
-    e.name = parameter_info(i).name;
-    e.unit = parameter_info(i).unit;
-    e.value = theta[i];
+    ParameterEstimate e = estimate_of(i, theta[i]);
     e.fixed = !spec.free[i];
     e.determined = spec.free[i] && !undetermined[i];
-    if (e.determined && have_cov && cov(i, i) >= 0.0) {
-      e.std_error = std::sqrt(cov(i, i));
+    if (e.determined && cov && (*cov)(i, i) >= 0.0) {
+      e.std_error = std::sqrt((*cov)(i, i));
       e.ci95 = std::array<double, 2>{e.value - tq * e.std_error, e.value + tq * e.std_error};
     } else {
       e.determined = false;
@@ -446,10 +506,7 @@ FitReport fit_model(const MeasuredData& data, const ModelSpec& spec, const Noise
                                spec.profile_m};
     const int index[3] = {kA, kM0, kMShape};
     for (int j = 0; j < 3; ++j) {
-      ParameterEstimate e;
-      e.name = parameter_info(index[j]).name;
-      e.unit = parameter_info(index[j]).unit;
-      e.value = derived[j];
+      ParameterEstimate e = estimate_of(index[j], derived[j]);
       e.fixed = true;
       e.determined = false;
       e.derived = true;
@@ -472,49 +529,77 @@ FitReport fit_model(const MeasuredData& data, const ModelSpec& spec, const Noise
   report.correlation = Eigen::MatrixXd::Identity(est.size(), est.size());
   for (std::size_t a = 0; a < est.size(); ++a) {
     report.correlation_names.push_back(parameter_info(est[a]).name);
+    if (!cov) continue;
     for (std::size_t b = 0; b < est.size(); ++b)
-      if (have_cov && cov(est[a], est[a]) > 0 && cov(est[b], est[b]) > 0)
+      if ((*cov)(est[a], est[a]) > 0 && (*cov)(est[b], est[b]) > 0)
         report.correlation(a, b) =
-            cov(est[a], est[b]) / std::sqrt(cov(est[a], est[a]) * cov(est[b], est[b]));
+            (*cov)(est[a], est[b]) / std::sqrt((*cov)(est[a], est[a]) * (*cov)(est[b], est[b]));
   }
-  if (!spec.exact_only) report.law = fractional_law_of(spec, theta.data());
+}
 
-  // Quality on the used points: diagnostics, Gaussian -2 log L with the noise scales.
+// Diagnostics on the used points: residual whiteness per channel, the dimensionless error,
+// the Gaussian -2 log L with the noise scales, AIC and BIC.
+void report_quality(const FitSetup& s, const Solution& sol, FitReport& report) {
   MeasuredData subset;
   std::vector<Resultants<double>> sub_pred;
-  for (std::size_t i = 0; i < data.points.size(); ++i)
-    if (used(i)) {
-      subset.points.push_back(data.points[i]);
-      sub_pred.push_back(prev[i]);
+  for (std::size_t i = 0; i < s.data.points.size(); ++i)
+    if (s.used(i)) {
+      subset.points.push_back(s.data.points[i]);
+      sub_pred.push_back(sol.prediction[i]);
     }
-  report.prediction = prev;
-  report.noise_scale = scale;
-  report.channels = residual_diagnostics(subset, sub_pred, spec.radius_m, scale);
+  report.prediction = sol.prediction;
+  report.noise_scale = sol.scale;
+  report.channels = residual_diagnostics(subset, sub_pred, s.spec.radius_m, sol.scale);
   report.residual_white = std::all_of(report.channels.begin(), report.channels.end(),
                                       [](const ChannelDiagnostics& d) { return d.white; });
   double log_det = 0.0, err2 = 0.0;
-  for (std::size_t i = 0; i < data.points.size(); ++i) {
-    if (!used(i)) continue;
+  for (std::size_t i = 0; i < s.data.points.size(); ++i) {
+    if (!s.used(i)) continue;
     for (int c = 0; c < kChannels; ++c) {
-      if (!data.points[i].force[c]) continue;
-      double sc = scale[c];
-      if (noise.model == NoiseModel::relative)
-        sc *= std::max(std::abs(prev[i].vector()(c)), floor_rel[c]);
+      if (!s.data.points[i].force[c]) continue;
+      double sc = sol.scale[c];
+      if (s.noise.model == NoiseModel::relative)
+        sc *= std::max(std::abs(sol.prediction[i].vector()(c)), s.floor_rel[c]);
       log_det += std::log(2.0 * std::numbers::pi * sc * sc);
     }
   }
   const int measured = static_cast<int>(report.channels.size());
   for (int c = 0, k = 0; c < kChannels; ++c) {
-    if (counts[c] == 0) continue;
-    const double rel = report.channels[k++].rms / std::max(peak[c], 1e-300);
+    if (s.counts[c] == 0) continue;
+    const double rel = report.channels[k++].rms / std::max(s.peak[c], 1e-300);
     err2 += rel * rel;
   }
   report.error = std::sqrt(err2 / std::max(measured, 1));
-  const int k_params = report.free_parameters + (noise.given ? 0 : measured);
+  const int k_params = report.free_parameters + (s.noise.given ? 0 : measured);
   report.m2ll = log_det + report.chi2;
   report.aic = report.m2ll + 2.0 * k_params;
   report.bic = report.m2ll + k_params * std::log(static_cast<double>(report.residuals));
-  if (estimate) *estimate = theta;
+}
+
+}  // namespace
+
+FitReport fit_model(const MeasuredData& data, const ModelSpec& spec, const NoiseSettings& noise,
+                    std::array<double, K>* estimate, const std::vector<char>& use) {
+  const FitSetup setup = prepare_fit(data, spec, noise, use);
+  Solution sol = solve(setup);
+  FitReport report;
+  report.converged = sol.summary.IsSolutionUsable();
+  report.solver_summary = sol.summary.BriefReport();
+  const Eigen::MatrixXd J = jacobian_at_optimum(*sol.problem, &report);
+  const std::array<bool, K> undetermined = undetermined_parameters(J, setup.active);
+  std::vector<int> est;  // free and determined
+  for (int i : setup.active)
+    if (!undetermined[i]) est.push_back(i);
+  report.free_parameters = static_cast<int>(est.size());
+  int estimated_scales = 0;  // each estimated noise scale uses up a degree of freedom too
+  for (int c = 0; c < kChannels; ++c) estimated_scales += setup.counts[c] > 0 && !noise.given;
+  report.degrees_of_freedom = report.residuals - report.free_parameters - estimated_scales;
+  const std::optional<Eigen::MatrixXd> cov =
+      parameter_covariance(setup, sol, undetermined, est, report);
+  report_parameters(spec, sol.theta, undetermined, est, cov, report);
+  if (!spec.exact_only) report.law = fractional_law_of(spec, sol.theta.data());
+  report_quality(setup, sol, report);
+  if (estimate) *estimate = sol.theta;
   return report;
 }
 

@@ -53,7 +53,7 @@ MeasuredData read_measured_csv(const std::string& path) {
       p.normal_load = row.cells[fz];
       if (p.normal_load && !(*p.normal_load > 0.0))
         throw ParseError(path, row.line, row.columns[fz],
-                         "Fz_N = " + detail::format_value(*p.normal_load) + " must be positive");
+                         "Fz_N = " + format_value(*p.normal_load) + " must be positive");
     }
     if (ts >= 0) p.time = row.cells[ts];
     data.points.push_back(p);

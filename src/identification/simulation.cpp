@@ -9,12 +9,12 @@
 namespace contensou {
 
 MeasuredData diagram_kinematics(const DiagramSpec& s) {
-  detail::require_positive("radius", s.radius_m);
-  detail::require_positive("psi_min", s.psi_min);
+  require_positive("radius", s.radius_m);
+  require_positive("psi_min", s.psi_min);
   if (!(s.psi_max >= s.psi_min))
-    throw InvalidArgument("psi_max", detail::format_value(s.psi_max), "must be >= psi_min");
+    throw InvalidArgument("psi_max", format_value(s.psi_max), "must be >= psi_min");
   if (s.points < 1) throw InvalidArgument("points", std::to_string(s.points), "must be >= 1");
-  detail::require_positive("spin speed", s.spin_speed_mps);
+  require_positive("spin speed", s.spin_speed_mps);
   MeasuredData d;
   d.source = "simulated";
   for (int i = 0; i < s.points; ++i) {
@@ -31,7 +31,7 @@ MeasuredData diagram_kinematics(const DiagramSpec& s) {
 }
 
 void add_noise(MeasuredData& d, const DiagramSpec& s) {
-  detail::require_non_negative("noise level", s.noise_level);
+  require_non_negative("noise level", s.noise_level);
   if (s.noise == SimulatedNoise::none || s.noise_level == 0.0) return;
   std::mt19937_64 rng(s.seed);
   std::uniform_real_distribution<double> uniform(-1.0, 1.0);

@@ -49,16 +49,15 @@ double incomplete_beta(double a, double b, double x) {
 }
 
 double student_t_cdf(double t, double nu) {
-  detail::require_positive("nu", nu);
+  require_positive("nu", nu);
   const double x = nu / (nu + t * t);
   const double tail = 0.5 * incomplete_beta(0.5 * nu, 0.5, x);
   return t >= 0.0 ? 1.0 - tail : tail;
 }
 
 double student_t_quantile(double p, double nu) {
-  if (!(p > 0.0 && p < 1.0))
-    throw InvalidArgument("p", detail::format_value(p), "must be in (0, 1)");
-  detail::require_positive("nu", nu);
+  if (!(p > 0.0 && p < 1.0)) throw InvalidArgument("p", format_value(p), "must be in (0, 1)");
+  require_positive("nu", nu);
   // Bracket and bisect the monotone CDF (robust for every nu).
   double lo = -1.0, hi = 1.0;
   while (student_t_cdf(lo, nu) > p) lo *= 2.0;
@@ -121,7 +120,7 @@ double durbin_watson(const std::vector<double>& x) {
 namespace contensou {
 
 double upper_incomplete_gamma(double a, double x) {
-  detail::require_positive("a", a);
+  require_positive("a", a);
   if (x <= 0.0) return 1.0;
   const double log_front = -x + a * std::log(x) - std::lgamma(a);
   if (x < a + 1.0) {  // series for P(a, x)
@@ -152,7 +151,7 @@ double upper_incomplete_gamma(double a, double x) {
 }
 
 double chi2_survival(double x, double k) {
-  detail::require_positive("k", k);
+  require_positive("k", k);
   return upper_incomplete_gamma(0.5 * k, 0.5 * x);
 }
 

@@ -36,7 +36,7 @@ class ParseError : public std::runtime_error {
   int column_;
 };
 
-namespace detail {
+// Validation helpers shared by every module: each throws InvalidArgument naming the value.
 
 // Shortest text that reads back as the same double ("-0.1", "nan", "inf").
 inline std::string format_value(double v) {
@@ -61,5 +61,4 @@ inline void require_non_negative(const char* name, double v) {
     throw InvalidArgument(name, format_value(v), "must be non-negative and finite");
 }
 
-}  // namespace detail
 }  // namespace contensou

@@ -298,12 +298,11 @@ template <class T>
 ExactResult<T> exact_resultants(const ExactModel<T>& m, const Kinematics<T>& k,
                                 const ExactOptions& options = {}) {
   using std::sqrt;
-  detail::require_finite("vx", value_of(k.vx));
-  detail::require_finite("vy", value_of(k.vy));
-  detail::require_finite("omega", value_of(k.omega));
+  require_finite("vx", value_of(k.vx));
+  require_finite("vy", value_of(k.vy));
+  require_finite("omega", value_of(k.omega));
   if (!(options.tolerance > 0.0) || !(options.tolerance < 1.0))
-    throw InvalidArgument("tolerance", detail::format_value(options.tolerance),
-                          "must lie in (0, 1)");
+    throw InvalidArgument("tolerance", format_value(options.tolerance), "must lie in (0, 1)");
   const double R = m.radius;
   const double tol = std::max(options.tolerance, 1e-15);
   ExactResult<T> out;

@@ -1,6 +1,6 @@
-// Quick start: exact resultants and the fractional law for the seed tire.
+// Friction-only consumer: exact resultants and the fractional law for the seed tire. Links
+// contensou::friction alone, so it builds where only Eigen is installed.
 #include <contensou/contensou.hpp>
-#include <contensou/gear/landing_simulation.hpp>
 
 #include <cstdio>
 
@@ -19,11 +19,7 @@ int main() {
               exact.resultants.Fx, exact.resultants.Fy, exact.resultants.Mz, exact.error.Fx);
   std::printf("fractional Fx = %9.3f N  Fy = %9.3f N  Mz = %8.4f N m\n", approx.Fx, approx.Fy,
               approx.Mz);
-  // contensou::gear: one landing of the shimmy demo's default gear (SUNDIALS CVODE).
-  const LandingRun landing = simulate_landing(make_gear_model(GearConfig{}, ContactModel::coupled));
-  std::printf("landing    %ld steps, torsion %.1f Hz, growth %.2f 1/s\n", landing.steps,
-              landing.metrics.torsion.frequency_hz, landing.metrics.torsion.growth_rate_per_s);
-  const bool sane =
-      exact.resultants.Fx < 0 && exact.resultants.Mz < 0 && approx.Fx < 0 && landing.steps > 0;
+  // Friction opposes sliding and spin: both exact and fractional Fx, Mz are negative here.
+  const bool sane = exact.resultants.Fx < 0 && exact.resultants.Mz < 0 && approx.Fx < 0;
   return sane ? 0 : 1;
 }

@@ -1,0 +1,12 @@
+// The identification module (target contensou::identification, Ceres): measured diagrams and
+// their CSV, the diagram simulator, the weighted fit with confidence intervals, the effect
+// catalogue and the closed loop (seed section 5). Includes the friction module.
+#pragma once
+
+#include "contensou/friction.hpp"
+#include "contensou/identification/closed_loop.hpp"
+#include "contensou/identification/effect_model.hpp"
+#include "contensou/identification/fit.hpp"
+#include "contensou/identification/measured_data.hpp"
+#include "contensou/identification/simulation.hpp"
+#include "contensou/identification/statistics.hpp"
