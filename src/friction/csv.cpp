@@ -1,103 +1,225 @@
 #include "contensou/friction/csv.hpp"
 
+#include <algorithm>
+#include <cctype>
 #include <cerrno>
 #include <cmath>
 #include <cstdlib>
 #include <fstream>
 #include <sstream>
 
-#include "contensou/friction/error.hpp"
-
 namespace contensou {
 namespace {
 
-std::string trim(const std::string& s, std::size_t* lead = nullptr) {
-  std::size_t b = 0, e = s.size();
-  while (b < e && (s[b] == ' ' || s[b] == '\t' || s[b] == '\r')) ++b;
-  while (e > b && (s[e - 1] == ' ' || s[e - 1] == '\t' || s[e - 1] == '\r')) --e;
-  if (lead) *lead = b;
-  return s.substr(b, e - b);
+bool is_space(char c) {
+  return c == ' ' || c == '\t' || c == '\r';
 }
 
-struct Field {
-  std::string text;
-  int column;  // 1-based
-};
+// Lines split at LF, CRLF or a lone CR.
+std::vector<std::string> split_lines(const std::string& text) {
+  std::vector<std::string> lines;
+  std::string cur;
+  for (std::size_t i = 0; i < text.size(); ++i) {
+    const char c = text[i];
+    if (c == '\n' || c == '\r') {
+      lines.push_back(cur);
+      cur.clear();
+      if (c == '\r' && i + 1 < text.size() && text[i + 1] == '\n') ++i;
+    } else {
+      cur += c;
+    }
+  }
+  if (!cur.empty()) lines.push_back(cur);
+  return lines;
+}
 
-std::vector<Field> split(const std::string& line) {
-  std::vector<Field> out;
-  std::size_t start = 0;
+// The separator of a table: the header's most frequent of ',', ';', tab outside quotes.
+char sniff_separator(const std::string& header) {
+  int n[3] = {0, 0, 0};
+  bool quoted = false;
+  for (char c : header) {
+    if (c == '"') quoted = !quoted;
+    if (quoted) continue;
+    n[0] += c == ',';
+    n[1] += c == ';';
+    n[2] += c == '\t';
+  }
+  if (n[1] > n[0] && n[1] >= n[2]) return ';';
+  if (n[2] > n[0] && n[2] > n[1]) return '\t';
+  return ',';
+}
+
+// The fields of a line: separated by `sep` outside double quotes, trimmed, unquoted.
+std::vector<std::string> split_fields(const std::string& line, char sep, const std::string& file,
+                                      int lineno) {
+  std::vector<std::string> out;
+  std::size_t i = 0;
+  const std::size_t n = line.size();
   while (true) {
-    const std::size_t comma = line.find(',', start);
-    const std::string raw =
-        line.substr(start, comma == std::string::npos ? std::string::npos : comma - start);
-    std::size_t lead = 0;
-    std::string t = trim(raw, &lead);
-    out.push_back({t, static_cast<int>(start + lead + 1)});
-    if (comma == std::string::npos) break;
-    start = comma + 1;
+    while (i < n && line[i] != sep && is_space(line[i])) ++i;
+    std::string field;
+    if (i < n && line[i] == '"') {
+      const std::size_t open = i++;
+      bool closed = false;
+      while (i < n) {
+        if (line[i] == '"') {
+          if (i + 1 < n && line[i + 1] == '"') {
+            field += '"';
+            i += 2;
+            continue;
+          }
+          ++i;
+          closed = true;
+          break;
+        }
+        field += line[i++];
+      }
+      if (!closed) throw ParseError(file, lineno, static_cast<int>(open + 1), "unterminated quote");
+      while (i < n && line[i] != sep && is_space(line[i])) ++i;
+      if (i < n && line[i] != sep)
+        throw ParseError(file, lineno, static_cast<int>(i + 1),
+                         "text after a closing quote (a quote inside a field is written \"\")");
+    } else {
+      const std::size_t start = i;
+      while (i < n && line[i] != sep) ++i;
+      std::size_t end = i;
+      while (end > start && is_space(line[end - 1])) --end;
+      field = line.substr(start, end - start);
+    }
+    out.push_back(field);
+    if (i >= n) break;
+    ++i;  // the separator
   }
   return out;
+}
+
+std::string lower(std::string s) {
+  for (char& c : s) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  return s;
+}
+
+// Levenshtein distance.
+std::size_t edit_distance(const std::string& a, const std::string& b) {
+  std::vector<std::size_t> d(b.size() + 1);
+  for (std::size_t j = 0; j <= b.size(); ++j) d[j] = j;
+  for (std::size_t i = 1; i <= a.size(); ++i) {
+    std::size_t diag = d[0];
+    d[0] = i;
+    for (std::size_t j = 1; j <= b.size(); ++j) {
+      const std::size_t up = d[j];
+      d[j] = std::min({d[j] + 1, d[j - 1] + 1, diag + (a[i - 1] == b[j - 1] ? 0 : 1)});
+      diag = up;
+    }
+  }
+  return d[b.size()];
+}
+
+std::string stem(const std::string& s) {
+  return lower(s.substr(0, s.find('_')));
 }
 
 }  // namespace
 
 int CsvTable::column(const std::string& name) const {
-  for (std::size_t i = 0; i < header.size(); ++i)
-    if (header[i] == name) return static_cast<int>(i);
-  return -1;
+  int found = -1;
+  for (std::size_t i = 0; i < header.size(); ++i) {
+    if (header[i] != name) continue;
+    if (found >= 0)
+      throw ParseError(file, header_line, static_cast<int>(i + 1),
+                       "duplicate column '" + name + "' (columns " + std::to_string(found + 1) +
+                           " and " + std::to_string(i + 1) + ")");
+    found = static_cast<int>(i);
+  }
+  return found;
 }
 
-CsvTable parse_csv(const std::string& text, const std::string& name) {
+ParseError CsvTable::cell_error(int line, int col, const std::string& message) const {
+  return ParseError::in_cell(file, line, col + 1, header[static_cast<std::size_t>(col)], message);
+}
+
+std::optional<double> CsvTable::number(const CsvRow& row, int col) const {
+  std::string text = row.cells[static_cast<std::size_t>(col)];
+  if (text.empty()) return std::nullopt;
+  if (separator == ';' && text.find(',') != std::string::npos &&
+      text.find('.') == std::string::npos)
+    std::replace(text.begin(), text.end(), ',', '.');  // decimal comma
+  errno = 0;
+  char* end = nullptr;
+  const double v = std::strtod(text.c_str(), &end);
+  if (end == text.c_str() || *end != '\0')
+    throw cell_error(row.line, col,
+                     "not a number: '" + row.cells[static_cast<std::size_t>(col)] + "'");
+  if (!std::isfinite(v) || errno == ERANGE) {
+    if (errno == ERANGE && std::isfinite(v))  // underflow to a subnormal or zero is a number
+      return v;
+    throw cell_error(row.line, col,
+                     "non-finite value '" + row.cells[static_cast<std::size_t>(col)] + "'");
+  }
+  return v;
+}
+
+std::string CsvTable::closest_column(const std::string& name,
+                                     const std::vector<std::string>& exclude) const {
+  std::string best;
+  std::size_t best_d = 3;
+  for (const std::string& h : header) {
+    if (h.empty() || h == name || std::find(exclude.begin(), exclude.end(), h) != exclude.end())
+      continue;
+    const std::size_t d =
+        lower(h) == lower(name) ? 0 : (stem(h) == stem(name) ? 2 : edit_distance(h, name));
+    if (d < best_d) {
+      best_d = d;
+      best = h;
+    }
+  }
+  return best;
+}
+
+CsvTable parse_csv(const std::string& text_in, const std::string& name) {
   CsvTable table;
   table.file = name;
-  std::istringstream in(text);
-  std::string line;
+  std::string text = text_in;
+  if (text.compare(0, 3, "\xEF\xBB\xBF") == 0) text.erase(0, 3);  // UTF-8 byte-order mark
+  if (text.size() >= 2 &&
+      ((text[0] == '\xFF' && text[1] == '\xFE') || (text[0] == '\xFE' && text[1] == '\xFF')))
+    throw ParseError(name, 1, 1, "the file is UTF-16; save it as UTF-8 (or plain ASCII) CSV");
+  const std::vector<std::string> lines = split_lines(text);
   int lineno = 0;
-  while (std::getline(in, line)) {
+  std::size_t width = 0;  // header columns up to the last named one
+  for (const std::string& line : lines) {
     ++lineno;
     std::size_t lead = 0;
-    const std::string t = trim(line, &lead);
-    if (t.empty() || t[0] == '#') continue;
-    std::vector<Field> fields = split(line);
+    while (lead < line.size() && is_space(line[lead])) ++lead;
+    if (lead == line.size() || line[lead] == '#') continue;
     if (table.header.empty()) {
+      table.separator = sniff_separator(line);
+      std::vector<std::string> names = split_fields(line, table.separator, name, lineno);
+      width = names.size();
+      while (width > 0 && names[width - 1].empty()) --width;  // trailing empty columns
+      if (width == 0) throw ParseError(name, lineno, 1, "header row without a column name");
+      names.resize(width);
+      table.header = names;
       table.header_line = lineno;
-      for (const Field& f : fields) {
-        if (f.text.empty()) throw ParseError(name, lineno, f.column, "empty column name in header");
-        for (const std::string& h : table.header)
-          if (h == f.text)
-            throw ParseError(name, lineno, f.column, "duplicate column '" + f.text + "'");
-        table.header.push_back(f.text);
-      }
       continue;
     }
-    if (fields.size() != table.header.size()) {
-      throw ParseError(name, lineno, fields.back().column,
-                       "expected " + std::to_string(table.header.size()) + " cells, found " +
-                           std::to_string(fields.size()));
-    }
-    CsvRow row;
-    row.line = lineno;
-    for (const Field& f : fields) {
-      row.columns.push_back(f.column);
-      if (f.text.empty()) {
-        row.cells.emplace_back(std::nullopt);
-        continue;
-      }
-      errno = 0;
-      char* end = nullptr;
-      const double v = std::strtod(f.text.c_str(), &end);
-      if (end == f.text.c_str() || *end != '\0' || errno == ERANGE) {
-        throw ParseError(name, lineno, f.column, "not a number: '" + f.text + "'");
-      }
-      if (!std::isfinite(v)) {
-        throw ParseError(name, lineno, f.column, "non-finite value: '" + f.text + "'");
-      }
-      row.cells.emplace_back(v);
-    }
-    table.rows.push_back(std::move(row));
+    std::vector<std::string> fields = split_fields(line, table.separator, name, lineno);
+    // Cells past the header's last named column must be empty (trailing separators).
+    for (std::size_t k = width; k < fields.size(); ++k)
+      if (!fields[k].empty())
+        throw ParseError(name, lineno, 0,
+                         "cell " + std::to_string(k + 1) + " ('" + fields[k] +
+                             "') lies beyond the header's " + std::to_string(width) + " columns");
+    if (fields.size() > width) fields.resize(width);
+    // A line of separators only (a spreadsheet's empty row) is skipped.
+    if (std::all_of(fields.begin(), fields.end(), [](const std::string& f) { return f.empty(); }))
+      continue;
+    if (fields.size() < width)
+      throw ParseError(
+          name, lineno, 0,
+          "expected " + std::to_string(width) + " cells, found " + std::to_string(fields.size()));
+    table.rows.push_back({lineno, std::move(fields)});
   }
-  if (table.header.empty()) throw ParseError(name, lineno, 1, "no header row (file is empty)");
+  if (table.header.empty()) throw ParseError(name, lineno, 0, "no header row (file is empty)");
   return table;
 }
 
@@ -106,6 +228,7 @@ CsvTable read_csv(const std::string& path) {
   if (!in) throw ParseError(path, 0, 0, "cannot open file");
   std::ostringstream ss;
   ss << in.rdbuf();
+  if (in.bad()) throw ParseError(path, 0, 0, "cannot read file");
   return parse_csv(ss.str(), path);
 }
 

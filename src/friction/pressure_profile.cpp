@@ -234,38 +234,46 @@ PressureProfile seed_tire_profile() {
 MeasuredProfile read_profile_csv(const std::string& path) {
   const CsvTable table = read_csv(path);
   const int ir = table.column("rho"), ip = table.column("pressure_Pa");
-  if (ir < 0 || ip < 0)
-    throw ParseError(path, table.header_line, 1,
-                     std::string("missing column '") + (ir < 0 ? "rho" : "pressure_Pa") +
-                         "' (need rho,pressure_Pa)");
+  if (ir < 0 || ip < 0) {
+    const std::string missing = ir < 0 ? "rho" : "pressure_Pa";
+    const std::string close = table.closest_column(missing);
+    throw ParseError(path, table.header_line, 0,
+                     "missing column '" + missing + "' (need rho,pressure_Pa" +
+                         (close.empty() ? "" : "; did you mean '" + close + "'?") + ")");
+  }
   std::vector<double> rho, p;
   for (const CsvRow& row : table.rows) {
-    for (int c : {ir, ip})
-      if (!row.cells[c]) throw ParseError(path, row.line, row.columns[c], "empty cell");
-    const double r = *row.cells[ir];
+    double v[2];
+    for (int k = 0; k < 2; ++k) {
+      const int c = k == 0 ? ir : ip;
+      const std::optional<double> x = table.number(row, c);
+      if (!x) throw table.cell_error(row.line, c, "empty cell");
+      v[k] = *x;
+    }
+    const double r = v[0];
     if (r < 0.0 || r > 1.0 + 1e-12)
-      throw ParseError(path, row.line, row.columns[ir],
-                       "rho = " + format_value(r) + " outside [0, 1]");
+      throw table.cell_error(row.line, ir, "rho = " + format_value(r) + " outside [0, 1]");
     if (!rho.empty() && !(r > rho.back()))
-      throw ParseError(path, row.line, row.columns[ir],
-                       "rho = " + format_value(r) + " not increasing");
+      throw table.cell_error(row.line, ir,
+                             "rho = " + format_value(r) + " not increasing (previous " +
+                                 format_value(rho.back()) + ")");
     rho.push_back(r);
-    p.push_back(*row.cells[ip]);
+    p.push_back(v[1]);
   }
   if (rho.size() < 2)
-    throw ParseError(path, table.header_line, 1, "a profile needs at least 2 rows");
+    throw ParseError(path, table.header_line, 0,
+                     "a profile needs at least 2 rows (found " + std::to_string(rho.size()) + ")");
   if (rho.back() < 1.0 - 1e-9)
-    throw ParseError(path, table.rows.back().line, table.rows.back().columns[ir],
-                     "the last rho must be 1 (the rim)");
+    throw table.cell_error(table.rows.back().line, ir, "the last rho must be 1 (the rim)");
   MeasuredProfile out;
   out.profile = tabulated_profile(rho, p);
   // Mean pressure = 2 integral_0^1 p rho d rho (in Pa, before normalising).
   const double mean = 2.0 * moment(out.profile, 1);
   if (!(mean > 0.0))
-    throw ParseError(path, table.header_line, 1, "the profile's mean pressure is not positive");
+    throw ParseError(path, table.header_line, 0, "the profile's mean pressure is not positive");
   auto& t = std::get<TabulatedShape>(out.profile.shape);
-  for (double& v : t.p) v /= mean;
-  for (double& v : t.slope) v /= mean;
+  for (double& x : t.p) x /= mean;
+  for (double& x : t.slope) x /= mean;
   out.reference_pressure_pa = mean;
   return out;
 }

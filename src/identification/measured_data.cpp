@@ -1,6 +1,8 @@
 #include "contensou/identification/measured_data.hpp"
 
+#include <algorithm>
 #include <cstdio>
+#include <cstdlib>
 #include <fstream>
 #include <stdexcept>
 
@@ -15,16 +17,59 @@ int MeasuredData::count(int channel) const {
   return n;
 }
 
+namespace {
+
+const std::vector<std::string> kKnownColumns = {"vx_mps", "vy_mps", "omega_radps", "Fx_N",
+                                                "Fy_N",   "Mz_Nm",  "Fz_N",        "t_s"};
+
+// " (did you mean 'x'?)" for the header's column closest to name, or "".
+std::string did_you_mean(const CsvTable& t, const std::string& name) {
+  const std::string close = t.closest_column(name, kKnownColumns);
+  return close.empty() ? "" : " (did you mean '" + close + "'?)";
+}
+
+bool header_looks_like_data(const CsvTable& t) {
+  return std::all_of(t.header.begin(), t.header.end(), [](const std::string& h) {
+    char* end = nullptr;
+    std::strtod(h.c_str(), &end);
+    return !h.empty() && *end == '\0';
+  });
+}
+
+// A column of the file that is not read but looks like a misspelt known column (or the same
+// quantity in another unit) while that column is absent: the data would be silently lost.
+void refuse_near_misses(const CsvTable& t) {
+  for (const std::string& k : kKnownColumns) {
+    if (t.column(k) >= 0) continue;
+    const std::string close = t.closest_column(k, kKnownColumns);
+    if (close.empty()) continue;
+    const int col = t.column(close);
+    throw ParseError(t.file, t.header_line, 0,
+                     "column '" + close + "' (" + std::to_string(col + 1) +
+                         ") is not a column this reader knows: did you mean '" + k +
+                         "'? (columns: vx_mps, vy_mps, omega_radps, Fx_N, Fy_N, Mz_Nm, Fz_N, t_s, "
+                         "in SI units; rename it, or convert the unit)");
+  }
+}
+
+}  // namespace
+
 MeasuredData read_measured_csv(const std::string& path) {
   const CsvTable t = read_csv(path);
   const char* required[3] = {"vx_mps", "vy_mps", "omega_radps"};
+  if (header_looks_like_data(t))
+    throw ParseError(path, t.header_line, 0,
+                     "the first row holds numbers, not column names: the file needs a header row "
+                     "(vx_mps,vy_mps,omega_radps and at least one of Fx_N,Fy_N,Mz_Nm)");
   int kin[3];
   for (int i = 0; i < 3; ++i) {
     kin[i] = t.column(required[i]);
     if (kin[i] < 0)
-      throw ParseError(path, t.header_line, 1,
-                       std::string("missing required column '") + required[i] + "'");
+      throw ParseError(path, t.header_line, 0,
+                       std::string("missing required column '") + required[i] + "'" +
+                           did_you_mean(t, required[i]));
   }
+  refuse_near_misses(t);
   int ch[kChannels];
   bool any = false;
   for (int c = 0; c < kChannels; ++c) {
@@ -32,7 +77,7 @@ MeasuredData read_measured_csv(const std::string& path) {
     any = any || ch[c] >= 0;
   }
   if (!any)
-    throw ParseError(path, t.header_line, 1, "no measured channel (need Fx_N, Fy_N or Mz_Nm)");
+    throw ParseError(path, t.header_line, 0, "no measured channel (need Fx_N, Fy_N or Mz_Nm)");
   const int fz = t.column("Fz_N"), ts = t.column("t_s");
   MeasuredData data;
   data.source = path;
@@ -41,23 +86,23 @@ MeasuredData read_measured_csv(const std::string& path) {
     p.line = row.line;
     double k[3];
     for (int i = 0; i < 3; ++i) {
-      if (!row.cells[kin[i]])
-        throw ParseError(path, row.line, row.columns[kin[i]],
-                         std::string("empty ") + required[i] + " (kinematics must be given)");
-      k[i] = *row.cells[kin[i]];
+      const std::optional<double> v = t.number(row, kin[i]);
+      if (!v) throw t.cell_error(row.line, kin[i], "empty (the kinematics must be given)");
+      k[i] = *v;
     }
     p.kinematics = {k[0], k[1], k[2]};
     for (int c = 0; c < kChannels; ++c)
-      if (ch[c] >= 0) p.force[c] = row.cells[ch[c]];
+      if (ch[c] >= 0) p.force[c] = t.number(row, ch[c]);
     if (fz >= 0) {
-      p.normal_load = row.cells[fz];
+      p.normal_load = t.number(row, fz);
       if (p.normal_load && !(*p.normal_load > 0.0))
-        throw ParseError(path, row.line, row.columns[fz],
-                         "Fz_N = " + format_value(*p.normal_load) + " must be positive");
+        throw t.cell_error(row.line, fz, format_value(*p.normal_load) + " must be positive");
     }
-    if (ts >= 0) p.time = row.cells[ts];
+    if (ts >= 0) p.time = t.number(row, ts);
     data.points.push_back(p);
   }
+  if (data.points.empty())
+    throw ParseError(path, t.header_line, 0, "no data rows after the header");
   return data;
 }
 

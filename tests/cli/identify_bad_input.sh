@@ -27,13 +27,13 @@ expect() {
 }
 
 printf 'vx_mps,vy_mps,omega_radps,Fx_N\n1,0,10,-5\n1,0,abc,-5\n' > "$dir/malformed.csv"
-expect "malformed cell" "malformed.csv:3:5: not a number: 'abc'" \
+expect "malformed cell" "malformed.csv:3: column 'omega_radps' (3): not a number: 'abc'" \
   "$app" "$dir/malformed.csv" --radius 0.1 --json "$dir/report.json"
 printf 'vx_mps,omega_radps,Fx_N\n1,10,-5\n' > "$dir/missing.csv"
 expect "missing column" "missing required column 'vy_mps'" \
   "$app" "$dir/missing.csv" --radius 0.1 --json "$dir/report.json"
 printf 'vx_mps,vy_mps,omega_radps,Fx_N\n1,0,10,-5\n1,0,10,nan\n' > "$dir/nonfinite.csv"
-expect "non-finite value" "nonfinite.csv:3:8: non-finite value" \
+expect "non-finite value" "nonfinite.csv:3: column 'Fx_N' (4): non-finite value 'nan'" \
   "$app" "$dir/nonfinite.csv" --radius 0.1 --json "$dir/report.json"
 printf 'vx_mps,vy_mps,omega_radps,Fx_N\n1,0,10,-5\n2,0,10,-6\n' > "$dir/few.csv"
 expect "fewer points than parameters" "need more measured values than free parameters" \
@@ -45,7 +45,7 @@ expect "negative load" "normal-load = -4000" \
 expect "unreadable profile" "no such file" \
   "$app" "$good" --radius 0.087 --profile "$dir/nope.csv" --json "$dir/report.json"
 printf 'rho,pressure_Pa\n0,1\n0.5,x\n1,1\n' > "$dir/badprofile.csv"
-expect "malformed profile" "badprofile.csv:3:5: not a number" \
+expect "malformed profile" "badprofile.csv:3: column 'pressure_Pa' (2): not a number: 'x'" \
   "$app" "$good" --radius 0.087 --profile "$dir/badprofile.csv" --json "$dir/report.json"
 expect "missing data file" "cannot open file" \
   "$app" "$dir/absent.csv" --radius 0.087 --json "$dir/report.json"

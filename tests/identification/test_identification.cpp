@@ -284,7 +284,7 @@ TEST(MeasuredData, RoundTripAndErrors) {
   };
   EXPECT_EQ(error_line("vx_mps,omega_radps,Fx_N\n1,2,3\n").first, 1);    // no vy_mps
   EXPECT_EQ(error_line("vx_mps,vy_mps,omega_radps\n1,2,3\n").first, 1);  // no channel
-  EXPECT_EQ(error_line("vx_mps,vy_mps,omega_radps,Fx_N\n1,,3,4\n"), std::pair(2, 3));
-  EXPECT_EQ(error_line("vx_mps,vy_mps,omega_radps,Fx_N\n1,2,3,4\n1,2,3,inf\n"), std::pair(3, 7));
+  EXPECT_EQ(error_line("vx_mps,vy_mps,omega_radps,Fx_N\n1,,3,4\n"), std::pair(2, 2));
+  EXPECT_EQ(error_line("vx_mps,vy_mps,omega_radps,Fx_N\n1,2,3,4\n1,2,3,inf\n"), std::pair(3, 4));
   EXPECT_EQ(error_line("vx_mps,vy_mps,omega_radps,Fx_N,Fz_N\n1,2,3,4,-1\n").first, 2);
 }

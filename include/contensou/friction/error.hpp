@@ -19,19 +19,31 @@ class InvalidArgument : public std::invalid_argument {
   std::string parameter_;
 };
 
-// Thrown for a malformed input file; what() names the file, line and column.
+// Thrown for a malformed input file; what() names the file, the line and, when known, the
+// column (a character position, or a numbered and named cell: "f.csv:11: column 'Mz_Nm' (6):").
 class ParseError : public std::runtime_error {
  public:
   ParseError(const std::string& file, int line, int column, const std::string& message)
-      : std::runtime_error(line > 0 ? file + ":" + std::to_string(line) + ":" +
-                                          std::to_string(column) + ": " + message
-                                    : file + ": " + message),
-        line_(line),
-        column_(column) {}
+      : std::runtime_error(location(file, line, column) + message), line_(line), column_(column) {}
+  // An error in cell number `column` (1-based) of a table, named by its header.
+  static ParseError in_cell(const std::string& file, int line, int column,
+                            const std::string& column_name, const std::string& message) {
+    ParseError e(location(file, line, 0) + "column '" + column_name + "' (" +
+                     std::to_string(column) + "): " + message,
+                 line, column);
+    return e;
+  }
   int line() const noexcept { return line_; }
   int column() const noexcept { return column_; }
 
  private:
+  ParseError(const std::string& what, int line, int column)
+      : std::runtime_error(what), line_(line), column_(column) {}
+  static std::string location(const std::string& file, int line, int column) {
+    if (line <= 0) return file + ": ";
+    return file + ":" + std::to_string(line) + ":" +
+           (column > 0 ? std::to_string(column) + ":" : "") + " ";
+  }
   int line_;
   int column_;
 };
