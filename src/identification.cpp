@@ -8,6 +8,8 @@
 #include <memory>
 #include <numbers>
 #include <numeric>
+#include <stdexcept>
+#include <string>
 
 #include "contensou/effect_model.hpp"
 #include "contensou/error.hpp"
@@ -35,7 +37,12 @@ struct PointResidual {
     std::array<T, K> theta;
     for (int i = 0; i < K; ++i) theta[i] = T((*theta_const)[i]);
     for (std::size_t j = 0; j < active->size(); ++j) theta[(*active)[j]] = packed[0][j];
-    const Resultants<T> f = evaluate_model(*spec, theta.data(), k);
+    Resultants<T> f;
+    try {
+      f = evaluate_model(*spec, theta.data(), k);
+    } catch (const InvalidArgument&) {
+      return false;  // a parameter outside the model's domain: Ceres rejects the step
+    }
     const T model[kChannels] = {f.Fx, f.Fy, f.Mz};
     for (int c = 0; c < kChannels; ++c)
       if (w[c] != 0.0) r[slot[c]] = w[c] * (y[c] - model[c]);
@@ -149,6 +156,18 @@ bool reported(const ModelSpec& s, int i) {
   if ((i == kProfileB1 || i == kProfileB2) && (s.profile_model || !s.uses_exact())) return false;
   if (i == kSpeedRef) return s.free[kSpeedDrop] || s.value[kSpeedDrop] != 0.0;
   return s.free[i] || i <= kKx || s.value[i] != parameter_info(i).null_value;
+}
+
+// The fit named by its model and free parameters, for the error of a failed solve.
+std::string fit_name(const ModelSpec& s) {
+  std::string name = s.exact_only ? "exact integrals" : "fractional law";
+  std::string sep = " (free: ";
+  for (int i = 0; i < K; ++i)
+    if (s.free[i]) {
+      name += sep + parameter_info(i).name;
+      sep = ", ";
+    }
+  return name + (sep == ", " ? ")" : "");
 }
 
 }  // namespace
@@ -319,6 +338,9 @@ FitReport fit_model(const MeasuredData& data, const ModelSpec& spec, const Noise
   auto unpack = [&] {
     for (std::size_t j = 0; j < active.size(); ++j) theta[active[j]] = packed[j];
   };
+  // The model at the start values, outside Ceres: a parameter outside its domain (a fixed
+  // kappa < 0, say) is reported by name here instead of as a failed solve.
+  evaluate_all(spec, theta.data(), data);
   for (int round = 0; round < rounds; ++round) {
     problem = std::make_unique<ceres::Problem>();
     add_points(*problem, data, spec, active, theta_const, packed.data(), scale, noise.model,
@@ -332,6 +354,9 @@ FitReport fit_model(const MeasuredData& data, const ModelSpec& spec, const Noise
     opt.parameter_tolerance = 1e-10;
     opt.logging_type = ceres::SILENT;
     ceres::Solve(opt, problem.get(), &summary);
+    // Never go on (covariance, report) from a failed solve.
+    if (!summary.IsSolutionUsable())
+      throw std::runtime_error("fit of the " + fit_name(spec) + " failed: " + summary.message);
     unpack();
     prev = evaluate_all(spec, theta.data(), data);
     if (noise.given && noise.model == NoiseModel::additive) break;
@@ -363,11 +388,17 @@ FitReport fit_model(const MeasuredData& data, const ModelSpec& spec, const Noise
   ceres::CRSMatrix crs;
   std::vector<double> residuals;
   double cost = 0.0;
-  problem->Evaluate(ceres::Problem::EvaluateOptions(), &cost, &residuals, nullptr, &crs);
+  const bool evaluated =
+      problem->Evaluate(ceres::Problem::EvaluateOptions(), &cost, &residuals, nullptr, &crs);
   const std::vector<int>& free_index = active;
   Eigen::MatrixXd J = Eigen::MatrixXd::Zero(crs.num_rows, crs.num_cols);
   for (int r = 0; r < crs.num_rows; ++r)
     for (int k = crs.rows[r]; k < crs.rows[r + 1]; ++k) J(r, crs.cols[k]) = crs.values[k];
+  const bool finite =
+      std::all_of(residuals.begin(), residuals.end(), [](double r) { return std::isfinite(r); });
+  if (!evaluated || !finite || !J.allFinite())
+    throw std::runtime_error("fit of the " + fit_name(spec) +
+                             " failed: non-finite residuals or Jacobian at the optimum");
   report.residuals = static_cast<int>(residuals.size());
   report.chi2 = 0.0;
   for (double r : residuals) report.chi2 += r * r;
