@@ -28,6 +28,32 @@ void validate(const ContactPatch& patch) {
   require_positive("kappa", patch.kappa);
   require_finite("kx", patch.profile.kx);
   require_finite("ky", patch.profile.ky);
+  // A shape filled by hand (not by its factory) is checked here: an empty or inconsistent
+  // table would be read out of bounds by the interpolation.
+  if (const auto* t = std::get_if<TabulatedShape>(&patch.profile.shape)) {
+    const std::size_t n = t->rho.size();
+    if (n < 2 || t->p.size() != n || t->slope.size() != n)
+      throw InvalidArgument("profile", describe(patch.profile),
+                            "a tabulated shape needs >= 2 knots with as many p and slope values "
+                            "(build it with tabulated_profile)");
+    for (std::size_t i = 0; i < n; ++i) {
+      require_finite("tabulated rho", t->rho[i]);
+      require_finite("tabulated p", t->p[i]);
+      require_finite("tabulated slope", t->slope[i]);
+      if (i > 0 && !(t->rho[i] > t->rho[i - 1]))
+        throw InvalidArgument("tabulated rho", format_value(t->rho[i]),
+                              "must be strictly increasing");
+    }
+    if (t->rho.front() < 0.0 || t->rho.back() != 1.0)
+      throw InvalidArgument("profile", describe(patch.profile),
+                            "tabulated rho must lie in [0, 1] and end at the rim, 1");
+  }
+  if (const auto* c = std::get_if<CosineSeriesShape>(&patch.profile.shape)) {
+    require_positive("cosine series w", c->w);
+    if (c->a.empty())
+      throw InvalidArgument("profile", describe(patch.profile), "needs at least one coefficient");
+    for (double a : c->a) require_finite("cosine series a_k", a);
+  }
   const double k = std::hypot(patch.profile.kx, patch.profile.ky);
   if (!(k < 1.0))
     throw InvalidArgument("|(kx, ky)|", format_value(k),

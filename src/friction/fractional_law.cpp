@@ -10,22 +10,15 @@
 namespace contensou {
 
 void validate(const FractionalLaw<double>& p) {
-  require_non_negative("F0", p.F0);
-  require_non_negative("M0", p.M0);
-  require_positive("a", p.a);
-  require_positive("m", p.m);
-  require_positive("c", p.c);
-  require_positive("a_k", p.a_k);
-  require_positive("kappa", p.kappa);
-  require_finite("kx", p.kx);
-  require_finite("ky", p.ky);
-  require_non_negative("Mk", p.Mk);
-  require_positive("radius", p.radius);
-  require_positive("regularization_speed", p.regularization_speed);
+  detail::check_law(p);
 }
 
 FractionalWithJacobian fractional_resultants_with_jacobian(const FractionalLaw<double>& p,
                                                            const Kinematics<double>& k0) {
+  detail::check_law(p);
+  require_finite("vx", k0.vx);
+  require_finite("vy", k0.vy);
+  require_finite("omega", k0.omega);
   // Homogeneous of degree 0 in (v, u, eps): evaluate on scaled velocities, divide J by s.
   // One reciprocal per square root; everything else is multiplication.
   const double R = p.radius;
@@ -55,16 +48,29 @@ FractionalWithJacobian fractional_resultants_with_jacobian(const FractionalLaw<d
   J(2, 1) = Mks * u * p.m * vy * iSm3;
   J(2, 2) = -Mks * R * (p.m * q + e2) * iSm3;
   if (p.kx != 0.0 || p.ky != 0.0) {
-    // Shift forces -(M0/2R) [g2 (z x k) + (g1 - g2) (k.v)(z x v)/q].
+    // Shift forces -(M0/2R) [g2 (z x k) + Gq (k.v)(z x v)], Gq = (g1 - g2)/q in the
+    // cancellation-free form of the header: Gq = u L, L = P / Q, Q = S1 S2^3 Wq,
+    // Wq = S2^3 + s0 S1, s0 = U + eps^2; derivatives in q and s0 (ds0/du = 2u).
     const double hm = p.M0 / (2.0 * R);
-    const double iS1 = 1.0 / std::sqrt(U + 0.25 * p.m * q + e2), iS13 = iS1 * iS1 * iS1;
-    const double iS2 = 1.0 / std::sqrt(U + p.c * q + e2), iS23 = iS2 * iS2 * iS2;
-    const double iS25 = iS23 * iS2 * iS2;
-    const double g1 = u * iS1, g2 = U * u * iS23;
-    const double dg1_dq = -0.125 * p.m * u * iS13;  // d g1 / d(q), q = v^2
-    const double dg1_du = (0.25 * p.m * q + e2) * iS13;
-    const double dg2_dq = -1.5 * p.c * U * u * iS25;
-    const double dg2_du = 3.0 * U * (p.c * q + e2) * iS25;
+    const double s0 = U + e2, c = p.c;
+    const double S1 = std::sqrt(s0 + 0.25 * p.m * q), iS12 = 1.0 / (S1 * S1);
+    const double S2sq = s0 + c * q, S2 = std::sqrt(S2sq), iS22 = 1.0 / S2sq;
+    const double S23 = S2sq * S2, iS23 = 1.0 / S23, iS25 = iS23 * iS22;
+    const double g2 = u * s0 * iS23;
+    const double dg2_dq = -1.5 * c * u * s0 * iS25;
+    const double dg2_du = (s0 * e2 + c * q * (s0 + 2.0 * U)) * iS25;
+    const double P = s0 * s0 * (3.0 * c - 0.25 * p.m) + 3.0 * s0 * c * c * q + c * c * c * q * q;
+    const double Wq = S23 + s0 * S1, iQ = 1.0 / (S1 * S23 * Wq);
+    const double L = P * iQ;
+    const double P_q = 3.0 * s0 * c * c + 2.0 * c * c * c * q;
+    const double P_s = 2.0 * s0 * (3.0 * c - 0.25 * p.m) + 3.0 * c * c * q;
+    const double W_q = 1.5 * c * S2 + 0.125 * p.m * s0 / S1;
+    const double W_s = 1.5 * S2 + S1 + 0.5 * s0 / S1;
+    const double lnQ_q = 0.125 * p.m * iS12 + 1.5 * c * iS22 + W_q / Wq;
+    const double lnQ_s = 0.5 * iS12 + 1.5 * iS22 + W_s / Wq;
+    const double Gq = u * L;
+    const double dGq_dq = u * (P_q - P * lnQ_q) * iQ;
+    const double dGq_du = L + 2.0 * U * (P_s - P * lnQ_s) * iQ;
     Fx += hm * g2 * p.ky;
     Fy -= hm * g2 * p.kx;
     const double dg2[3] = {2 * vx * dg2_dq, 2 * vy * dg2_dq, R * dg2_du};
@@ -72,22 +78,18 @@ FractionalWithJacobian fractional_resultants_with_jacobian(const FractionalLaw<d
       J(0, j) += hm * dg2[j] * p.ky;
       J(1, j) -= hm * dg2[j] * p.kx;
     }
-    if (q > 1e-30 * (U + e2)) {
-      const double iq = 1.0 / q;
-      const double kv = p.kx * vx + p.ky * vy, G = g1 - g2, H = G * kv * iq;
-      Fx += hm * H * vy;
-      Fy -= hm * H * vx;
-      const double dG_dq = dg1_dq - dg2_dq, dG_du = dg1_du - dg2_du;
-      const double dH_dvx = (2 * vx * dG_dq * kv + G * p.kx) * iq - 2 * vx * H * iq;
-      const double dH_dvy = (2 * vy * dG_dq * kv + G * p.ky) * iq - 2 * vy * H * iq;
-      const double dH_dw = R * dG_du * kv * iq;
-      J(0, 0) += hm * dH_dvx * vy;
-      J(0, 1) += hm * (dH_dvy * vy + H);
-      J(0, 2) += hm * dH_dw * vy;
-      J(1, 0) -= hm * (dH_dvx * vx + H);
-      J(1, 1) -= hm * dH_dvy * vx;
-      J(1, 2) -= hm * dH_dw * vx;
-    }
+    const double kv = p.kx * vx + p.ky * vy, H = Gq * kv;
+    Fx += hm * H * vy;
+    Fy -= hm * H * vx;
+    const double dH_dvx = 2 * vx * dGq_dq * kv + Gq * p.kx;
+    const double dH_dvy = 2 * vy * dGq_dq * kv + Gq * p.ky;
+    const double dH_dw = R * dGq_du * kv;
+    J(0, 0) += hm * dH_dvx * vy;
+    J(0, 1) += hm * (dH_dvy * vy + H);
+    J(0, 2) += hm * dH_dw * vy;
+    J(1, 0) -= hm * (dH_dvx * vx + H);
+    J(1, 1) -= hm * dH_dvy * vx;
+    J(1, 2) -= hm * dH_dw * vx;
     // Cross-shift torque Mk W q / Sk^3, W = vx ky - kappa vy kx.
     const double W = vx * p.ky - p.kappa * vy * p.kx;
     const double iSk = 1.0 / std::sqrt(q + p.a_k * U + e2), iSk2 = iSk * iSk;

@@ -9,6 +9,8 @@
 #include <numbers>
 #include <numeric>
 #include <optional>
+#include <stdexcept>
+#include <string>
 
 #include "contensou/friction/error.hpp"
 #include "contensou/identification/effect_model.hpp"
@@ -36,7 +38,12 @@ struct PointResidual {
     std::array<T, K> theta;
     for (int i = 0; i < K; ++i) theta[i] = T((*theta_const)[i]);
     for (std::size_t j = 0; j < active->size(); ++j) theta[(*active)[j]] = packed[0][j];
-    const Resultants<T> f = evaluate_model(*spec, theta.data(), k);
+    Resultants<T> f;
+    try {
+      f = evaluate_model(*spec, theta.data(), k);
+    } catch (const InvalidArgument&) {
+      return false;  // a parameter outside the model's domain: Ceres rejects the step
+    }
     const T model[kChannels] = {f.Fx, f.Fy, f.Mz};
     for (int c = 0; c < kChannels; ++c)
       if (w[c] != 0.0) r[slot[c]] = w[c] * (y[c] - model[c]);
@@ -150,6 +157,18 @@ bool reported(const ModelSpec& s, int i) {
   if ((i == kProfileB1 || i == kProfileB2) && (s.profile_model || !s.uses_exact())) return false;
   if (i == kSpeedRef) return s.free[kSpeedDrop] || s.value[kSpeedDrop] != 0.0;
   return s.free[i] || i <= kKx || s.value[i] != parameter_info(i).null_value;
+}
+
+// The fit named by its model and free parameters, for the error of a failed solve.
+std::string fit_name(const ModelSpec& s) {
+  std::string name = s.exact_only ? "exact integrals" : "fractional law";
+  std::string sep = " (free: ";
+  for (int i = 0; i < K; ++i)
+    if (s.free[i]) {
+      name += sep + parameter_info(i).name;
+      sep = ", ";
+    }
+  return name + (sep == ", " ? ")" : "");
 }
 
 }  // namespace
@@ -379,6 +398,9 @@ Solution solve(const FitSetup& s) {
   sol.scale = initial_noise_scales(s);
   sol.packed.resize(s.active.size());
   for (std::size_t j = 0; j < s.active.size(); ++j) sol.packed[j] = sol.theta[s.active[j]];
+  // The model at the start values, outside Ceres: a parameter outside its domain (a fixed
+  // kappa < 0, say) is reported by name here instead of as a failed solve.
+  evaluate_all(s.spec, sol.theta.data(), s.data);
   const bool fixed_scales = s.noise.given && s.noise.model == NoiseModel::additive;
   const int rounds = fixed_scales ? 1 : std::max(1, s.noise.iterations);
   for (int round = 0; round < rounds; ++round) {
@@ -394,6 +416,10 @@ Solution solve(const FitSetup& s) {
     opt.parameter_tolerance = 1e-10;
     opt.logging_type = ceres::SILENT;
     ceres::Solve(opt, sol.problem.get(), &sol.summary);
+    // Never go on (covariance, report) from a failed solve.
+    if (!sol.summary.IsSolutionUsable())
+      throw std::runtime_error("fit of the " + fit_name(s.spec) +
+                               " failed: " + sol.summary.message);
     for (std::size_t j = 0; j < s.active.size(); ++j) sol.theta[s.active[j]] = sol.packed[j];
     sol.prediction = evaluate_all(s.spec, sol.theta.data(), s.data);
     if (fixed_scales) break;
@@ -404,15 +430,23 @@ Solution solve(const FitSetup& s) {
 }
 
 // The weighted Jacobian at the optimum (free parameters only); sets the report's residual
-// count and chi^2.
-Eigen::MatrixXd jacobian_at_optimum(ceres::Problem& problem, FitReport* report) {
+// count and chi^2. Throws, naming the fit, if residuals or Jacobian are not finite: no
+// covariance is ever computed from them.
+Eigen::MatrixXd jacobian_at_optimum(ceres::Problem& problem, const ModelSpec& spec,
+                                    FitReport* report) {
   ceres::CRSMatrix crs;
   std::vector<double> residuals;
   double cost = 0.0;
-  problem.Evaluate(ceres::Problem::EvaluateOptions(), &cost, &residuals, nullptr, &crs);
+  const bool evaluated =
+      problem.Evaluate(ceres::Problem::EvaluateOptions(), &cost, &residuals, nullptr, &crs);
   Eigen::MatrixXd J = Eigen::MatrixXd::Zero(crs.num_rows, crs.num_cols);
   for (int r = 0; r < crs.num_rows; ++r)
     for (int k = crs.rows[r]; k < crs.rows[r + 1]; ++k) J(r, crs.cols[k]) = crs.values[k];
+  const bool finite =
+      std::all_of(residuals.begin(), residuals.end(), [](double r) { return std::isfinite(r); });
+  if (!evaluated || !finite || !J.allFinite())
+    throw std::runtime_error("fit of the " + fit_name(spec) +
+                             " failed: non-finite residuals or Jacobian at the optimum");
   report->residuals = static_cast<int>(residuals.size());
   report->chi2 = 0.0;
   for (double r : residuals) report->chi2 += r * r;
@@ -585,7 +619,7 @@ FitReport fit_model(const MeasuredData& data, const ModelSpec& spec, const Noise
   FitReport report;
   report.converged = sol.summary.IsSolutionUsable();
   report.solver_summary = sol.summary.BriefReport();
-  const Eigen::MatrixXd J = jacobian_at_optimum(*sol.problem, &report);
+  const Eigen::MatrixXd J = jacobian_at_optimum(*sol.problem, spec, &report);
   const std::array<bool, K> undetermined = undetermined_parameters(J, setup.active);
   std::vector<int> est;  // free and determined
   for (int i : setup.active)

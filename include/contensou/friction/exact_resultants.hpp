@@ -15,7 +15,12 @@
 // Gauss-Kronrod (G15K31): centre inside (|v| < |omega| R): beta - gamma in [0, pi] with a
 // breakpoint at the chord that nearly touches the rim as the centre nears it; centre outside:
 // the wedge of chords, parametrised by the chord angle phi (sin theta = (R/d) sin phi), which
-// removes the square root at the tangent rays. omega = 0 (pure sliding) is in closed form.
+// removes the square root at the tangent rays. omega = 0 (pure sliding) is in closed form, with
+// its first order in omega so that d/domega is right there too.
+// Derivatives (ceres::Jet) are finite at every finite input: the result is smooth in v at v = 0
+// for omega != 0 (no |r_c| is differentiated), and at v = omega = 0, where Coulomb friction is
+// set-valued, the convention is zero resultants with zero derivatives (0 is in the set; the
+// fractional law's regularisation gives the same value).
 #pragma once
 
 #include <array>
@@ -119,6 +124,15 @@ T chebyshev_sum(const std::vector<T>& c, const S& t) {
     b1 = b0;
   }
   return c[0] + z * b1 - b2;
+}
+
+// df/dw of the slip-speed law at w > 0: -(f_s - f_k) delta (w/w_s)^delta exp(-(w/w_s)^delta) / w.
+template <class T>
+T friction_slope_at(const SlipSpeedFriction<T>& law, const T& w) {
+  using std::exp;
+  using std::pow;
+  const T z = pow(w / law.reference_speed, law.exponent);
+  return -(law.static_coefficient - law.kinetic_coefficient) * law.exponent * z * exp(-z) / w;
 }
 
 // A chord of the disk through the centre of sliding: points r = foot + tau e, tau in
@@ -319,14 +333,40 @@ ExactResult<T> exact_resultants(const ExactModel<T>& m, const Kinematics<T>& k,
   // Pure sliding, or a centre so far that the spin is below the resolution of the result.
   if (w_abs == 0.0 || w_abs * R < 1e-3 * tol * speed) {
     const auto A = detail::representation_moments(m);
-    const T v = sqrt(k.vx * k.vx + k.vy * k.vy);
+    // |v| and e_v = v/|v| from velocities scaled by their largest component, so that no
+    // square under- or overflows (|v| = 1e-200 or 1e200 is still pure sliding).
+    const double sv = std::max(std::abs(value_of(k.vx)), std::abs(value_of(k.vy)));
+    const T sx = k.vx / sv, sy = k.vy / sv;
+    const T n = sqrt(sx * sx + sy * sy);  // in [1, sqrt 2]: never 0
+    const T v = sv * n, ux = sx / n, uy = sy / n;
     const T mu = m.slip_speed ? friction_at(*m.slip_speed, v) : m.friction;
     const T N = m.pressure * (2.0 * std::numbers::pi * R * R) * A[0];
-    const T ux = k.vx / v, uy = k.vy / v;
+    const T C3 = m.pressure * (std::numbers::pi * R * R * R) * A[1];  // p* pi R^3 A^3
     out.resultants.Fx = -mu * N * ux;
     out.resultants.Fy = -mu * N * m.kappa * uy;
-    out.resultants.Mz = -mu * m.pressure * (std::numbers::pi * R * R * R) * A[1] *
-                        (m.kappa * uy * m.kx - ux * m.ky);
+    out.resultants.Mz = -mu * C3 * (m.kappa * uy * m.kx - ux * m.ky);
+    // First order in omega (theory.md section 2, vc/|vc| linearised about e_v; e_p = z x e_v):
+    //   vc/|vc| = e_v + (omega/|v|) (r.e_v) e_p,  |vc| = |v| - omega (r.e_p),
+    //   integral sigma r dS = C3 k,  integral sigma r r^T dS = C3 R I,
+    //   dF/domega  = -(f C3/|v|) (k.e_v) D e_p + f'(|v|) C3 (k.e_p) D e_v,
+    //   dMz/domega = -C3 R [(f/|v|) (kappa ux^2 + uy^2) + f'(|v|) (kappa uy^2 + ux^2)],
+    // D = diag(1, kappa). Its value is below the tolerance here, but it makes d/domega right
+    // (also at omega = 0). The coefficients are taken as plain numbers: their own derivatives
+    // (~ 1/|v|^2, which overflow for |v| ~ 1e-200) only enter multiplied by omega R << tol |v|;
+    // 1/|v| is capped at 1e300 (below |v| = 1e-300 no derivative in omega is representable).
+    const double uxv = value_of(ux), uyv = value_of(uy), kap = value_of(m.kappa);
+    const double kv = value_of(m.kx) * uxv + value_of(m.ky) * uyv;
+    const double kp = value_of(m.ky) * uxv - value_of(m.kx) * uyv;
+    const double c3 = value_of(C3), iv = std::min(1.0 / value_of(v), 1e300);
+    const double fv = value_of(mu) * iv;
+    const double fp = m.slip_speed ? value_of(detail::friction_slope_at(*m.slip_speed, v)) : 0.0;
+    const double dFx = c3 * (fv * kv * uyv + fp * kp * uxv);
+    const double dFy = c3 * kap * (-fv * kv * uxv + fp * kp * uyv);
+    const double dMz =
+        -c3 * R * (fv * (kap * uxv * uxv + uyv * uyv) + fp * (kap * uyv * uyv + uxv * uxv));
+    out.resultants.Fx += k.omega * dFx;
+    out.resultants.Fy += k.omega * dFy;
+    out.resultants.Mz += k.omega * dMz;
     out.error.Fx += 2.0 * scale_F * w_abs * R / std::max(speed, 1e-300);
     out.error.Fy = out.error.Fx;
     out.error.Mz += out.error.Fx * R;
@@ -335,15 +375,13 @@ ExactResult<T> exact_resultants(const ExactModel<T>& m, const Kinematics<T>& k,
 
   const double sgn = value_of(k.omega) > 0.0 ? 1.0 : -1.0;
   const T abs_omega = sgn * k.omega;
-  // Centre of sliding r_c = (-vy, vx) / omega, at distance d from O in direction g.
+  // Centre of sliding r_c = (-vy, vx) / omega, at distance d from O in direction g. The
+  // interior integral uses rc only polynomially (no d = |r_c|: its derivative is infinite at
+  // v = 0 and loses accuracy like 1/|v| near it); gamma0, the direction of r_c, is a plain
+  // double that only fixes where the range of integration starts.
   const T rcx = -k.vy / k.omega, rcy = k.vx / k.omega;
-  const T d = sqrt(rcx * rcx + rcy * rcy);
-  const double dv = value_of(d);
-  T gx(1.0), gy(0.0);
-  if (dv > 0.0) {
-    gx = rcx / d;
-    gy = rcy / d;
-  }
+  const double rcx_v = value_of(rcx), rcy_v = value_of(rcy);
+  const double dv = std::hypot(rcx_v, rcy_v);
   // Tolerances in integrand units (the factor -f p* is applied at the end).
   const double unit = tol * m.load_area * (m.slip_speed ? fscale : 1.0);
   const std::array<double, 3> tol_out{unit, unit, unit * R};
@@ -390,24 +428,26 @@ ExactResult<T> exact_resultants(const ExactModel<T>& m, const Kinematics<T>& k,
   const bool fine = tol < 1e-8;
   if (dv < R) {
     // Interior centre: the rays at beta and beta + pi form one chord, so
-    // F = integral_0^pi dbeta u(beta) integral_chord sigma (tau - tau_c) dtau, theta = beta -
-    // gamma. The chord through r_c nearly touches the rim at theta = pi/2 when r_c nears the rim
-    // (half-length (R^2 - d^2 + d^2 cos^2 theta)^(1/2)): a breakpoint there, then bisection.
-    const T delta2 = (R - d) * (R + d);
+    // F = integral_0^pi dbeta u(beta) integral_chord sigma (tau - tau_c) dtau. The chord at
+    // beta = gamma0 + theta (e = e(beta)) has tau_c = r_c.e = d cos theta, foot r_c - tau_c e,
+    // t_foot = (r_c x e)^2 / R^2 and half-length (R^2 - d^2 + tau_c^2)^(1/2): it nearly touches
+    // the rim at theta = pi/2 when r_c nears the rim, so a breakpoint there, then bisection.
+    const double gamma0 = dv > 0.0 ? std::atan2(rcy_v, rcx_v) : 0.0;
+    const T delta2 = R * R - (rcx * rcx + rcy * rcy);
     auto f = [&](const double* theta, int n, int, detail::Sample<T, 3>* out_samples) {
       std::array<detail::Chord<T>, detail::kKronrodPoints> chords;
       std::array<T, detail::kKronrodPoints> jac;
       for (int i = 0; i < n; ++i) {
-        const double ct = std::cos(theta[i]), st = std::sin(theta[i]);
+        const double ex = std::cos(gamma0 + theta[i]), ey = std::sin(gamma0 + theta[i]);
         detail::Chord<T>& ch = chords[i];
-        ch.ex = ct * gx - st * gy;
-        ch.ey = ct * gy + st * gx;
-        const T dc = d * ct, ds = d * st;
-        ch.tau_c = dc;             // r_c = foot + (d cos theta) e
-        ch.fx = rcx - dc * ch.ex;  // foot, at distance d |sin theta| from O
-        ch.fy = rcy - dc * ch.ey;
-        ch.h = sqrt(delta2 + dc * dc);
-        ch.t_foot = ds * ds / (R * R);
+        ch.ex = T(ex);
+        ch.ey = T(ey);
+        ch.tau_c = rcx * ex + rcy * ey;
+        ch.fx = rcx - ch.tau_c * ex;
+        ch.fy = rcy - ch.tau_c * ey;
+        ch.h = sqrt(delta2 + ch.tau_c * ch.tau_c);
+        const T cross = rcx * ey - rcy * ex;
+        ch.t_foot = cross * cross / (R * R);
         jac[i] = T(1.0);
       }
       chords_to_samples(chords.data(), jac.data(), n, out_samples);
@@ -426,6 +466,8 @@ ExactResult<T> exact_resultants(const ExactModel<T>& m, const Kinematics<T>& k,
     // Exterior centre: the wedge of chords through r_c, parametrised by the chord angle phi in
     // [-pi/2, pi/2] (sin theta = (R/d) sin phi), which removes the square root of the chord
     // length at the tangent rays; dtheta/dphi = R cos phi / (d cos theta).
+    const T d = sqrt(rcx * rcx + rcy * rcy);  // >= R > 0
+    const T gx = rcx / d, gy = rcy / d;
     const T eps2 = (d - R) * (d + R);
     auto f = [&](const double* phi, int n, int, detail::Sample<T, 3>* out_samples) {
       std::array<detail::Chord<T>, detail::kKronrodPoints> chords;

@@ -5,8 +5,11 @@
 //   F  = -F0 (vx, kappa vy) / S_a                                   S_a = sqrt(v^2 + a u^2 + eps^2)
 //        -(M0 / 2R) [ g2 (z x k) + (g1 - g2) (k.v)(z x v) / v^2 ]
 //   Mz = -M0 (1 + kappa)/2 u / S_m + Mk (vx ky - kappa vy kx) v^2 / S_k^3
-//   g1 = u / sqrt(u^2 + m v^2 / 4 + eps^2),  g2 = u^3 / (u^2 + c v^2 + eps^2)^(3/2),
-//   S_m = sqrt(u^2 + m v^2 + eps^2),          S_k = sqrt(v^2 + a_k u^2 + eps^2).
+//   g1 = u / sqrt(s0 + m v^2 / 4),  g2 = u s0 / (s0 + c v^2)^(3/2),  s0 = u^2 + eps^2,
+//   S_m = sqrt(u^2 + m v^2 + eps^2),  S_k = sqrt(v^2 + a_k u^2 + eps^2).
+// g1 = g2 at v = 0, so (g1 - g2)/v^2 is smooth there: it is evaluated without cancellation as
+//   (g1 - g2)/v^2 = u P / (S1 S2^3 (S2^3 + s0 S1)),  P = s0^2 (3c - m/4) + 3 s0 c^2 v^2 + c^3 v^4
+// (S1, S2 the two roots above), and the law is smooth through v = 0 for every direction of v.
 // For sliding along x with the shift along x this is the seed's law (5) exactly:
 //   F_par = F0 v / sqrt(v^2 + a u^2),  Fy = -kx M0 u / (2R sqrt(u^2 + m v^2/4)),
 //   Mz = -M0 u / sqrt(u^2 + m v^2).
@@ -15,6 +18,9 @@
 // (u/v)^3 (shape c), and the pure-sliding torque Mk k_perp, Mk = pi f R^3 p* A^3, which the
 // exact integrals show to vanish like (v/u)^3 at small sliding (shape a_k; 1 for uniform pressure).
 // Every term is bounded, and the law is smooth for eps > 0: no NaN or Inf for finite input.
+// Evaluation checks the law's fields and the velocities (InvalidArgument naming the first bad
+// one): a NaN velocity, kappa < 0 (friction that generates energy), a <= 0 or eps = 0 never
+// give a silent NaN.
 #pragma once
 
 #include <Eigen/Core>
@@ -22,6 +28,7 @@
 #include <cmath>
 
 #include "contensou/friction/contact_patch.hpp"
+#include "contensou/friction/error.hpp"
 #include "contensou/friction/kinematics.hpp"
 #include "contensou/friction/scalar.hpp"
 
@@ -54,11 +61,34 @@ FractionalLaw<double> fractional_law_fitted(const ContactPatch& patch, double ps
 // Throws InvalidArgument naming the first bad parameter.
 void validate(const FractionalLaw<double>& law);
 
+namespace detail {
+// The checks of validate(), on the values of any scalar (double or ceres::Jet).
+template <class T>
+void check_law(const FractionalLaw<T>& p) {
+  require_non_negative("F0", value_of(p.F0));
+  require_non_negative("M0", value_of(p.M0));
+  require_positive("a", value_of(p.a));
+  require_positive("m", value_of(p.m));
+  require_positive("c", value_of(p.c));
+  require_positive("a_k", value_of(p.a_k));
+  require_positive("kappa", value_of(p.kappa));
+  require_finite("kx", value_of(p.kx));
+  require_finite("ky", value_of(p.ky));
+  require_non_negative("Mk", value_of(p.Mk));
+  require_positive("radius", p.radius);
+  require_positive("regularization_speed", p.regularization_speed);
+}
+}  // namespace detail
+
 // Every term is homogeneous of degree 0 in (v, u, eps): the law is evaluated on velocities
 // divided by s = max(|vx|, |vy|, |u|, eps), which keeps squares finite for any finite input.
 template <class T>
 Resultants<T> fractional_resultants(const FractionalLaw<T>& p, const Kinematics<T>& k0) {
   using std::sqrt;
+  detail::check_law(p);
+  require_finite("vx", value_of(k0.vx));
+  require_finite("vy", value_of(k0.vy));
+  require_finite("omega", value_of(k0.omega));
   const double R = p.radius;
   const double s = std::max({std::abs(value_of(k0.vx)), std::abs(value_of(k0.vy)),
                              std::abs(value_of(k0.omega)) * R, p.regularization_speed});
@@ -67,22 +97,22 @@ Resultants<T> fractional_resultants(const FractionalLaw<T>& p, const Kinematics<
   const T u = k.omega * R;
   const T U = u * u;
   const T q = k.vx * k.vx + k.vy * k.vy;
+  const T s0 = U + e2;
   const T Sa = sqrt(q + p.a * U + e2);
   const T Sm = sqrt(U + p.m * q + e2);
-  const T S1 = sqrt(U + 0.25 * p.m * q + e2);
-  const T S2sq = U + p.c * q + e2;
-  const T S2 = sqrt(S2sq);
-  const T g1 = u / S1;
-  const T g2 = U * u / (S2sq * S2);
+  const T S1 = sqrt(s0 + 0.25 * p.m * q);
+  const T S2sq = s0 + p.c * q;
+  const T S23 = S2sq * sqrt(S2sq);
+  const T g2 = u * s0 / S23;
+  // (g1 - g2) / q without cancellation (header comment).
+  const T P =
+      s0 * s0 * (3.0 * p.c - 0.25 * p.m) + 3.0 * s0 * p.c * p.c * q + p.c * p.c * p.c * q * q;
+  const T Gq = u * P / (S1 * S23 * (S23 + s0 * S1));
+  const T h = Gq * (p.kx * k.vx + p.ky * k.vy);
   const T half_m0_r = p.M0 / (2.0 * R);
   Resultants<T> r;
-  r.Fx = -p.F0 * k.vx / Sa + half_m0_r * g2 * p.ky;
-  r.Fy = -p.F0 * p.kappa * k.vy / Sa - half_m0_r * g2 * p.kx;
-  if (value_of(q) > 1e-30 * (value_of(U) + e2)) {
-    const T h = (g1 - g2) * (p.kx * k.vx + p.ky * k.vy) / q;
-    r.Fx += half_m0_r * h * k.vy;
-    r.Fy -= half_m0_r * h * k.vx;
-  }
+  r.Fx = -p.F0 * k.vx / Sa + half_m0_r * (g2 * p.ky + h * k.vy);
+  r.Fy = -p.F0 * p.kappa * k.vy / Sa - half_m0_r * (g2 * p.kx + h * k.vx);
   const T Sk2 = q + p.a_k * U + e2;
   r.Mz = -p.M0 * 0.5 * (1.0 + p.kappa) * u / Sm +
          p.Mk * (k.vx * p.ky - p.kappa * k.vy * p.kx) * q / (Sk2 * sqrt(Sk2));

@@ -112,6 +112,9 @@ struct NoiseSettings {
 
 // Fits a general model (effect_model.hpp): its free parameters, from spec.value as start.
 // `use` selects the points (empty: all). Used by fit_fractional_law and the closed loop.
+// Throws InvalidArgument for a start or fixed value outside the model's domain, and
+// std::runtime_error naming the fit if the solve fails or its Jacobian is not finite (no
+// covariance or report is computed from a failed solve).
 FitReport fit_model(const MeasuredData& data, const ModelSpec& spec, const NoiseSettings& noise,
                     std::array<double, kModelParameters>* estimate = nullptr,
                     const std::vector<char>& use = {});

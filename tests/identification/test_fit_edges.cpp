@@ -1,0 +1,162 @@
+// Issue 10, items 1 and 2: the rows a rig produces (pure spin, pure sliding, v = omega = 0,
+// negative omega, any sliding direction) give finite values and finite, correct derivatives
+// in the parameters through every path of the fitted model (fractional law, every effect of
+// the catalogue, the exact integrals, speed dependence in both forms), and fit.
+#include <ceres/jet.h>
+#include <gtest/gtest.h>
+
+#include <array>
+#include <cmath>
+#include <string>
+
+#include "contensou/identification.hpp"
+
+using namespace contensou;
+
+namespace {
+
+constexpr double kSpin = 11.49425287;  // u = omega R = 1 m/s on the seed tire
+
+template <int N>
+bool all_finite(const Resultants<ceres::Jet<double, N>>& r) {
+  for (const auto* x : {&r.Fx, &r.Fy, &r.Mz}) {
+    if (!std::isfinite(x->a)) return false;
+    for (int i = 0; i < N; ++i)
+      if (!std::isfinite(x->v[i])) return false;
+  }
+  return true;
+}
+
+}  // namespace
+
+// --- The model of the closed loop: every path, Jets in the parameters --------------------
+
+namespace {
+
+constexpr int K = kModelParameters;
+using JK = ceres::Jet<double, K>;
+
+std::array<double, K> edge_theta() {
+  std::array<double, K> t{};
+  for (int i = 0; i < K; ++i) t[i] = parameter_info(i).null_value;
+  t[kF0] = 1360.0;
+  t[kA] = 1.03;
+  t[kM0] = 72.0;
+  t[kMShape] = 9.28;
+  t[kKx] = 0.14;
+  t[kKy] = 0.03;
+  t[kKappa] = 0.9;
+  t[kSpeedDrop] = 0.2;
+  t[kSpeedRef] = 2.0;
+  for (int c = 0; c < 3; ++c) t[offset_parameter(c)] = 3.0;
+  for (int i = kXFxFy; i <= kXMzFy; ++i) t[i] = 0.01;
+  t[kShapeBlend] = 0.4;
+  t[kProfileB1] = 0.1;
+  t[kProfileB2] = -0.05;
+  return t;
+}
+
+struct Path {
+  const char* name;
+  ModelSpec spec;
+};
+
+std::vector<Path> every_path() {
+  const double R = 0.087;
+  ModelSpec law = base_model_spec(R, std::nullopt);
+  law.exact_tolerance = 1e-12;
+  ModelSpec blend = law;  // law + exact integrals over the parametric profile
+  blend.free[kShapeBlend] = blend.free[kProfileB1] = blend.free[kProfileB2] = true;
+  ModelSpec exact = law;  // exact integrals over the seed profile only
+  ContactPatch patch = seed_tire_patch();
+  patch.friction = 1.0;
+  exact.profile_model = make_exact_model(patch, 1e-10);
+  exact.exact_only = true;
+  ModelSpec inside = exact;  // friction falling with the local slip speed
+  inside.speed_in_exact = true;
+  ModelSpec inside_blend = blend;
+  inside_blend.speed_in_exact = true;
+  return {{"fractional law", law},
+          {"shape blend", blend},
+          {"exact over the profile", exact},
+          {"speed inside the exact integrals", inside},
+          {"speed inside, parametric profile", inside_blend}};
+}
+
+}  // namespace
+
+// Every effect of the catalogue is on (offsets, crosstalk, speed drop, shift, anisotropy,
+// blend, profile), at every row a rig produces: values and Jets finite, Jets = differences.
+TEST(ModelEdges, EveryPathHasFiniteCorrectDerivativesAtTheEdges) {
+  const std::array<double, K> theta = edge_theta();
+  const Kinematics<double> rows[] = {{0.0, 0.0, kSpin},  {0.0, 0.0, -kSpin}, {0.5, 0.0, 0.0},
+                                     {0.0, -0.4, 0.0},   {-0.3, 0.4, 0.0},   {0.0, 0.0, 0.0},
+                                     {0.2, 0.0, -kSpin}, {1e-200, 0.0, 0.0}, {1e-12, 0.0, kSpin}};
+  std::array<JK, K> tj;
+  for (int i = 0; i < K; ++i) tj[i] = JK(theta[i], i);
+  for (const Path& path : every_path()) {
+    for (const Kinematics<double>& k : rows) {
+      const std::string what = std::string(path.name) + " at (" + std::to_string(k.vx) + ", " +
+                               std::to_string(k.vy) + ", " + std::to_string(k.omega) + ")";
+      const Resultants<JK> rj = evaluate_model(path.spec, tj.data(), k);
+      ASSERT_TRUE(all_finite(rj)) << what;
+      const Resultants<double> r = evaluate_model(path.spec, theta.data(), k);
+      EXPECT_NEAR(rj.Fx.a, r.Fx, 1e-9 * 1360.0) << what;
+      const JK out[3] = {rj.Fx, rj.Fy, rj.Mz};
+      for (int i = 0; i < K; ++i) {
+        const double h = 1e-6 * std::max(1.0, std::abs(theta[i]));
+        std::array<double, K> tp = theta, tm = theta;
+        tp[i] += h;
+        tm[i] -= h;
+        const Eigen::Vector3d fd = (evaluate_model(path.spec, tp.data(), k).vector() -
+                                    evaluate_model(path.spec, tm.data(), k).vector()) /
+                                   (2 * h);
+        for (int c = 0; c < 3; ++c) {
+          const double scale = std::max(std::abs(fd(c)), 1e-6);
+          // Differencing noise: ~1e-16 of the ~1.4 kN resultants, over h.
+          EXPECT_NEAR(out[c].v[i], fd(c), 1e-5 * scale + 1e-13 * 1400.0 / h)
+              << what << " d/d" << parameter_info(i).name << " channel " << c;
+        }
+      }
+    }
+  }
+}
+
+// --- Identification from data with exact zeros (the library; the app: tests/cli) --------
+
+TEST(IdentificationEdges, FitsDiagramsWithPureSpinSlideAndRestRows) {
+  const MeasuredData data = read_measured_csv(CONTENSOU_TEST_DATA_DIR "/seed_tire_edge_rows.csv");
+  IdentificationOptions o;
+  o.radius_m = 0.087;
+  o.profile = seed_tire_profile();
+  const FitReport fit = fit_fractional_law(data, o);
+  EXPECT_TRUE(fit.converged) << fit.solver_summary;
+  for (const ParameterEstimate& p : fit.parameters) {
+    EXPECT_TRUE(std::isfinite(p.value)) << p.name;
+    EXPECT_TRUE(p.ci95.has_value()) << p.name;
+  }
+  EXPECT_NEAR(fit.parameter("kx")->value, 0.14, 0.02);
+  // The exact model (what the closed loop accepts for these data) on the same rows.
+  ModelSpec spec = base_spec_for(data, o);
+  spec.exact_only = true;
+  spec.free[kA] = spec.free[kM0] = spec.free[kMShape] = false;
+  const FitReport exact = fit_model(data, spec, noise_settings_for(o));
+  EXPECT_TRUE(exact.converged) << exact.solver_summary;
+  EXPECT_NEAR(exact.parameter("F0_N")->value, 0.3 * 4535.02, 15.0);
+  EXPECT_TRUE(exact.parameter("kx")->ci95.has_value());
+}
+
+// Item 2: a fit never goes on from a failed solve or a bad parameter; it says which.
+TEST(IdentificationEdges, BadFixedValueIsReportedByNameNotAsACrash) {
+  const MeasuredData data = read_measured_csv(CONTENSOU_TEST_DATA_DIR "/seed_tire_edge_rows.csv");
+  IdentificationOptions o;
+  o.radius_m = 0.087;
+  ModelSpec spec = base_spec_for(data, o);
+  spec.value[kKappa] = -1.0;  // friction that would generate energy
+  try {
+    fit_model(data, spec, noise_settings_for(o));
+    FAIL() << "no exception";
+  } catch (const InvalidArgument& e) {
+    EXPECT_EQ(e.parameter(), "kappa");
+  }
+}
