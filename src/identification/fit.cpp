@@ -61,6 +61,22 @@ double channel_peak(const MeasuredData& d, int c) {
   return m;
 }
 
+// The magnitude of each channel: its largest |y|, but at least 1e-3 of the data's force scale
+// (the largest |Fx|, |Fy|, |Mz| / R; times R for Mz), so that a channel measured as zero (Fy of
+// a symmetric tire sliding straight) gets a finite noise floor and weight.
+std::array<double, kChannels> channel_magnitudes(const MeasuredData& d, double radius) {
+  std::array<double, kChannels> peak{};
+  for (int c = 0; c < kChannels; ++c) peak[c] = channel_peak(d, c);
+  const double force = std::max({peak[0], peak[1], peak[2] / radius, 1e-300});
+  for (int c = 0; c < kChannels; ++c)
+    peak[c] = std::max(peak[c], 1e-3 * force * (c == 2 ? radius : 1.0));
+  return peak;
+}
+
+// Smallest noise scale estimated from the scatter: 1e-6 of the channel's magnitude (additive),
+// 1e-6 (relative). Below it the weights would come from rounding, not from noise.
+constexpr double kNoiseFloor = 1e-6;
+
 // Bounds that keep the model physical, on the packed active parameters.
 void set_bounds(ceres::Problem& problem, double* packed, const std::vector<int>& active) {
   for (std::size_t j = 0; j < active.size(); ++j) {
@@ -311,7 +327,7 @@ struct FitSetup {
   std::array<int, kChannels> counts{};  // measured values per channel
   int n = 0;                            // measured values in all
   int p_free = 0;
-  std::array<double, kChannels> peak{};       // largest |y| per channel
+  std::array<double, kChannels> peak{};       // magnitude per channel (channel_magnitudes)
   std::array<double, kChannels> floor_rel{};  // 5 % of the peak: floor of relative noise
   std::vector<int> active;                    // free parameters, in index order
   std::array<double, K> theta_const{};        // values of the others
@@ -332,10 +348,8 @@ FitSetup prepare_fit(const MeasuredData& data, const ModelSpec& spec, const Nois
     throw InvalidArgument(
         "data", std::to_string(s.n) + " measured values",
         "need more measured values than free parameters (" + std::to_string(s.p_free) + ")");
-  for (int c = 0; c < kChannels; ++c) {
-    s.peak[c] = channel_peak(data, c);
-    s.floor_rel[c] = 0.05 * std::max(s.peak[c], 1e-12);
-  }
+  s.peak = channel_magnitudes(data, spec.radius_m);
+  for (int c = 0; c < kChannels; ++c) s.floor_rel[c] = 0.05 * s.peak[c];
   for (int i = 0; i < K; ++i)
     if (spec.free[i]) s.active.push_back(i);
   s.theta_const = spec.value;
@@ -381,8 +395,9 @@ double estimate_noise_scales(const FitSetup& s, const std::vector<Resultants<dou
       ss += e * e;
     }
     const double dof_c = s.counts[c] * (1.0 - static_cast<double>(s.p_free) / s.n);
-    const double s_new = std::sqrt(ss / std::max(dof_c, 1.0));
-    if (s_new > 0.0) {
+    const double s_floor = kNoiseFloor * (s.noise.model == NoiseModel::relative ? 1.0 : s.peak[c]);
+    const double s_new = std::max(std::sqrt(ss / std::max(dof_c, 1.0)), s_floor);
+    {
       change = std::max(change, std::abs(s_new - scale[c]) / scale[c]);
       scale[c] = s_new;
     }
@@ -475,32 +490,36 @@ std::array<bool, K> undetermined_parameters(const Eigen::MatrixXd& J,
   return undetermined;
 }
 
-// Covariance of the determined parameters, s^2 (J^T J)^-1 with s^2 = chi^2 / (n - p) (Ceres
-// Covariance, the undetermined ones held); a K x K matrix, or nothing when it cannot be had.
-std::optional<Eigen::MatrixXd> parameter_covariance(const FitSetup& s, Solution& sol,
-                                                    const std::array<bool, K>& undetermined,
+// Covariance of the determined parameters, s^2 (J_e^T J_e)^-1 with s^2 = chi^2 / (n - p) and
+// J_e the Jacobian's columns of those parameters, from the SVD of the column-normalised J_e:
+// (J_e^T J_e)^-1 = D^-1 V S^-2 V^T D^-1, D = diag(column norms). Normalising first keeps the
+// result accurate when the columns differ by many orders of magnitude (a channel measured as
+// zero, say). A K x K matrix, or nothing when it cannot be had.
+std::optional<Eigen::MatrixXd> parameter_covariance(const Eigen::MatrixXd& J,
+                                                    const std::vector<int>& active,
                                                     const std::vector<int>& est,
                                                     const FitReport& report) {
-  if (est.empty() || report.degrees_of_freedom <= 0) return std::nullopt;
-  std::vector<int> hold;  // packed positions of undetermined parameters
-  for (std::size_t j = 0; j < s.active.size(); ++j)
-    if (undetermined[s.active[j]]) hold.push_back(static_cast<int>(j));
-  if (!hold.empty())
-    sol.problem->SetManifold(sol.packed.data(),
-                             new ceres::SubsetManifold(static_cast<int>(s.active.size()), hold));
-  ceres::Covariance::Options copt;
-  copt.algorithm_type = ceres::DENSE_SVD;
-  copt.null_space_rank = -1;
-  ceres::Covariance covariance(copt);
-  const double* block = sol.packed.data();
-  std::vector<std::pair<const double*, const double*>> blocks{{block, block}};
-  if (!covariance.Compute(blocks, sol.problem.get())) return std::nullopt;
-  std::vector<double> c(est.size() * est.size());
-  covariance.GetCovarianceBlockInTangentSpace(block, block, c.data());
+  if (est.empty() || report.degrees_of_freedom <= 0 || !J.allFinite()) return std::nullopt;
+  const auto p = static_cast<Eigen::Index>(est.size());
+  Eigen::MatrixXd Je(J.rows(), p);
+  for (Eigen::Index a = 0; a < p; ++a) {
+    const auto col = std::find(active.begin(), active.end(), est[static_cast<std::size_t>(a)]);
+    Je.col(a) = J.col(static_cast<Eigen::Index>(col - active.begin()));
+  }
+  const Eigen::VectorXd norms = Je.colwise().norm();
+  if (!(norms.minCoeff() > 0.0)) return std::nullopt;
+  const Eigen::MatrixXd Jn = Je * norms.cwiseInverse().asDiagonal();
+  const Eigen::JacobiSVD<Eigen::MatrixXd> svd(Jn, Eigen::ComputeThinV);
+  const Eigen::VectorXd sv = svd.singularValues();
+  if (!(sv(p - 1) > 1e-12 * sv(0))) return std::nullopt;
+  const Eigen::MatrixXd Vs = svd.matrixV() * sv.cwiseInverse().asDiagonal();
+  const Eigen::MatrixXd inv =
+      norms.cwiseInverse().asDiagonal() * (Vs * Vs.transpose()) * norms.cwiseInverse().asDiagonal();
   const double s2 = report.chi2 / (report.residuals - report.free_parameters);
   Eigen::MatrixXd cov = Eigen::MatrixXd::Zero(K, K);
-  for (std::size_t a = 0; a < est.size(); ++a)
-    for (std::size_t b = 0; b < est.size(); ++b) cov(est[a], est[b]) = s2 * c[a * est.size() + b];
+  for (Eigen::Index a = 0; a < p; ++a)
+    for (Eigen::Index b = 0; b < p; ++b)
+      cov(est[static_cast<std::size_t>(a)], est[static_cast<std::size_t>(b)]) = s2 * inv(a, b);
   return cov;
 }
 
@@ -600,7 +619,7 @@ void report_quality(const FitSetup& s, const Solution& sol, FitReport& report) {
   const int measured = static_cast<int>(report.channels.size());
   for (int c = 0, k = 0; c < kChannels; ++c) {
     if (s.counts[c] == 0) continue;
-    const double rel = report.channels[k++].rms / std::max(s.peak[c], 1e-300);
+    const double rel = report.channels[k++].rms / s.peak[c];
     err2 += rel * rel;
   }
   report.error = std::sqrt(err2 / std::max(measured, 1));
@@ -628,8 +647,7 @@ FitReport fit_model(const MeasuredData& data, const ModelSpec& spec, const Noise
   int estimated_scales = 0;  // each estimated noise scale uses up a degree of freedom too
   for (int c = 0; c < kChannels; ++c) estimated_scales += setup.counts[c] > 0 && !noise.given;
   report.degrees_of_freedom = report.residuals - report.free_parameters - estimated_scales;
-  const std::optional<Eigen::MatrixXd> cov =
-      parameter_covariance(setup, sol, undetermined, est, report);
+  const std::optional<Eigen::MatrixXd> cov = parameter_covariance(J, setup.active, est, report);
   report_parameters(spec, sol.theta, undetermined, est, cov, report);
   if (!spec.exact_only) report.law = fractional_law_of(spec, sol.theta.data());
   report_quality(setup, sol, report);
@@ -643,8 +661,9 @@ void weighted_jacobian(const MeasuredData& data, const ModelSpec& spec,
                        Eigen::VectorXd* r, Eigen::MatrixXd* J, const std::vector<char>& use,
                        std::vector<int>* row_point) {
   std::array<double, K> theta = theta_in;
+  const std::array<double, kChannels> peak = channel_magnitudes(data, spec.radius_m);
   std::array<double, kChannels> floor_rel{};
-  for (int c = 0; c < kChannels; ++c) floor_rel[c] = 0.05 * std::max(channel_peak(data, c), 1e-12);
+  for (int c = 0; c < kChannels; ++c) floor_rel[c] = 0.05 * peak[c];
   const std::vector<Resultants<double>> pred = evaluate_all(spec, theta.data(), data);
   // Columns for the parameters that are free or scored (non-null or listed as free); the
   // others get zero columns.

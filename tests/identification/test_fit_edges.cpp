@@ -160,3 +160,34 @@ TEST(IdentificationEdges, BadFixedValueIsReportedByNameNotAsACrash) {
     EXPECT_EQ(e.parameter(), "kappa");
   }
 }
+
+// A channel measured as exact zeros (Fy of a symmetric tire sliding straight, or a rig that
+// writes 0 for a channel it did not record) must not take over the fit: its noise scale has a
+// floor, the covariance is computed on normalised columns, and every parameter keeps an
+// interval of honest width.
+TEST(IdentificationEdges, ChannelOfExactZerosKeepsEveryIntervalHonest) {
+  ContactPatch patch = seed_tire_patch();  // kx = 0: Fy = 0 when sliding along x
+  const FractionalLaw<double> law = fractional_law_from_patch(patch);
+  DiagramSpec s;
+  s.radius_m = patch.radius_m;
+  s.points = 40;
+  s.noise_level = 0.01;
+  s.seed = 7;
+  MeasuredData d = simulate_diagrams(law, s);
+  for (MeasuredPoint& p : d.points) p.force[1] = 0.0;
+  IdentificationOptions o;
+  o.radius_m = patch.radius_m;
+  const FitReport r = fit_fractional_law(d, o);
+  const double truth[] = {law.F0, law.a, law.M0, law.m};
+  const char* names[] = {"F0_N", "a", "M0_Nm", "m"};
+  for (int i = 0; i < 4; ++i) {
+    const ParameterEstimate* e = r.parameter(names[i]);
+    ASSERT_NE(e, nullptr);
+    ASSERT_TRUE(e->determined) << names[i];
+    ASSERT_TRUE(e->ci95.has_value()) << names[i];
+    EXPECT_GT(e->std_error, 1e-6 * std::abs(e->value)) << names[i];  // not a zero-width interval
+    EXPECT_LT(std::abs(e->value - truth[i]), 5.0 * e->std_error) << names[i];
+  }
+  EXPECT_LT(std::abs(r.parameter("kx")->value), 1e-6);
+  EXPECT_TRUE(std::isfinite(r.error));
+}
