@@ -1,6 +1,8 @@
 // contensou-identify: fit the fractional law to measured friction diagrams (and simulate them).
 #include <unistd.h>
 
+#include <glog/logging.h>
+
 #include <CLI/CLI.hpp>
 #include <cstdio>
 #include <filesystem>
@@ -57,7 +59,7 @@ int run_fit(const std::string& data_path, double radius, std::optional<double> l
             const std::vector<std::string>& fixes, const std::string& loss, double loss_scale,
             const std::string& noise_model, const std::vector<double>& noise_scale,
             const std::string& json_path, const std::string& plots_dir, bool loop_on, double alpha,
-            bool speed_inside) {
+            bool speed_inside, int failing_point) {
   IdentificationOptions o;
   o.radius_m = radius;
   require_positive("--radius", radius);
@@ -76,6 +78,7 @@ int run_fit(const std::string& data_path, double radius, std::optional<double> l
     }
   }
   for (const std::string& f : fixes) o.fixed.insert(parse_fix(f));
+  o.failing_point = failing_point;
   o.loss = loss == "huber"    ? RobustLoss::huber
            : loss == "cauchy" ? RobustLoss::cauchy
                               : RobustLoss::none;
@@ -104,11 +107,27 @@ int run_fit(const std::string& data_path, double radius, std::optional<double> l
   ClosedLoopOptions lo;
   lo.alpha = alpha;
   lo.speed_inside_integrals = speed_inside;
-  if (isatty(fileno(stderr)))  // progress for people; in scripts stderr keeps errors only
-    lo.progress = [](const std::string& line) {
-      std::fprintf(stderr, "[closed loop] %s\n", line.c_str());
+  // Progress for people: one line, rewritten in place, on a terminal; in scripts and pipes
+  // stderr keeps errors only.
+  bool progress_shown = false;
+  if (isatty(fileno(stderr)))
+    lo.progress = [&progress_shown](const std::string& line) {
+      std::fprintf(stderr, "\r\033[K[closed loop] %s", line.c_str());
+      std::fflush(stderr);
+      progress_shown = true;
     };
-  const ClosedLoopReport loop = close_the_loop(data, o, lo);
+  auto end_progress = [&progress_shown] {
+    if (progress_shown) std::fprintf(stderr, "\r\033[K");
+    progress_shown = false;
+  };
+  ClosedLoopReport loop;
+  try {
+    loop = close_the_loop(data, o, lo);
+  } catch (...) {
+    end_progress();
+    throw;
+  }
+  end_progress();
   std::printf("%s %s: base model, the fractional law (seed eqs. 5-7)\n%s", kName, kVersion,
               app::format_table(info, loop.base).c_str());
   std::printf("%s", app::format_loop(loop).c_str());
@@ -219,7 +238,8 @@ int main(int argc, char** argv) {
   std::optional<double> load, pressure;
   std::vector<std::string> fixes;
   std::vector<double> noise_scale;
-  bool no_loop = false, speed_inside = false;
+  bool no_loop = false, speed_inside = false, verbose = false;
+  int failing_point = -1;
   double alpha = 1e-3;
   app.add_option("data", data_path,
                  "measured diagrams (CSV: vx_mps, vy_mps, omega_radps, Fx_N, ...)");
@@ -247,6 +267,10 @@ int main(int argc, char** argv) {
   app.add_flag("--speed-inside-integrals", speed_inside,
                "closed loop: slip-speed friction at the local speed inside the exact integrals "
                "(exact, much slower)");
+
+  app.add_flag("--verbose", verbose, "show the solver's own log (Ceres, glog) on stderr");
+  // Testing only (hidden): the residual of this data point fails to evaluate.
+  app.add_option("--test-failing-point", failing_point)->group("");
 
   SimulateArgs sim;
   auto* simulate =
@@ -291,12 +315,17 @@ int main(int argc, char** argv) {
   } catch (const CLI::ParseError& e) {
     return app.exit(e);
   }
+  // Ceres logs through glog: quiet unless asked for.
+  FLAGS_logtostderr = true;
+  FLAGS_minloglevel = verbose ? google::GLOG_INFO : google::GLOG_FATAL;
+  google::InitGoogleLogging(argv[0]);
   try {
     if (simulate->parsed()) return run_simulate(sim);
     if (data_path.empty()) throw std::runtime_error("no data file given (see --help)");
     if (radius == 0.0) throw std::runtime_error("--radius is required (patch radius in m)");
     return run_fit(data_path, radius, load, profile_spec, pressure, fixes, loss, loss_scale,
-                   noise_model, noise_scale, json_path, plots_dir, !no_loop, alpha, speed_inside);
+                   noise_model, noise_scale, json_path, plots_dir, !no_loop, alpha, speed_inside,
+                   failing_point);
   } catch (const std::exception& e) {
     std::fprintf(stderr, "%s: error: %s\n", kName, e.what());
     return 1;

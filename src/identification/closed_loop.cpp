@@ -345,9 +345,15 @@ ClosedLoopReport close_the_loop(const MeasuredData& data, const IdentificationOp
     for (std::size_t rank = 0; rank < order.size() && !accepted_any; ++rank) {
       if (rank > 0 && sorted[rank].p_value >= threshold) break;
       const Candidate& c = cands[order[rank]];
+      const ModelSpec ext_spec = extend(st.spec, c, speed_ref, loop);
+      const int values = data.count(0) + data.count(1) + data.count(2);
+      if (values < measured_values_needed(data, ext_spec, noise)) {
+        say(loop, step_label(step) + c.effect + " not fitted: too little data for its parameters");
+        continue;
+      }
       say(loop, step_label(step) + "fitting " + c.effect +
                     (c.detail.empty() ? "" : " (" + c.detail + ")"));
-      const LoopState ext = fit_state(data, extend(st.spec, c, speed_ref, loop), noise);
+      const LoopState ext = fit_state(data, ext_spec, noise);
       LoopStep trial = test_extension(data, st, ext, c, threshold, noise.model, loop);
       trial.scores = sorted;
       say(loop, step_label(step) + c.effect + (trial.accepted ? " accepted" : " rejected") + " (" +

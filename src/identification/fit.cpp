@@ -32,9 +32,11 @@ struct PointResidual {
   std::array<int, kChannels> slot{};  // residual index of each measured channel
   const std::vector<int>* active = nullptr;
   const std::array<double, K>* theta_const = nullptr;
+  bool fail = false;  // NoiseSettings::failing_point (testing the failed-solve path)
 
   template <class T>
   bool operator()(T const* const* packed, T* r) const {
+    if (fail) return false;
     std::array<T, K> theta;
     for (int i = 0; i < K; ++i) theta[i] = T((*theta_const)[i]);
     for (std::size_t j = 0; j < active->size(); ++j) theta[(*active)[j]] = packed[0][j];
@@ -125,12 +127,14 @@ int add_points(ceres::Problem& problem, const MeasuredData& data, const ModelSpe
                double* packed, const std::array<double, kChannels>& scale, NoiseModel noise,
                const std::array<double, kChannels>& floor_rel,
                const std::vector<Resultants<double>>& prediction, const std::vector<char>& use,
-               RobustLoss loss_kind, double loss_scale) {
+               RobustLoss loss_kind, double loss_scale, int failing_point = -1) {
   int total = 0;
   for (std::size_t i = 0; i < data.points.size(); ++i) {
     if (!use.empty() && !use[i]) continue;
     const MeasuredPoint& pt = data.points[i];
-    auto* f = new PointResidual{&spec, pt.kinematics, {}, {}, {}, &active, &theta_const};
+    auto* f =
+        new PointResidual{&spec, pt.kinematics, {},           {},
+                          {},    &active,       &theta_const, static_cast<int>(i) == failing_point};
     int m = 0;
     for (int c = 0; c < kChannels; ++c) {
       if (!pt.force[c]) continue;
@@ -238,6 +242,7 @@ NoiseSettings noise_settings_for(const IdentificationOptions& o) {
   n.loss = o.loss;
   n.loss_scale = o.loss_scale;
   n.iterations = o.noise_iterations;
+  n.failing_point = o.failing_point;
   return n;
 }
 
@@ -344,10 +349,15 @@ FitSetup prepare_fit(const MeasuredData& data, const ModelSpec& spec, const Nois
       for (int c = 0; c < kChannels; ++c) s.counts[c] += data.points[i].force[c].has_value();
   for (int c = 0; c < kChannels; ++c) s.n += s.counts[c];
   s.p_free = static_cast<int>(std::count(spec.free.begin(), spec.free.end(), true));
-  if (s.n <= s.p_free)
-    throw InvalidArgument(
-        "data", std::to_string(s.n) + " measured values",
-        "need more measured values than free parameters (" + std::to_string(s.p_free) + ")");
+  // Refused before fitting (measured_values_needed).
+  int scales = 0;
+  for (int c = 0; c < kChannels; ++c) scales += s.counts[c] > 0 && !noise.given;
+  const int needed = s.p_free + scales + 1;
+  if (s.n < needed)
+    throw InvalidArgument("data", std::to_string(s.n) + " measured values",
+                          "too little data: the fit needs at least " + std::to_string(needed) +
+                              " (" + std::to_string(s.p_free) + " free parameters + " +
+                              std::to_string(scales) + " estimated noise scales + 1)");
   s.peak = channel_magnitudes(data, spec.radius_m);
   for (int c = 0; c < kChannels; ++c) s.floor_rel[c] = 0.05 * s.peak[c];
   for (int i = 0; i < K; ++i)
@@ -421,7 +431,8 @@ Solution solve(const FitSetup& s) {
   for (int round = 0; round < rounds; ++round) {
     sol.problem = std::make_unique<ceres::Problem>();
     add_points(*sol.problem, s.data, s.spec, s.active, s.theta_const, sol.packed.data(), sol.scale,
-               s.noise.model, s.floor_rel, sol.prediction, s.use, s.noise.loss, s.noise.loss_scale);
+               s.noise.model, s.floor_rel, sol.prediction, s.use, s.noise.loss, s.noise.loss_scale,
+               s.noise.failing_point);
     set_bounds(*sol.problem, sol.packed.data(), s.active);
     ceres::Solver::Options opt;
     opt.linear_solver_type = ceres::DENSE_QR;
@@ -630,6 +641,13 @@ void report_quality(const FitSetup& s, const Solution& sol, FitReport& report) {
 }
 
 }  // namespace
+
+int measured_values_needed(const MeasuredData& data, const ModelSpec& spec,
+                           const NoiseSettings& noise) {
+  int needed = static_cast<int>(std::count(spec.free.begin(), spec.free.end(), true)) + 1;
+  for (int c = 0; c < kChannels; ++c) needed += data.count(c) > 0 && !noise.given;
+  return needed;
+}
 
 FitReport fit_model(const MeasuredData& data, const ModelSpec& spec, const NoiseSettings& noise,
                     std::array<double, K>* estimate, const std::vector<char>& use) {

@@ -36,8 +36,26 @@ printf 'vx_mps,vy_mps,omega_radps,Fx_N\n1,0,10,-5\n1,0,10,nan\n' > "$dir/nonfini
 expect "non-finite value" "nonfinite.csv:3: column 'Fx_N' (4): non-finite value 'nan'" \
   "$app" "$dir/nonfinite.csv" --radius 0.1 --json "$dir/report.json"
 printf 'vx_mps,vy_mps,omega_radps,Fx_N\n1,0,10,-5\n2,0,10,-6\n' > "$dir/few.csv"
-expect "fewer points than parameters" "need more measured values than free parameters" \
+expect "fewer points than parameters" \
+  "data = 2 measured values: too little data: the fit needs at least 7 (5 free parameters + 1 estimated noise scales + 1)" \
   "$app" "$dir/few.csv" --radius 0.1 --json "$dir/report.json"
+printf 'vx_mps,vy_mps,omega_radps,Fx_N\n1,0,10,-5\n2,0,10,-6\n3,0,10,-7\n4,0,10,-7\n5,0,10,-7\n6,0,10,-7\n' > "$dir/six.csv"
+expect "one value short" "too little data: the fit needs at least 7" \
+  "$app" "$dir/six.csv" --radius 0.1 --json "$dir/report.json"
+expect "failed evaluation, law" \
+  "fit of the fractional law (free: F0_N, a, M0_Nm, m, kx) failed: Residual and Jacobian evaluation failed" \
+  "$app" "$good" --radius 0.087 --no-loop --test-failing-point 3 --json "$dir/report.json"
+expect "failed evaluation, loop" "failed: Residual and Jacobian evaluation failed" \
+  "$app" "$good" --radius 0.087 --test-failing-point 0 --json "$dir/report.json"
+printf 'vx_mps,vy_mps,omega_rpm,Fx_N\n1,0,10,-5\n' > "$dir/unit.csv"
+expect "other unit" "missing required column 'omega_radps' (did you mean 'omega_rpm'?)" \
+  "$app" "$dir/unit.csv" --radius 0.1 --json "$dir/report.json"
+printf 'vx_mps,vy_mps,omega_radps,Fx_n\n1,0,10,-5\n' > "$dir/case.csv"
+expect "misspelt channel" "column 'Fx_n' (4) is not a column this reader knows: did you mean 'Fx_N'?" \
+  "$app" "$dir/case.csv" --radius 0.1 --json "$dir/report.json"
+printf '1,0,10,-5\n2,0,10,-6\n' > "$dir/noheader.csv"
+expect "no header" "the first row holds numbers, not column names" \
+  "$app" "$dir/noheader.csv" --radius 0.1 --json "$dir/report.json"
 expect "zero radius" "--radius is required" "$app" "$good" --radius 0 --json "$dir/report.json"
 expect "negative radius" "radius = -0.1:" "$app" "$good" --radius -0.1 --json "$dir/report.json"
 expect "negative load" "normal-load = -4000" \
@@ -62,5 +80,5 @@ else
   echo "FAIL good input"
   fails=$((fails + 1))
 fi
-echo "$((13 - fails)) passed, $fails failed"
+echo "$((19 - fails)) passed, $fails failed"
 [ "$fails" -eq 0 ]

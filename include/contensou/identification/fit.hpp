@@ -48,6 +48,7 @@ struct IdentificationOptions {
   double loss_scale = 2.0;             // robust loss threshold, in noise scales
   int noise_iterations = 6;            // fit / scatter / refit rounds when s_c is estimated
   double regularization_speed = 1e-6;  // eps of the law [m/s]
+  int failing_point = -1;              // testing only: see NoiseSettings::failing_point
 };
 
 struct ParameterEstimate {
@@ -108,6 +109,9 @@ struct NoiseSettings {
   RobustLoss loss = RobustLoss::none;
   double loss_scale = 2.0;
   int iterations = 6;
+  // Testing only: the residual of this point (index into the data) fails to evaluate, so that
+  // the failed-solve path (an error naming the fit, no report) can be exercised. -1: none.
+  int failing_point = -1;
 };
 
 // Fits a general model (effect_model.hpp): its free parameters, from spec.value as start.
@@ -118,6 +122,11 @@ struct NoiseSettings {
 FitReport fit_model(const MeasuredData& data, const ModelSpec& spec, const NoiseSettings& noise,
                     std::array<double, kModelParameters>* estimate = nullptr,
                     const std::vector<char>& use = {});
+
+// Measured values a fit of `spec` needs at least: free parameters + estimated noise scales + 1
+// (one degree of freedom left for the intervals). fit_model refuses fewer.
+int measured_values_needed(const MeasuredData& data, const ModelSpec& spec,
+                           const NoiseSettings& noise);
 
 // Weighted residuals r and their Jacobian J with respect to all kModelParameters parameters
 // at theta (weights 1/s_c, times 1/max(|yhat|, 5 % of the peak) for relative noise).

@@ -1,0 +1,64 @@
+#!/usr/bin/env bash
+# contensou-identify on files written the way labs write them (issue 10, item 4): the same
+# diagrams (with pure-spin, pure-slide and rest rows) as Excel writes them (UTF-8 BOM, CRLF,
+# quoted header, trailing empty columns), as a European Excel writes them (';' and decimal
+# comma), and with a tabulated pressure profile that has a kink, from a BOM+CRLF file.
+# Each must give the same report as the plain file. Usage: identify_lab_files.sh APP DATA_DIR
+set -u
+app="$1"
+plain="$2/seed_tire_edge_rows.csv"
+dir=$(mktemp -d)
+trap 'rm -rf "$dir"' EXIT
+fails=0
+run() {  # run NAME DATA [ARGS...]: report in $dir/NAME.json, without the data path
+  local name="$1" data="$2"
+  shift 2
+  if ! "$app" "$data" --radius 0.087 --profile seed-tire --pressure 2.1e5 --no-loop \
+    --json "$dir/$name.json" "$@" > "$dir/$name.out" 2> "$dir/$name.err"; then
+    echo "FAIL $name: $(cat "$dir/$name.err")"
+    fails=$((fails + 1))
+    return 1
+  fi
+  grep -v "$data" "$dir/$name.json" > "$dir/$name.cmp"
+}
+run plain "$plain"
+
+# Excel: BOM, CRLF, quoted header names, two trailing empty columns, a blank row of separators.
+excel="$dir/excel.csv"
+{
+  printf '\357\273\277'
+  grep -v '^#' "$plain" | awk -F, 'NR == 1 { for (i = 1; i <= NF; ++i) $i = "\"" $i "\"" }
+    { OFS = ","; $1 = $1; printf "%s,,\r\n", $0 } END { printf ",,,,,,,,\r\n" }'
+} > "$excel"
+# European Excel: ';' between cells, decimal comma, cells padded with spaces.
+euro="$dir/euro.csv"
+grep -v '^#' "$plain" | sed -e 's/,/ ; /g' -e 's/\./,/g' > "$euro"
+for v in excel euro; do
+  if run "$v" "$dir/$v.csv"; then
+    if cmp -s "$dir/plain.cmp" "$dir/$v.cmp"; then
+      echo "ok   $v: same report as the plain file"
+    else
+      echo "FAIL $v: report differs from the plain file"
+      diff "$dir/plain.cmp" "$dir/$v.cmp" | head -5
+      fails=$((fails + 1))
+    fi
+  fi
+done
+
+# A tabulated profile with a kink at rho = 0.8 (as a finite-element table arrives), BOM + CRLF,
+# through the closed loop: a report, no non-finite number.
+{
+  printf '\357\273\277rho,pressure_Pa\r\n'
+  awk 'BEGIN { for (i = 0; i <= 40; ++i) { r = i / 40;
+    p = r < 0.8 ? 2.1e5 * (1 - 0.5 * r * r) : 2.1e5 * (0.68 - 2 * (r - 0.8));
+    printf "%.4f,%.6g\r\n", r, p } }'
+} > "$dir/profile.csv"
+if "$app" "$plain" --radius 0.087 --profile "$dir/profile.csv" --json "$dir/tab.json" \
+  > "$dir/tab.out" 2> "$dir/tab.err" && ! grep -qiE 'nan|inf' "$dir/tab.json"; then
+  echo "ok   tabulated profile with a kink: report written, all numbers finite"
+else
+  echo "FAIL tabulated profile: $(cat "$dir/tab.err")"
+  fails=$((fails + 1))
+fi
+echo "$fails failed"
+[ "$fails" -eq 0 ]
