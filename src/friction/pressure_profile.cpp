@@ -209,6 +209,7 @@ PressureProfile tabulated_profile(std::vector<double> rho, std::vector<double> p
     require_finite(("p[" + std::to_string(k) + "]").c_str(), p[k]);
     if (rho[k] < 0.0 || rho[k] > 1.0 + 1e-12)
       throw InvalidArgument(name, format_value(rho[k]), "must lie in [0, 1]");
+    rho[k] = std::min(rho[k], 1.0);  // past the rim by rounding: on it (then check increase)
     if (k > 0 && !(rho[k] > rho[k - 1]))
       throw InvalidArgument(
           name, format_value(rho[k]),
