@@ -262,8 +262,9 @@ MeasuredProfile read_profile_csv(const std::string& path) {
   out.profile = tabulated_profile(rho, p);
   // Mean pressure = 2 integral_0^1 p rho d rho (in Pa, before normalising).
   const double mean = 2.0 * moment(out.profile, 1);
-  if (!(mean > 0.0))
-    throw ParseError(path, table.header_line, 1, "the profile's mean pressure is not positive");
+  if (!(mean > 0.0 && std::isfinite(mean)))
+    throw ParseError(path, table.header_line, 1,
+                     "the profile's mean pressure is not positive and finite");
   auto& t = std::get<TabulatedShape>(out.profile.shape);
   for (double& v : t.p) v /= mean;
   for (double& v : t.slope) v /= mean;

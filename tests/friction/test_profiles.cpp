@@ -177,3 +177,12 @@ TEST(Profiles, KnotsOnTheRimUpToRoundingMustStillIncrease) {
   EXPECT_ANY_THROW(read_profile_csv(
       write_temp("rim.csv", "rho,pressure_Pa\n0.2,2e5\n1,57e5\n1.000000000001,-1e6\n")));
 }
+
+// Found by the invariants of fuzz_profile_csv on a hand-written edge case: pressures of +-1.7e308
+// overflow the slopes, the mean pressure came out infinite and was accepted, and the profile
+// divided by it was all zeros.
+TEST(Profiles, ProfileCsvWithAnInfiniteMeanPressureIsAnError) {
+  EXPECT_THROW(read_profile_csv(
+                   write_temp("huge.csv", "rho,pressure_Pa\n0,1.7e308\n0.5,-1.7e308\n1,1.7e308\n")),
+               ParseError);
+}
