@@ -63,6 +63,7 @@ nlohmann::json to_json(const ShimmyConfig& c) {
   j["solver"]["output_interval_s"] = c.solver.output_interval_s;
   j["shimmy"]["amplitude_threshold_rad"] = c.criterion.amplitude_threshold_rad;
   j["shimmy"]["sustained_growth_rate_per_s"] = c.criterion.sustained_growth_rate_per_s;
+  j["maps"] = nlohmann::json::array();  // an empty list stays empty (not the defaults)
   for (const auto& [x, y] : c.maps) {
     nlohmann::json m;
     for (const auto& [key, a] : {std::pair{"x", &x}, std::pair{"y", &y}})
@@ -89,6 +90,12 @@ ShimmyConfig read_shimmy_config(const std::string& path) {
     throw ParseError(
         path, line, col,
         "invalid JSON: " + (colon == std::string::npos ? what : what.substr(colon + 2)));
+  } catch (const nlohmann::json::out_of_range& e) {
+    // A number beyond the range of a double ("1e400"): no position given, locate its text.
+    const std::string what = e.what(), number = what.substr(what.find('\'') + 1);
+    const std::size_t pos = r.text.find(number.substr(0, number.find('\'')));
+    const auto [line, col] = line_column(r.text, pos == std::string::npos ? 0 : pos);
+    throw ParseError(path, line, col, "invalid JSON: " + what.substr(what.find("] ") + 2));
   }
   if (!j.is_object()) throw ParseError(path, 1, 1, "the configuration must be a JSON object");
 
@@ -140,6 +147,8 @@ ShimmyConfig read_shimmy_config(const std::string& path) {
                     r.fail_at_key(fk, "unknown key (parameter, from, to, points)");
                   }
                 }
+                if (axis->parameter.empty())
+                  r.fail_at_key(key + "." + name, "each axis needs a 'parameter'");
               }
               c.maps.push_back(axes);
             }

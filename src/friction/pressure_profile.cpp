@@ -209,6 +209,7 @@ PressureProfile tabulated_profile(std::vector<double> rho, std::vector<double> p
     require_finite(("p[" + std::to_string(k) + "]").c_str(), p[k]);
     if (rho[k] < 0.0 || rho[k] > 1.0 + 1e-12)
       throw InvalidArgument(name, format_value(rho[k]), "must lie in [0, 1]");
+    rho[k] = std::min(rho[k], 1.0);  // past the rim by rounding: on it (then check increase)
     if (k > 0 && !(rho[k] > rho[k - 1]))
       throw InvalidArgument(
           name, format_value(rho[k]),
@@ -250,9 +251,9 @@ MeasuredProfile read_profile_csv(const std::string& path) {
       if (!x) throw table.cell_error(row.line, c, "empty cell");
       v[k] = *x;
     }
-    const double r = v[0];
-    if (r < 0.0 || r > 1.0 + 1e-12)
-      throw table.cell_error(row.line, ir, "rho = " + format_value(r) + " outside [0, 1]");
+    if (v[0] < 0.0 || v[0] > 1.0 + 1e-12)
+      throw table.cell_error(row.line, ir, "rho = " + format_value(v[0]) + " outside [0, 1]");
+    const double r = std::min(v[0], 1.0);  // past the rim by rounding: on it
     if (!rho.empty() && !(r > rho.back()))
       throw table.cell_error(row.line, ir,
                              "rho = " + format_value(r) + " not increasing (previous " +
@@ -269,8 +270,9 @@ MeasuredProfile read_profile_csv(const std::string& path) {
   out.profile = tabulated_profile(rho, p);
   // Mean pressure = 2 integral_0^1 p rho d rho (in Pa, before normalising).
   const double mean = 2.0 * moment(out.profile, 1);
-  if (!(mean > 0.0))
-    throw ParseError(path, table.header_line, 0, "the profile's mean pressure is not positive");
+  if (!(mean > 0.0 && std::isfinite(mean)))
+    throw ParseError(path, table.header_line, 0,
+                     "the profile's mean pressure is not positive and finite");
   auto& t = std::get<TabulatedShape>(out.profile.shape);
   for (double& x : t.p) x /= mean;
   for (double& x : t.slope) x /= mean;

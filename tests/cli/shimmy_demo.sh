@@ -59,4 +59,15 @@ expect "bad value" "structure.torsional_inertia_kgm2 = -25: must be positive" \
 expect "bad model" "must be coupled, decoupled or nonholonomic" '{"models": ["rolling"]}'
 expect "bad map parameter" "unknown parameter 'scenario.speed'" \
   '{"maps": [{"x": {"parameter": "scenario.speed"}, "y": {"parameter": "structure.offset_m"}}]}'
+# Found by fuzz_shimmy_config: a number beyond double range escaped as a JSON library error
+# without a position, and a map axis without a parameter was accepted.
+expect "number overflow" "bad.json:2:30: invalid JSON: number overflow parsing '1e2111'" \
+  $'{\n  "scenario": {"end_time_s": 1e2111}}'
+expect "map axis without parameter" "maps.y: each axis needs a 'parameter'" \
+  '{"maps": [{"x": {"parameter": "structure.offset_m"}, "y": {"from": 1}}]}'
+# An empty list of maps prints as an empty list (it was left out: read back, the default maps).
+printf '{"maps": []}' > "$dir/nomaps.json"
+"$app" --config "$dir/nomaps.json" --print-config > "$dir/nomaps_printed.json" || fail "print-config"
+python3 -c 'import json, sys; assert json.load(open(sys.argv[1]))["maps"] == []' \
+  "$dir/nomaps_printed.json" 2> /dev/null || fail "empty maps not printed as []"
 exit $fails

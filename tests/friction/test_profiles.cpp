@@ -4,6 +4,7 @@
 #include <cstdio>
 #include <fstream>
 #include <numbers>
+#include <variant>
 
 #include "contensou/friction/error.hpp"
 #include "contensou/friction/pressure_profile.hpp"
@@ -162,4 +163,26 @@ TEST(Profiles, ProfileCsvErrorsNameLineAndColumn) {
   EXPECT_EQ(line_of("rho,p\n0,1\n1,1\n"), 1);                          // missing column
   EXPECT_EQ(line_of("rho,pressure_Pa\n0,1\n1.5,1\n"), 3);              // outside [0, 1]
   EXPECT_EQ(line_of(""), 0);                                           // empty file
+}
+
+// Found by fuzz_profile_csv: rho = 1 followed by 1 + 1e-12 (both on the rim up to rounding)
+// passed the increase check, then the last knot was set to 1, leaving two equal knots (zero
+// width piece, division by zero in the slopes).
+TEST(Profiles, KnotsOnTheRimUpToRoundingMustStillIncrease) {
+  expect_invalid([] { tabulated_profile({0.2, 1.0, 1.0 + 1e-12}, {2e5, 57e5, -1e6}); }, "rho[2]");
+  // A last knot past the rim by rounding is the rim.
+  const PressureProfile p = tabulated_profile({0.0, 0.5, 1.0 + 1e-12}, {1.0, 1.0, 1.0});
+  EXPECT_EQ(std::get<TabulatedShape>(p.shape).rho.back(), 1.0);
+  // The fuzzer's input (minimised): an error, not a profile with equal knots.
+  EXPECT_ANY_THROW(read_profile_csv(
+      write_temp("rim.csv", "rho,pressure_Pa\n0.2,2e5\n1,57e5\n1.000000000001,-1e6\n")));
+}
+
+// Found by the invariants of fuzz_profile_csv on a hand-written edge case: pressures of +-1.7e308
+// overflow the slopes, the mean pressure came out infinite and was accepted, and the profile
+// divided by it was all zeros.
+TEST(Profiles, ProfileCsvWithAnInfiniteMeanPressureIsAnError) {
+  EXPECT_THROW(read_profile_csv(
+                   write_temp("huge.csv", "rho,pressure_Pa\n0,1.7e308\n0.5,-1.7e308\n1,1.7e308\n")),
+               ParseError);
 }
