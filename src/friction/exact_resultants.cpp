@@ -73,6 +73,17 @@ ExactModel<double> make_exact_model(const ContactPatch& patch, double representa
   ExactModel<double> m;
   const PressureProfile& prof = patch.profile;
   double rho_max = 1.0;
+  // A negative pressure would make friction generate energy there: refuse it unless the
+  // caller chose to clip it or to keep it (PressureProfile).
+  if (!prof.clip_negative && !prof.keep_negative && negative_load_share(prof) > 1e-12) {
+    const auto neg = negative_intervals(prof);
+    throw InvalidArgument("profile", describe(prof),
+                          "negative on rho in (" + format_value(neg.front().first) + ", " +
+                              format_value(neg.front().second) +
+                              "): friction there would generate energy; set clip_negative to clip "
+                              "the pressure at zero, keep_negative to use it as given, or "
+                              "correct the profile");
+  }
   if (prof.clip_negative) {
     const auto neg = negative_intervals(prof);
     if (neg.size() == 1 && neg.front().second >= 1.0 && neg.front().first > 0.0)

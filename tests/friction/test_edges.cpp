@@ -199,6 +199,38 @@ TEST(ExactEdges, HandFilledTabulatedShapeIsRefused) {
   EXPECT_NO_THROW(make_exact_model(p));
 }
 
+// A profile with a negative part: refused unless the caller clips it or keeps it. Clipped, the
+// friction dissipates at every velocity (F.v + Mz omega < 0); the seed tire keeps its published
+// series explicitly (negative on (0.9936, 1], 1.8e-4 of its load).
+TEST(ExactEdges, NegativePressureIsRefusedUnlessClippedOrKept) {
+  ContactPatch p = seed_tire_patch();
+  p.profile = tabulated_profile({0.0, 0.5, 0.8, 1.0}, {1.0, 0.8, -0.3, -0.5});
+  EXPECT_GT(negative_load_share(p.profile), 0.1);
+  try {
+    make_exact_model(p);
+    FAIL() << "a negative profile was accepted";
+  } catch (const InvalidArgument& e) {
+    EXPECT_NE(std::string(e.what()).find("negative on rho in (0."), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("clip_negative"), std::string::npos) << e.what();
+  }
+  p.profile.clip_negative = true;
+  const ExactModel<double> clipped = make_exact_model(p);
+  for (const Kinematics<double>& k : {Kinematics<double>{0.5, 0.0, 0.0},
+                                      {0.0, 0.0, 11.5},
+                                      {0.3, -0.2, 7.0},
+                                      {0.01, 0.02, -20.0}}) {
+    const Resultants<double> r = exact_resultants(clipped, k, {1e-10}).resultants;
+    EXPECT_LT(r.Fx * k.vx + r.Fy * k.vy + r.Mz * k.omega, 0.0);
+  }
+  p.profile.clip_negative = false;
+  p.profile.keep_negative = true;
+  EXPECT_NO_THROW(make_exact_model(p));
+  EXPECT_TRUE(seed_tire_profile().keep_negative);
+  EXPECT_NEAR(negative_load_share(seed_tire_profile()), 1.8e-4, 0.1e-4);
+  EXPECT_NO_THROW(make_exact_model(seed_tire_patch()));
+  EXPECT_EQ(negative_load_share(hertz_profile()), 0.0);
+}
+
 // --- Fractional law ---------------------------------------------------------------------
 
 TEST(FractionalEdges, EvaluationRejectsNaNVelocitiesAndBadFields) {

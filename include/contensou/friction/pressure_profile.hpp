@@ -36,12 +36,16 @@ struct TabulatedShape {
 
 using ProfileShape = std::variant<UniformShape, HertzShape, CosineSeriesShape, TabulatedShape>;
 
-// A pressure profile: the radial shape, the linear shift and the explicit clipping option.
+// A pressure profile: the radial shape, the linear shift and what to do with a negative part.
+// A contact pressure cannot be negative, and friction would generate energy where it is:
+// make_exact_model refuses a profile with a negative part unless the caller chooses to clip it
+// (clip_negative) or to keep it as given (keep_negative, as the seed tire's published series).
 struct PressureProfile {
   ProfileShape shape = UniformShape{};
   double kx = 0.0;             // shift along x (seed eq. 9; 0.14 for the seed's rolling tire)
   double ky = 0.0;             // shift along y
   bool clip_negative = false;  // if true, p is replaced by max(p, 0)
+  bool keep_negative = false;  // if true (and not clipped), a negative part is used as given
 };
 
 PressureProfile uniform_profile();
@@ -74,6 +78,10 @@ double moment(const PressureProfile& profile, int n);
 // Intervals of rho in [0, 1] where the unclipped shape is negative (empty for a physical
 // profile). The seed tire is negative on (0.9936, 1].
 std::vector<std::pair<double, double>> negative_intervals(const PressureProfile& profile);
+
+// Share of the unclipped shape's negative part in its load, integral of max(-p, 0) rho d rho
+// over integral of |p| rho d rho (0 for a physical profile; about 1e-9 for the seed tire).
+double negative_load_share(const PressureProfile& profile);
 
 // A short human-readable name ("uniform", "Hertz", "cosine series (8 terms)", ...).
 std::string describe(const PressureProfile& profile);
