@@ -118,6 +118,8 @@ nlohmann::json loop_report_json(const RunInfo& info, const ClosedLoopReport& loo
                      {"accepted", st.accepted && !st.removed},
                      {"removed_in_backward_pass", st.removed},
                      {"verdict", st.verdict},
+                     {"ambiguous_with", st.ambiguous_with},
+                     {"separation", st.separation},
                      {"parameters", params},
                      {"lr", st.lr},
                      {"lr_dof", st.lr_dof},
@@ -134,6 +136,11 @@ nlohmann::json loop_report_json(const RunInfo& info, const ClosedLoopReport& loo
   }
   r["steps"] = steps;
   r["accepted_effects"] = loop.accepted_effects;
+  nlohmann::json ambiguities = nlohmann::json::array();
+  for (const LoopStep& st : loop.steps)
+    if (st.accepted && !st.removed)
+      for (const std::string& sep : st.separation) ambiguities.push_back(sep);
+  r["ambiguities"] = ambiguities;
   r["final"] = model_json(loop.final_spec.uses_exact() ? "exact" : "fractional",
                           loop.accepted_effects, loop.final_fit);
   r["error_after"] = loop.final_fit.error;
@@ -157,10 +164,26 @@ std::string format_loop(const ClosedLoopReport& loop) {
                   : st.accepted ? "accepted"
                                 : "rejected");
     s += line;
+    if (st.accepted && !st.removed)
+      for (const std::string& alt : st.ambiguous_with)
+        s += "      ambiguous with " + alt + " (see its row; the lower BIC picks " + st.effect +
+             ")\n";
   }
   s += "accepted effects:";
-  for (const std::string& e : loop.accepted_effects) s += " " + e;
+  std::vector<std::string> notes;
+  for (const LoopStep& st : loop.steps)
+    if (st.accepted && !st.removed) {
+      s += " " + st.effect + (st.detail.empty() ? "" : " (" + st.detail + ")");
+      if (!st.ambiguous_with.empty()) {
+        s += " [or";
+        for (std::size_t i = 0; i < st.ambiguous_with.size(); ++i)
+          s += (i ? ", " : " ") + st.ambiguous_with[i];
+        s += "]";
+      }
+      notes.insert(notes.end(), st.separation.begin(), st.separation.end());
+    }
   if (loop.accepted_effects.empty()) s += " none";
+  for (const std::string& n : notes) s += "\nAMBIGUOUS: " + n;
   s += "\nerror before " + fmt("%.4f", loop.base.error) + ", after " +
        fmt("%.4f", loop.final_fit.error) + "\n";
   if (loop.structure_remains)

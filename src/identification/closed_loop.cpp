@@ -10,6 +10,7 @@ namespace contensou {
 namespace {
 
 constexpr int K = kModelParameters;
+constexpr std::size_t kMaxFitted = 4;  // candidates fitted per step at most
 
 struct Candidate {
   std::string effect;
@@ -78,6 +79,59 @@ double lm_statistic(const Eigen::VectorXd& r, const Eigen::MatrixXd& J, const Mo
                                                                 static_cast<double>(A.cols()));
   const double num = z.dot(r);
   return num * num / denom / s2;
+}
+
+// The direction in which a candidate moves the weighted residual, its Jacobian column with the
+// free columns projected out, (I - P_A) z: two candidates with nearly parallel directions
+// explain the same residual.
+Eigen::VectorXd score_direction(const Eigen::MatrixXd& J, const ModelSpec& s, int j) {
+  const Eigen::MatrixXd A = free_columns(J, s);
+  const Eigen::VectorXd z = J.col(j);
+  return z - A * A.colPivHouseholderQr().solve(z);
+}
+
+double direction_correlation(const Eigen::VectorXd& a, const Eigen::VectorXd& b) {
+  if (a.size() == 0 || b.size() != a.size()) return 0.0;
+  const double n = a.norm() * b.norm();
+  return n > 0.0 ? std::abs(a.dot(b)) / n : 0.0;
+}
+
+std::string label(const Candidate& c) {
+  return c.detail.empty() ? c.effect : c.effect + " (" + c.detail + ")";
+}
+
+// What data would tell two candidate effects apart, from what each depends on: an offset does
+// not follow the motion, a slip-speed law follows the spin speed, anisotropy, a lateral shift
+// and crosstalk into or from Fy show in lateral sliding, a crosstalk follows its source
+// channel, the shape shows across psi.
+std::string separating_measurement(const Candidate& a, const Candidate& b,
+                                   const MeasuredData& data) {
+  auto either = [&](const std::string& e) { return a.effect == e || b.effect == e; };
+  auto involves_fy = [](const Candidate& c) {
+    return c.effect == "anisotropy" || c.effect == "pressure_shift_y" ||
+           (c.effect == "channel_crosstalk" && c.detail.find("Fy_N") != std::string::npos);
+  };
+  bool lateral = false;
+  for (const MeasuredPoint& p : data.points)
+    lateral = lateral || std::abs(p.kinematics.vy) > 0.2 * std::abs(p.kinematics.vx);
+  if (either("channel_offset"))
+    return "rows at rest (v = omega = 0) and sweeps with both signs of v and omega separate them: "
+           "an offset does not change sign with the motion";
+  if (either("speed_dependence"))
+    return "a second sweep at another spin speed u = |omega| R separates them: the slip speed "
+           "changes, the ratio psi does not";
+  if ((involves_fy(a) || involves_fy(b)) && !lateral)
+    return "a lateral sweep (sliding along y) separates them";
+  if (either("pressure_shift_y"))
+    return "pure-spin rows in both spin directions separate them: Fx from ky changes sign with "
+           "omega";
+  if (either("channel_crosstalk"))
+    return "sweeps in other sliding directions separate them: a crosstalk follows its source "
+           "channel, friction follows the motion";
+  if (either("shape"))
+    return "more points with psi between 0.1 and 10, where the law's own error is largest, "
+           "separate them";
+  return "sweeps in other sliding directions and at another spin speed separate them";
 }
 
 // The scan of w_s for speed_dependence: log-spaced over the data's effective slip speeds.
@@ -161,7 +215,8 @@ LoopState fit_state(const MeasuredData& data, ModelSpec spec, const NoiseSetting
 std::vector<CandidateScore> score_candidates(const MeasuredData& data, const LoopState& st,
                                              const std::vector<Candidate>& cands,
                                              NoiseModel noise_model, const ClosedLoopOptions& loop,
-                                             double* best_speed_ref) {
+                                             double* best_speed_ref,
+                                             std::vector<Eigen::VectorXd>* directions) {
   ModelSpec scoring = st.spec;
   if (!st.spec.uses_exact()) scoring.free[kShapeBlend] = true;
   Eigen::VectorXd r;
@@ -190,9 +245,11 @@ std::vector<CandidateScore> score_candidates(const MeasuredData& data, const Loo
       }
       sc.statistic = best;
       sc.p_value = std::min(1.0, chi2_survival(best, 1.0) * static_cast<double>(grid.size()));
+      directions->emplace_back();  // scanned: no single direction
     } else {
       sc.statistic = lm_statistic(r, J, st.spec, c.scored);
       sc.p_value = chi2_survival(sc.statistic, 1.0);
+      directions->push_back(score_direction(J, st.spec, c.scored));
     }
     scores.push_back(sc);
   }
@@ -329,8 +386,9 @@ ClosedLoopReport close_the_loop(const MeasuredData& data, const IdentificationOp
     if (cands.empty()) break;
     say(loop, step_label(step) + "scoring " + std::to_string(cands.size()) + " candidate effects");
     double speed_ref = 0.0;
+    std::vector<Eigen::VectorXd> directions;
     const std::vector<CandidateScore> scores =
-        score_candidates(data, st, cands, noise.model, loop, &speed_ref);
+        score_candidates(data, st, cands, noise.model, loop, &speed_ref, &directions);
     std::vector<std::size_t> order(cands.size());
     for (std::size_t i = 0; i < order.size(); ++i) order[i] = i;
     std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) {
@@ -339,10 +397,18 @@ ClosedLoopReport close_the_loop(const MeasuredData& data, const IdentificationOp
     std::vector<CandidateScore> sorted;
     for (std::size_t i : order) sorted.push_back(scores[i]);
     const double threshold = loop.alpha / static_cast<double>(cands.size());
-    // Candidates in order of significance: the most significant is always fitted, the others
-    // while their score is significant; the first that passes the tests is accepted.
-    bool accepted_any = false;
-    for (std::size_t rank = 0; rank < order.size() && !accepted_any; ++rank) {
+    // Candidates in order of significance: the most significant is always fitted, the next
+    // ones while their score is significant (at most kMaxFitted). Of those that pass the tests,
+    // the one with the lowest BIC is accepted; any other that passes within a BIC difference of
+    // 2, or whose score direction correlates above 0.9 with the accepted one's and whose LR is
+    // significant, is named as an alternative the data do not rule out.
+    struct Trial {
+      std::size_t candidate;
+      LoopState ext;
+      LoopStep step;
+    };
+    std::vector<Trial> trials;
+    for (std::size_t rank = 0; rank < order.size() && trials.size() < kMaxFitted; ++rank) {
       if (rank > 0 && sorted[rank].p_value >= threshold) break;
       const Candidate& c = cands[order[rank]];
       const ModelSpec ext_spec = extend(st.spec, c, speed_ref, loop);
@@ -351,19 +417,47 @@ ClosedLoopReport close_the_loop(const MeasuredData& data, const IdentificationOp
         say(loop, step_label(step) + c.effect + " not fitted: too little data for its parameters");
         continue;
       }
-      say(loop, step_label(step) + "fitting " + c.effect +
-                    (c.detail.empty() ? "" : " (" + c.detail + ")"));
-      const LoopState ext = fit_state(data, ext_spec, noise);
+      say(loop, step_label(step) + "fitting " + label(c));
+      LoopState ext = fit_state(data, ext_spec, noise);
       LoopStep trial = test_extension(data, st, ext, c, threshold, noise.model, loop);
       trial.scores = sorted;
-      say(loop, step_label(step) + c.effect + (trial.accepted ? " accepted" : " rejected") + " (" +
-                    trial.verdict + ")");
-      report.steps.push_back(trial);
-      if (trial.accepted) {
-        report.accepted_effects.push_back(c.effect);
-        st = ext;
-        accepted_any = true;
+      trials.push_back({order[rank], std::move(ext), std::move(trial)});
+    }
+    Trial* best = nullptr;
+    for (Trial& t : trials)
+      if (t.step.accepted && (!best || t.step.bic_after < best->step.bic_after)) best = &t;
+    for (Trial& t : trials) {
+      const Candidate& c = cands[t.candidate];
+      if (best && &t != best) {
+        const Candidate& b = cands[best->candidate];
+        const double dbic = t.step.bic_after - best->step.bic_after;
+        const double corr =
+            direction_correlation(directions[t.candidate], directions[best->candidate]);
+        const bool significant = t.step.lr_p_value < t.step.threshold;
+        if (t.step.accepted)
+          t.step.verdict += "; passes too, but " + label(b) + " has the lower BIC (by " +
+                            std::to_string(dbic) + ")";
+        if ((t.step.accepted && dbic < 2.0) || (significant && corr > 0.9)) {
+          LoopStep& chosen = best->step;
+          t.step.verdict += "; ambiguous with the accepted " + label(b);
+          chosen.ambiguous_with.push_back(label(c));
+          chosen.separation.push_back(label(b) + " and " + label(c) +
+                                      " explain the residual about "
+                                      "equally (BIC difference " +
+                                      std::to_string(dbic) + ", score correlation " +
+                                      std::to_string(corr) +
+                                      "): " + separating_measurement(b, c, data));
+        }
+        t.step.accepted = false;
       }
+      say(loop, step_label(step) + label(c) + (t.step.accepted ? " accepted" : " rejected") + " (" +
+                    t.step.verdict + ")");
+    }
+    for (Trial& t : trials) report.steps.push_back(t.step);
+    const bool accepted_any = best != nullptr;
+    if (best) {
+      report.accepted_effects.push_back(cands[best->candidate].effect);
+      st = best->ext;
     }
     if (!accepted_any) break;
   }

@@ -161,3 +161,31 @@ TEST(ClosedLoop, NoEffectOnFractionalLawData) {
   }
   EXPECT_LE(false_positives, replicas / 20);
 }
+
+// Longitudinal sliding only, with anisotropy injected: anisotropy and a crosstalk Mz <- Fy
+// move the residual in the same direction. The loop must accept anisotropy or name it as the
+// alternative of what it accepted, with a lateral sweep as the separating measurement.
+TEST(ClosedLoop, NamesTheAlternativeWhenTwoEffectsExplainTheResidualEqually) {
+  Case c = seed_case();
+  c.patch.kappa = 0.8;
+  DiagramSpec s;
+  s.radius_m = 0.087;
+  s.points = 60;
+  s.noise_level = 0.01;
+  s.seed = 3;
+  const MeasuredData d = simulate_diagrams(make_exact_model(c.patch), s);
+  const ClosedLoopReport r = close_the_loop(d, options());
+  const std::set<std::string> accepted = as_set(r.accepted_effects);
+  bool named = accepted.count("anisotropy") > 0;
+  for (const LoopStep& st : r.steps) {
+    if (!st.accepted || st.removed || st.ambiguous_with.empty()) continue;
+    ASSERT_EQ(st.separation.size(), st.ambiguous_with.size());
+    for (std::size_t i = 0; i < st.ambiguous_with.size(); ++i) {
+      if (st.ambiguous_with[i] != "anisotropy") continue;
+      named = true;
+      EXPECT_NE(st.separation[i].find("a lateral sweep"), std::string::npos) << st.separation[i];
+    }
+  }
+  EXPECT_TRUE(named) << "anisotropy neither accepted nor named as an alternative";
+  EXPECT_FALSE(r.structure_remains);
+}

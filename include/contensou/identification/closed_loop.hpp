@@ -12,11 +12,15 @@
 //   channel_crosstalk   one channel picks up g times another (null 0)
 // Selection at each step: a score (Lagrange-multiplier) test of every candidate at its null
 // from the current fit; candidates are fitted in order of significance (the most significant
-// always, the others while their score is significant), and the first is accepted for which
-// (1) the likelihood-ratio test is significant at alpha / (number of candidates scored),
-// (2) BIC improves and (3) the k-fold cross-validated error improves (one-step approximate
-// refits). Repeats until no candidate passes; then a backward pass removes accepted effects
-// that later ones made redundant. steps lists every fitted candidate.
+// always, up to four while their score is significant); a candidate passes when (1) the
+// likelihood-ratio test is significant at alpha / (number of candidates scored), (2) BIC
+// improves and (3) the k-fold cross-validated error improves (one-step approximate refits),
+// and of those that pass the one with the lowest BIC is accepted. Others that pass within a
+// BIC difference of 2, or whose score direction (Jacobian column with the fitted columns
+// projected out) correlates above 0.9 with the accepted one's and whose LR is significant, are
+// reported as ambiguous alternatives with the measurement that would separate them. Repeats until
+// no candidate passes; then a backward pass removes accepted effects that later ones made
+// redundant. steps lists every fitted candidate.
 #pragma once
 
 #include <functional>
@@ -47,6 +51,11 @@ struct LoopStep {
   double cv_before = 0.0, cv_after = 0.0;
   double error_before = 0.0, error_after = 0.0;
   std::vector<ChannelDiagnostics> channels_before, channels_after;
+  // Alternatives the data do not rule out (each passes within a BIC difference of 2, or has a
+  // score direction correlated above 0.9 and a significant LR), and for each, why and which
+  // measurement would separate it from this one.
+  std::vector<std::string> ambiguous_with;
+  std::vector<std::string> separation;
   FitReport fit_after;  // the extended fit (kept for pictures)
   FitReport fit_before;
 };
