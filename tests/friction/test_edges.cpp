@@ -6,6 +6,8 @@
 #include <ceres/jet.h>
 #include <gtest/gtest.h>
 
+#include "jet_checks.hpp"
+
 #include <array>
 #include <cmath>
 #include <numbers>
@@ -30,15 +32,7 @@ ContactPatch shifted_seed(double kx = 0.14, double ky = -0.05, double kappa = 0.
   return p;
 }
 
-template <int N>
-bool all_finite(const Resultants<ceres::Jet<double, N>>& r) {
-  for (const auto* x : {&r.Fx, &r.Fy, &r.Mz}) {
-    if (!std::isfinite(x->a)) return false;
-    for (int i = 0; i < N; ++i)
-      if (!std::isfinite(x->v[i])) return false;
-  }
-  return true;
-}
+using contensou::test_support::all_finite;
 
 using J3 = ceres::Jet<double, 3>;
 

@@ -5,6 +5,8 @@
 #include <ceres/jet.h>
 #include <gtest/gtest.h>
 
+#include "jet_checks.hpp"
+
 #include <array>
 #include <cmath>
 #include <string>
@@ -17,15 +19,7 @@ namespace {
 
 constexpr double kSpin = 11.49425287;  // u = omega R = 1 m/s on the seed tire
 
-template <int N>
-bool all_finite(const Resultants<ceres::Jet<double, N>>& r) {
-  for (const auto* x : {&r.Fx, &r.Fy, &r.Mz}) {
-    if (!std::isfinite(x->a)) return false;
-    for (int i = 0; i < N; ++i)
-      if (!std::isfinite(x->v[i])) return false;
-  }
-  return true;
-}
+using contensou::test_support::all_finite;
 
 }  // namespace
 
