@@ -13,6 +13,7 @@
 #include <map>
 #include <numbers>
 #include <string>
+#include <vector>
 
 #include "contensou/contensou.hpp"
 
@@ -41,13 +42,50 @@ Kinematics<double> kinematics(double ratio, double R) {
 }
 
 struct Data {
-  ContactPatch patch = seed_patch();
-  ExactModel<double> model = make_exact_model(patch);
-  double fN = patch.friction * normal_load(patch);
+  std::string name;
+  ContactPatch patch;
+  ExactModel<double> model;
+  double fN = 0.0;
+  explicit Data(std::string n, ContactPatch p)
+      : name(std::move(n)),
+        patch(std::move(p)),
+        model(make_exact_model(patch)),
+        fN(model.friction_scale * normal_load(patch)) {}
 };
+
+// A 101-point table with a kink near the rim (a finite-element profile, p in units of p*).
+ContactPatch table_patch() {
+  std::vector<double> rho, p;
+  for (int i = 0; i <= 100; ++i) {
+    const double r = i / 100.0;
+    rho.push_back(r);
+    p.push_back(r < 0.9 ? 1.0 + 0.4 * r * r - 0.9 * std::pow(r, 4) : 0.7439 - 4.0 * (r - 0.9));
+  }
+  ContactPatch c = seed_patch();
+  c.profile = tabulated_profile(rho, p);
+  c.profile.kx = 0.14;
+  return c;
+}
+
+// The profiles of the benchmark: the seed series (the baseline of the ratios), the same series
+// clipped at zero, the 101-point table, and the seed series with f(w) inside the integrals.
+const std::vector<Data>& variants() {
+  static const std::vector<Data> v = [] {
+    std::vector<Data> out;
+    out.emplace_back("seed", seed_patch());
+    ContactPatch clipped = seed_patch();
+    clipped.profile.clip_negative = true;
+    out.emplace_back("clipped", clipped);
+    out.emplace_back("table101", table_patch());
+    ContactPatch fw = seed_patch();
+    fw.slip_speed_friction = SlipSpeedFriction<double>{0.3, 0.2, 5.0, 1.0};
+    out.emplace_back("f(w)", fw);
+    return out;
+  }();
+  return v;
+}
 const Data& data() {
-  static const Data d;
-  return d;
+  return variants().front();
 }
 
 double achieved(const Resultants<double>& r, const Resultants<double>& ref, double fN, double R) {
@@ -55,8 +93,8 @@ double achieved(const Resultants<double>& r, const Resultants<double>& ref, doub
                    std::abs(r.Mz - ref.Mz) / (fN * R)});
 }
 
-void BM_Exact(benchmark::State& state, Regime regime, double tol) {
-  const Data& d = data();
+void BM_Exact(benchmark::State& state, const Data* variant, Regime regime, double tol) {
+  const Data& d = *variant;
   const Kinematics<double> k = kinematics(regime.ratio, d.patch.radius_m);
   const auto ref = exact_resultants(d.model, k, {1e-13}).resultants;
   ExactResult<double> r;
@@ -154,8 +192,12 @@ int main(int argc, char** argv) {
   for (double tol : {1e-6, 1e-10}) {
     for (const Regime& r : kRegimes) {
       const std::string suffix = std::string(r.name) + "/tol:" + (tol > 1e-8 ? "1e-6" : "1e-10");
-      benchmark::RegisterBenchmark(("exact/" + suffix).c_str(), BM_Exact, r, tol)
+      benchmark::RegisterBenchmark(("exact/" + suffix).c_str(), BM_Exact, &data(), r, tol)
           ->Unit(benchmark::kMicrosecond);
+      for (std::size_t v = 1; v < variants().size(); ++v)
+        benchmark::RegisterBenchmark(("profile:" + variants()[v].name + "/" + suffix).c_str(),
+                                     BM_Exact, &variants()[v], r, tol)
+            ->Unit(benchmark::kMicrosecond);
       benchmark::RegisterBenchmark(("hcubature/" + suffix).c_str(), BM_Baseline, r, tol)
           ->Unit(benchmark::kMillisecond)
           ->Iterations(tol > 1e-8 ? 20 : 2);
@@ -183,6 +225,23 @@ int main(int argc, char** argv) {
                 run.counters.at("evals").value, run.counters.at("achieved").value, base * 1e3,
                 it->second.counters.at("evals").value, it->second.counters.at("achieved").value,
                 base / ours);
+  }
+  std::printf(
+      "\n| profile | regime | tol | contensou [us] | rays | achieved | estimate | time / seed "
+      "series |\n|---|---|---|---|---|---|---|---|\n");
+  for (const auto& [name, run] : reporter.runs) {
+    if (name.rfind("profile:", 0) != 0) continue;
+    const auto slash = name.find('/');
+    const std::string rest = name.substr(slash + 1);
+    const auto seed = reporter.runs.find("exact/" + rest);
+    if (seed == reporter.runs.end()) continue;
+    const auto slash2 = rest.find('/');
+    std::printf("| %s | %s | %s | %.1f | %.0f | %.1e | %.1e | %.1fx |\n",
+                name.substr(8, slash - 8).c_str(), rest.substr(0, slash2).c_str(),
+                rest.substr(slash2 + 5).c_str(), run.GetAdjustedRealTime(),
+                run.counters.at("evals").value, run.counters.at("achieved").value,
+                run.counters.at("estimate").value,
+                run.GetAdjustedRealTime() / seed->second.GetAdjustedRealTime());
   }
   benchmark::Shutdown();
   return 0;
