@@ -100,6 +100,27 @@ ExactModel<double> make_exact_model(const ContactPatch& patch, double representa
   } else if (std::holds_alternative<HertzShape>(prof.shape)) {
     m.chebyshev = {1.0};
     m.sqrt_edge = true;
+  } else if (const auto* tab = std::get_if<TabulatedShape>(&prof.shape);
+             tab && rho_max == 1.0 && (!prof.clip_negative || negative_intervals(prof).empty())) {
+    // A table: its cubic pieces in t = rho^2 as they are (exact for the interpolant).
+    if (tab->rho.front() > 0.0) {  // constant below the first knot
+      m.knot.push_back(0.0);
+      m.piece.push_back({tab->p.front(), 0.0, 0.0, 0.0});
+    }
+    for (std::size_t k = 0; k + 1 < tab->rho.size(); ++k) {
+      const double ta = tab->rho[k] * tab->rho[k], tb = tab->rho[k + 1] * tab->rho[k + 1];
+      const double h = tb - ta, del = (tab->p[k + 1] - tab->p[k]) / h;
+      const double d0 = tab->slope[k], d1 = tab->slope[k + 1];
+      m.knot.push_back(ta);
+      m.piece.push_back(
+          {tab->p[k], d0, (3.0 * del - 2.0 * d0 - d1) / h, (d0 + d1 - 2.0 * del) / (h * h)});
+    }
+    m.knot.push_back(1.0);
+    detail::update_knot_terms(m.knot, m.piece, m.knot_m0, m.knot_m2);
+    // The far-knot series' deviation, as a bound on the chord integrals' error (in units of
+    // the profile times the chord length, as a profile representation error is).
+    m.representation_error =
+        detail::update_far_sums(m.knot, m.knot_m0, m.knot_m2, m.far_m0, m.far_m2);
   } else {
     const ChebyshevFit fit =
         fit_chebyshev([&](double t) { return shape_value(prof, rho_max * std::sqrt(t)); },
@@ -115,7 +136,7 @@ ExactModel<double> make_exact_model(const ContactPatch& patch, double representa
     m.friction_scale = patch.friction;
   }
   if (m.friction_scale == 0.0) m.friction_scale = 1.0;  // frictionless: tolerance scale only
-  update_chord_transforms(m);
+  if (m.piece.empty()) update_chord_transforms(m);
   m.load_area = 2.0 * std::numbers::pi * patch.radius_m * patch.radius_m * moment(prof, 1);
   if (!(m.load_area > 0.0))
     throw InvalidArgument("profile", describe(prof), "its load integral A^1 must be positive");

@@ -48,13 +48,14 @@ double cos_moment(double c, int n, double b) {
   return static_cast<double>(unit * std::pow(static_cast<long double>(b), n + 1));
 }
 
+// The monotone cubic of a table in t = rho^2 (cubic Hermite on each [t_k, t_k+1], slopes dp/dt).
 double pchip_value(const TabulatedShape& t, double rho) {
   const auto& x = t.rho;
   if (rho <= x.front()) return t.p.front();
   if (rho >= x.back()) return t.p.back();
   const std::size_t k = std::upper_bound(x.begin(), x.end(), rho) - x.begin() - 1;
-  const double h = x[k + 1] - x[k];
-  const double s = (rho - x[k]) / h;
+  const double ta = x[k] * x[k], h = x[k + 1] * x[k + 1] - ta;
+  const double s = (rho * rho - ta) / h;
   const double h00 = (1 + 2 * s) * (1 - s) * (1 - s), h10 = s * (1 - s) * (1 - s);
   const double h01 = s * s * (3 - 2 * s), h11 = s * s * (s - 1);
   return h00 * t.p[k] + h10 * h * t.slope[k] + h01 * t.p[k + 1] + h11 * h * t.slope[k + 1];
@@ -87,9 +88,6 @@ std::vector<double> pchip_slopes(const std::vector<double>& x, const std::vector
   };
   d[0] = end_slope(h[0], h[1], del[0], del[1]);
   d[n - 1] = end_slope(h[n - 2], h[n - 3], del[n - 2], del[n - 3]);
-  // An axisymmetric pressure is even in rho: zero slope at the centre (this also keeps the
-  // profile smooth in t = rho^2, which the exact integrals expand in).
-  if (x[0] == 0.0) d[0] = 0.0;
   return d;
 }
 
@@ -129,8 +127,9 @@ double raw_moment(const PressureProfile& profile, int n, double lo, double hi) {
                    return s;
                  },
                  [&](const TabulatedShape& t) {
-                   // Gauss-Legendre on each cubic piece, exact for degree 3 + n.
-                   const GaussLegendreRule g = gauss_legendre(std::max(2, (n + 5) / 2));
+                   // Gauss-Legendre in rho on each piece (a cubic in rho^2), exact for degree
+                   // 6 + n.
+                   const GaussLegendreRule g = gauss_legendre(n / 2 + 4);
                    std::vector<double> knots{lo};
                    for (double r : t.rho)
                      if (r > lo && r < hi) knots.push_back(r);
@@ -220,7 +219,9 @@ PressureProfile tabulated_profile(std::vector<double> rho, std::vector<double> p
                           "a tabulated profile must reach the rim, rho = 1");
   rho.back() = 1.0;
   TabulatedShape t;
-  t.slope = pchip_slopes(rho, p);
+  std::vector<double> knots_t(rho.size());
+  for (std::size_t k = 0; k < rho.size(); ++k) knots_t[k] = rho[k] * rho[k];
+  t.slope = pchip_slopes(knots_t, p);
   t.rho = std::move(rho);
   t.p = std::move(p);
   PressureProfile out;

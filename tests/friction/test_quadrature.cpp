@@ -51,6 +51,7 @@ void expect_exact(const detail::KronrodNode (&table)[Half], int kronrod_degree, 
 }
 
 TEST(GaussKronrod, K21TableExactToItsDegree) {
+  expect_exact(detail::kGK15, 22, 13);
   expect_exact(detail::kGK21, 31, 19);
 }
 

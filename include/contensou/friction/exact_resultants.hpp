@@ -23,6 +23,7 @@
 // fractional law's regularisation gives the same value).
 #pragma once
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <numbers>
@@ -55,11 +56,18 @@ struct ExactModel {
   std::vector<T> chebyshev;
   bool sqrt_edge = false;
   std::optional<SlipSpeedFriction<T>> slip_speed;
-  std::vector<T> chord_q0, chord_q2;  // chord transforms (update_chord_transforms)
-  std::vector<double> chord_tail;     // sum_{j >= k} |q0_j| + |q2_j|: truncation bound
-  double representation_error = 0.0;  // bound on |p - representation| (dimensionless)
-  double load_area = 0.0;             // N / p* = 2 pi R^2 A^1 [m^2]
-  double friction_scale = 0.0;        // f, or max(f_s, f_k)
+  // A table (TabulatedShape) instead: p = sum_j piece[k][j] (t - knot[k])^j on
+  // [knot[k], knot[k+1]], knot from 0 to 1, and the knot terms of the chord integrals
+  // (knot_m0, knot_m2; update_knot_terms). Exact for the interpolant: no representation error.
+  std::vector<double> knot;
+  std::vector<std::array<double, 4>> piece;
+  std::vector<std::array<double, 4>> knot_m0, knot_m2;
+  std::vector<double> far_m0, far_m2;  // per knot interval: Chebyshev series of the far knots
+  std::vector<T> chord_q0, chord_q2;   // chord transforms (update_chord_transforms)
+  std::vector<double> chord_tail;      // sum_{j >= k} |q0_j| + |q2_j|: truncation bound
+  double representation_error = 0.0;   // bound on |p - representation| (dimensionless)
+  double load_area = 0.0;              // N / p* = 2 pi R^2 A^1 [m^2]
+  double friction_scale = 0.0;         // f, or max(f_s, f_k)
 };
 
 // Builds the model: Chebyshev fit of p in t = rho^2 to representation_tolerance relative to
@@ -89,6 +97,12 @@ ExactModel<T> promote(const ExactModel<double>& m) {
     out.slip_speed = SlipSpeedFriction<T>{T(s.static_coefficient), T(s.kinetic_coefficient),
                                           T(s.reference_speed), T(s.exponent)};
   }
+  out.knot = m.knot;
+  out.piece = m.piece;
+  out.knot_m0 = m.knot_m0;
+  out.knot_m2 = m.knot_m2;
+  out.far_m0 = m.far_m0;
+  out.far_m2 = m.far_m2;
   for (double c : m.chord_q0) out.chord_q0.push_back(T(c));
   for (double c : m.chord_q2) out.chord_q2.push_back(T(c));
   out.chord_tail = m.chord_tail;
@@ -200,6 +214,202 @@ void update_chord_transforms(ExactModel<T>& m) {
 
 namespace detail {
 
+// The knot terms of a piecewise profile's chord integrals (theory.md section 2):
+//   M0(t_f) = integral_{-h}^{h} p(t_f + w^2) dw = integral_{t_f}^1 p(t) (t - t_f)^(-1/2) dt,
+//   M2(t_f) = integral_{-h}^{h} p(t_f + w^2) w^2 dw = integral_{t_f}^1 p(t) (t - t_f)^(1/2) dt.
+// With a piece written about a point t*, p = sum_j c_j (t - t*)^j, the antiderivative from
+// t_f takes at t* the value (t* - t_f)^(1/2) sum_j kappa_j c_j (t* - t_f)^j, kappa_j =
+// sum_i C(j, i) (-1)^(j-i) / (i + 1/2) (and (t* - t_f)^(3/2) sum_j lambda_j c_j (t* - t_f)^j,
+// lambda_j with i + 3/2, for M2). Each knot above t_f then adds, with delta = knot - t_f,
+//   M0 += delta^(1/2) sum_j knot_m0[k][j] delta^j,  M2 += delta^(3/2) sum_j knot_m2[k][j] delta^j,
+// knot_m[k][j] = kappa_j (c_j of the piece below, about the knot - c_j of the piece above):
+// no term is differenced against another of its size, and a C1 table leaves only j = 2, 3.
+inline void update_knot_terms(std::vector<double> const& knot,
+                              std::vector<std::array<double, 4>> const& piece,
+                              std::vector<std::array<double, 4>>& m0,
+                              std::vector<std::array<double, 4>>& m2) {
+  std::array<double, 4> kappa{}, lambda{};
+  for (int j = 0; j < 4; ++j) {
+    double binom = 1.0;
+    for (int i = j; i >= 0; --i) {  // C(j, i) for i = j, j-1, ...
+      const double sign = (j - i) % 2 ? -1.0 : 1.0;
+      kappa[j] += sign * binom / (i + 0.5);
+      lambda[j] += sign * binom / (i + 1.5);
+      binom = binom * i / (j - i + 1);
+    }
+  }
+  const std::size_t n = piece.size();
+  m0.assign(n + 1, {0.0, 0.0, 0.0, 0.0});
+  m2.assign(n + 1, {0.0, 0.0, 0.0, 0.0});
+  for (std::size_t k = 1; k <= n; ++k) {
+    // The piece below, re-expanded about its upper end knot[k]: c_j(up) = sum_i C(i, j) h^(i-j)
+    // c_i.
+    const std::array<double, 4>& c = piece[k - 1];
+    const double h = knot[k] - knot[k - 1];
+    const std::array<double, 4> up = {c[0] + h * (c[1] + h * (c[2] + h * c[3])),
+                                      c[1] + h * (2.0 * c[2] + 3.0 * h * c[3]),
+                                      c[2] + 3.0 * h * c[3], c[3]};
+    for (int j = 0; j < 4; ++j) {
+      const double diff = up[j] - (k < n ? piece[k][j] : 0.0);
+      m0[k][j] = kappa[j] * diff;
+      m2[k][j] = lambda[j] * diff;
+    }
+  }
+}
+
+// Knot crossings of a table's outer integral: at most kMaxCrossings break points per half
+// range (a finer table gets every m-th knot as a break point; adaptivity does the rest), and
+// the interval capacity of its adaptive rule.
+inline constexpr std::size_t kMaxCrossings = 256;
+inline constexpr int kPiecewiseCapacity = 640;
+
+// sqrt(t_k) / s_max of the interior knots with t_k < s_max^2, increasing, thinned to at most
+// kMaxCrossings: the sines of the angles where a chord's foot crosses a knot.
+inline std::size_t knot_breakpoints(const std::vector<double>& knot, double s_max,
+                                    std::size_t max_breaks,
+                                    std::array<double, kMaxCrossings>& out) {
+  if (!(s_max > 0.0)) return 0;
+  max_breaks = std::min(max_breaks, kMaxCrossings);
+  std::size_t inside = 0;
+  for (std::size_t k = 1; k + 1 < knot.size() && knot[k] < s_max * s_max; ++k) ++inside;
+  const std::size_t stride = (inside + max_breaks - 1) / max_breaks;
+  std::size_t n = 0;
+  for (std::size_t k = 1; k <= inside && n < max_breaks; k += std::max<std::size_t>(stride, 1))
+    out[n++] = std::min(1.0, std::sqrt(knot[k]) / s_max);
+  return n;
+}
+
+// Chebyshev terms of the far-knot sums on each knot interval (update_far_sums).
+inline constexpr int kFarTerms = 18;
+
+// The knot sums of M0, M2 at t_f over the knots from `first` on (update_knot_terms).
+inline void knot_sums(const std::vector<double>& knot, const std::vector<std::array<double, 4>>& m0,
+                      const std::vector<std::array<double, 4>>& m2, std::size_t first, double t_f,
+                      double& M0, double& M2) {
+  M0 = M2 = 0.0;
+  for (std::size_t k = first; k < knot.size(); ++k) {
+    const double d = knot[k] - t_f;
+    if (!(d > 0.0)) continue;
+    const double r = std::sqrt(d);
+    const auto& a = m0[k];
+    const auto& b = m2[k];
+    M0 += r * (a[0] + d * (a[1] + d * (a[2] + d * a[3])));
+    M2 += r * d * (b[0] + d * (b[1] + d * (b[2] + d * b[3])));
+  }
+}
+
+// On the knot interval [knot[k], knot[k+1]] the knots from k + 2 on are at least one interval
+// away: their sum is smooth there and is stored as a Chebyshev series of kFarTerms terms, so
+// that a chord costs one knot term and two short series, whatever the number of knots.
+// Returns the largest deviation of the series from the sums at test points (M0 and M2).
+inline double update_far_sums(const std::vector<double>& knot,
+                              const std::vector<std::array<double, 4>>& m0,
+                              const std::vector<std::array<double, 4>>& m2,
+                              std::vector<double>& far0, std::vector<double>& far2) {
+  const std::size_t n = knot.size() - 1;  // intervals
+  constexpr int N = kFarTerms;
+  far0.assign(n * N, 0.0);
+  far2.assign(n * N, 0.0);
+  double dev = 0.0;
+  for (std::size_t k = 0; k < n; ++k) {
+    const double a = knot[k], b = knot[k + 1];
+    double v0[N], v2[N];
+    for (int j = 0; j < N; ++j) {
+      const double z = std::cos(std::numbers::pi * (j + 0.5) / N);
+      knot_sums(knot, m0, m2, k + 2, 0.5 * (a + b) + 0.5 * (b - a) * z, v0[j], v2[j]);
+    }
+    for (int i = 0; i < N; ++i) {
+      double c0 = 0.0, c2 = 0.0;
+      for (int j = 0; j < N; ++j) {
+        const double w = std::cos(std::numbers::pi * i * (j + 0.5) / N);
+        c0 += v0[j] * w;
+        c2 += v2[j] * w;
+      }
+      far0[k * N + i] = (i == 0 ? 1.0 : 2.0) / N * c0;
+      far2[k * N + i] = (i == 0 ? 1.0 : 2.0) / N * c2;
+    }
+    for (double z : {-1.0, -0.77, -0.31, 0.13, 0.58, 0.93, 1.0}) {
+      double e0, e2;
+      knot_sums(knot, m0, m2, k + 2, 0.5 * (a + b) + 0.5 * (b - a) * z, e0, e2);
+      double s0 = 0.0, s2 = 0.0, tp = 1.0, tc = z;
+      for (int i = 0; i < N; ++i) {
+        const double t = i == 0 ? 1.0 : (i == 1 ? z : 2.0 * z * tc - tp);
+        if (i >= 2) {
+          tp = tc;
+          tc = t;
+        }
+        s0 += far0[k * N + i] * t;
+        s2 += far2[k * N + i] * t;
+      }
+      dev = std::max({dev, std::abs(s0 - e0), std::abs(s2 - e2)});
+    }
+  }
+  return dev;
+}
+
+// M0 and M2 of a piecewise profile at t_f: the nearest knot above t_f in closed form, the
+// others from the far-knot series of t_f's interval.
+template <class T>
+void piecewise_chord_moments(const ExactModel<T>& m, const T& t_f, T& M0, T& M2) {
+  using std::sqrt;
+  const std::vector<double>& knot = m.knot;
+  const double tv = value_of(t_f);
+  M0 = T(0.0);
+  M2 = T(0.0);
+  if (!(tv < 1.0)) return;
+  const std::size_t n = knot.size() - 1;
+  std::size_t k = std::upper_bound(knot.begin(), knot.end(), tv) - knot.begin();
+  k = std::min(std::max<std::size_t>(k, 1), n) - 1;  // t_f in [knot[k], knot[k+1])
+  const T d = knot[k + 1] - t_f;
+  const T r = sqrt(d);
+  const auto& a = m.knot_m0[k + 1];
+  const auto& b = m.knot_m2[k + 1];
+  M0 = r * (a[0] + d * (a[1] + d * (a[2] + d * a[3])));
+  M2 = r * d * (b[0] + d * (b[1] + d * (b[2] + d * b[3])));
+  const double lo = knot[k], hi = knot[k + 1];
+  const T z = (2.0 * t_f - lo - hi) / (hi - lo);
+  const double* c0 = m.far_m0.data() + k * kFarTerms;
+  const double* c2 = m.far_m2.data() + k * kFarTerms;
+  T p1(0.0), p2(0.0), q1(0.0), q2(0.0);
+  for (int i = kFarTerms - 1; i >= 1; --i) {
+    const T p0 = c0[i] + 2.0 * z * p1 - p2;
+    const T q0 = c2[i] + 2.0 * z * q1 - q2;
+    p2 = p1;
+    p1 = p0;
+    q2 = q1;
+    q1 = q0;
+  }
+  M0 += c0[0] + z * p1 - p2;
+  M2 += c2[0] + z * q1 - q2;
+}
+
+// The profile of a model at t = rho^2 (Chebyshev series, or piecewise).
+template <class T, class S>
+T profile_at(const ExactModel<T>& m, const S& t) {
+  if (m.piece.empty()) return chebyshev_sum(m.chebyshev, t);
+  const double tv = std::clamp(value_of(t), 0.0, 1.0);
+  std::size_t k = std::upper_bound(m.knot.begin(), m.knot.end(), tv) - m.knot.begin();
+  k = std::min(std::max<std::size_t>(k, 1), m.piece.size()) - 1;
+  const auto& c = m.piece[k];
+  const S s = t - m.knot[k];
+  return T(c[0] + s * (c[1] + s * (c[2] + s * c[3])));
+}
+
+// The chord's moments {integral sigma (tau - tau_c) {1, x, y} dtau} / p* from
+// M0 = integral p dw and M2 = integral p w^2 dw over the chord (w = tau / R):
+//   sigma (tau - tau_c) = R p (A + B w)(w - w_c), x = fx + R ex w.
+template <class T>
+void chord_moments_from(const ExactModel<T>& m, const Chord<T>& ch, const T& M0, const T& M2,
+                        std::array<T, 3>& I) {
+  const double R = m.radius, R2 = R * R;
+  const T wc = ch.tau_c / R;
+  const T A = 1.0 + (m.kx * ch.fx + m.ky * ch.fy) / R;  // shift factor at the foot
+  const T B = m.kx * ch.ex + m.ky * ch.ey;              // its slope per unit w
+  const T odd = A - B * wc;                             // coefficient of w in (A + B w)(w - w_c)
+  I = {R2 * (B * M2 - A * wc * M0), R2 * ((odd * R * ch.ex + B * ch.fx) * M2 - A * wc * ch.fx * M0),
+       R2 * ((odd * R * ch.ey + B * ch.fy) * M2 - A * wc * ch.fy * M0)};
+}
+
 // Closed-form moments of n <= 21 chords at once (no slip-speed law): the Clenshaw sums of
 // the two chord transforms run across the chords, independent chains that vectorise.
 //   sigma (tau - tau_c) = R p (A + B w)(w - w_c), x = fx + R ex w, w = tau / R.
@@ -209,6 +419,14 @@ void chord_moments_closed_form(const ExactModel<T>& m, std::size_t terms, const 
                                std::array<T, 3>* I) {
   constexpr int kMax = kKronrodPoints;
   const double R = m.radius;
+  if (!m.piece.empty()) {
+    for (int i = 0; i < n; ++i) {
+      T M0, M2;
+      piecewise_chord_moments(m, c[i].t_foot, M0, M2);
+      chord_moments_from(m, c[i], M0, M2, I[i]);
+    }
+    return;
+  }
   std::array<T, kMax> z, a1, a2, b1, b2;
   for (int i = 0; i < n; ++i) {
     z[i] = 2.0 * c[i].t_foot - 1.0;
@@ -228,20 +446,14 @@ void chord_moments_closed_form(const ExactModel<T>& m, std::size_t terms, const 
   }
   for (int i = 0; i < n; ++i) {
     const Chord<T>& ch = c[i];
-    const T hp = ch.h / R, wc = ch.tau_c / R;
+    const T hp = ch.h / R;
     T M0 = hp * (q0[0] + z[i] * a1[i] - a2[i]);
     T M2 = hp * hp * hp * (q2[0] + z[i] * b1[i] - b2[i]);
     if (m.sqrt_edge) {
       M0 *= hp;
       M2 *= hp;
     }
-    const T A = 1.0 + (m.kx * ch.fx + m.ky * ch.fy) / R;  // shift factor at the foot
-    const T B = m.kx * ch.ex + m.ky * ch.ey;              // its slope per unit w
-    const T odd = A - B * wc;                             // coefficient of w in (A + B w)(w - w_c)
-    const double R2 = R * R;
-    I[i] = {R2 * (B * M2 - A * wc * M0),
-            R2 * ((odd * R * ch.ex + B * ch.fx) * M2 - A * wc * ch.fx * M0),
-            R2 * ((odd * R * ch.ey + B * ch.fy) * M2 - A * wc * ch.fy * M0)};
+    chord_moments_from(m, ch, M0, M2, I[i]);
   }
 }
 
@@ -267,7 +479,7 @@ std::array<T, 3> chord_moments_adaptive(const ExactModel<T>& m, const Chord<T>& 
     const T tau = c.h * std::sin(th);
     const T x = c.fx + tau * c.ex, y = c.fy + tau * c.ey;
     const T edge = c.h * cs / R;  // sqrt(1 - t)
-    T p = chebyshev_sum(m.chebyshev, 1.0 - edge * edge);
+    T p = profile_at(m, 1.0 - edge * edge);
     if (m.sqrt_edge) p *= edge;
     const T arm = tau - c.tau_c;
     const T w = abs_omega * (value_of(arm) < 0.0 ? -arm : arm);
@@ -289,6 +501,17 @@ template <class T>
 std::array<T, 2> representation_moments(const ExactModel<T>& m) {
   // t = rho^2; with a sqrt edge substitute t = 1 - u^2 (dt = 2u du) to keep it polynomial.
   std::array<T, 2> a{T(0.0), T(0.0)};
+  if (!m.piece.empty()) {  // (1/2) integral p {1, t} dt, piece by piece (cubic: exact)
+    for (std::size_t k = 0; k < m.piece.size(); ++k) {
+      const auto& c = m.piece[k];
+      const double h = m.knot[k + 1] - m.knot[k], t0 = m.knot[k];
+      const double i0 = h * (c[0] + h * (c[1] / 2 + h * (c[2] / 3 + h * c[3] / 4)));
+      const double i1 = h * h * (c[0] / 2 + h * (c[1] / 3 + h * (c[2] / 4 + h * c[3] / 5)));
+      a[0] += T(0.5 * i0);
+      a[1] += T(0.5 * (t0 * i0 + i1));
+    }
+    return a;
+  }
   const GaussLegendreRule g = gauss_legendre(static_cast<int>(m.chebyshev.size()) + 3);
   for (std::size_t i = 0; i < g.nodes.size(); ++i) {
     const double x = 0.5 * (1.0 + g.nodes[i]), w = 0.5 * g.weights[i];
@@ -395,7 +618,7 @@ ExactResult<T> exact_resultants(const ExactModel<T>& m, const Kinematics<T>& k,
   const double shift = 1.0 + std::hypot(value_of(m.kx), value_of(m.ky));
   const double tail_scale = 2.0 * std::numbers::pi * R * R * shift;
   while (terms > 1 && m.chord_tail[terms - 1] * tail_scale <= 1e-3 * unit) --terms;
-  if (!m.slip_speed) {
+  if (!m.slip_speed && m.piece.empty()) {
     const double dropped =
         std::abs(value_of(m.friction) * value_of(m.pressure)) * m.chord_tail[terms] * tail_scale;
     out.error.Fx += dropped;
@@ -426,6 +649,11 @@ ExactResult<T> exact_resultants(const ExactModel<T>& m, const Kinematics<T>& k,
 
   detail::AdaptiveResult<T, 3> res;
   const bool fine = tol < 1e-8;
+  const double pi = std::numbers::pi;
+  // Break points of a table's outer integral (knot crossings), on the stack.
+  std::array<double, detail::kMaxCrossings> half_breaks;
+  const std::size_t max_breaks = tol >= 1e-7 ? 16 : (tol >= 1e-9 ? 64 : 256);
+  std::array<detail::TaggedInterval, 2 * detail::kMaxCrossings + 4> breaks;
   if (dv < R) {
     // Interior centre: the rays at beta and beta + pi form one chord, so
     // F = integral_0^pi dbeta u(beta) integral_chord sigma (tau - tau_c) dtau. The chord at
@@ -454,14 +682,34 @@ ExactResult<T> exact_resultants(const ExactModel<T>& m, const Kinematics<T>& k,
     };
     // G15K31 from quarters (halves for a loose tolerance): at 1e-10 the seed tire converges
     // on this first partition in every regime.
-    const double pi = std::numbers::pi;
     const detail::TaggedInterval quarters[4] = {{0.0, 0.25 * pi, 0},
                                                 {0.25 * pi, 0.5 * pi, 0},
                                                 {0.5 * pi, 0.75 * pi, 0},
                                                 {0.75 * pi, pi, 0}};
     const detail::TaggedInterval halves[2] = {{0.0, 0.5 * pi, 0}, {0.5 * pi, pi, 0}};
-    res = fine ? detail::integrate_adaptive_batch<T, 3, 160, detail::kGK31>(f, quarters, 4, tol_out)
+    if (!m.piece.empty()) {
+      // A table: a chord's foot crosses knot t_k at sin theta = sqrt(t_k) R / d (t_foot =
+      // (d/R)^2 sin^2 theta), where the chord integrals have a (t_k - t_foot)^(5/2) kink:
+      // break there (and at pi/2), G7K15 on each piece.
+      const double s_max = dv / R;
+      const std::size_t crossings =
+          detail::knot_breakpoints(m.knot, s_max, max_breaks, half_breaks);
+      int nb = 0;
+      double prev = 0.0;
+      for (std::size_t j = 0; j <= crossings; ++j) {
+        const double th = j < crossings ? std::asin(half_breaks[j]) : 0.5 * pi;
+        if (th > prev) breaks[nb++] = {prev, th, 0};
+        prev = th;
+      }
+      for (int j = nb - 1; j >= 0; --j)
+        breaks[nb + (nb - 1 - j)] = {pi - breaks[j].b, pi - breaks[j].a, 0};
+      res = detail::integrate_adaptive_batch<T, 3, detail::kPiecewiseCapacity, detail::kGK15>(
+          f, breaks.data(), 2 * nb, tol_out);
+    } else {
+      res =
+          fine ? detail::integrate_adaptive_batch<T, 3, 160, detail::kGK31>(f, quarters, 4, tol_out)
                : detail::integrate_adaptive_batch<T, 3, 160, detail::kGK31>(f, halves, 2, tol_out);
+    }
   } else {
     // Exterior centre: the wedge of chords through r_c, parametrised by the chord angle phi in
     // [-pi/2, pi/2] (sin theta = (R/d) sin phi), which removes the square root of the chord
@@ -489,14 +737,29 @@ ExactResult<T> exact_resultants(const ExactModel<T>& m, const Kinematics<T>& k,
       }
       chords_to_samples(chords.data(), jac.data(), n, out_samples);
     };
-    const double pi = std::numbers::pi;
     const detail::TaggedInterval quarters[4] = {{-0.5 * pi, -0.25 * pi, 0},
                                                 {-0.25 * pi, 0.0, 0},
                                                 {0.0, 0.25 * pi, 0},
                                                 {0.25 * pi, 0.5 * pi, 0}};
     const detail::TaggedInterval halves[2] = {{-0.5 * pi, 0.0, 0}, {0.0, 0.5 * pi, 0}};
-    res = fine ? detail::integrate_adaptive_batch<T, 3, 160, detail::kGK31>(f, quarters, 4, tol_out)
+    if (!m.piece.empty()) {
+      // A table: t_foot = sin^2 phi crosses knot t_k at phi = +-asin(sqrt(t_k)).
+      const std::size_t crossings = detail::knot_breakpoints(m.knot, 1.0, max_breaks, half_breaks);
+      int nb = 0;
+      double prev = 0.0;
+      for (std::size_t j = 0; j <= crossings; ++j) {
+        const double ph = j < crossings ? std::asin(half_breaks[j]) : 0.5 * pi;
+        if (ph > prev) breaks[nb++] = {prev, ph, 0};
+        prev = ph;
+      }
+      for (int j = nb - 1; j >= 0; --j) breaks[nb + (nb - 1 - j)] = {-breaks[j].b, -breaks[j].a, 0};
+      res = detail::integrate_adaptive_batch<T, 3, detail::kPiecewiseCapacity, detail::kGK15>(
+          f, breaks.data(), 2 * nb, tol_out);
+    } else {
+      res =
+          fine ? detail::integrate_adaptive_batch<T, 3, 160, detail::kGK31>(f, quarters, 4, tol_out)
                : detail::integrate_adaptive_batch<T, 3, 160, detail::kGK31>(f, halves, 2, tol_out);
+    }
   }
   const T factor = -(m.slip_speed ? T(1.0) : m.friction) * m.pressure;
   out.resultants.Fx = factor * res.value[0];

@@ -25,13 +25,14 @@ struct CosineSeriesShape {
 };
 
 // A radial profile tabulated at increasing rho in [0, 1] and interpolated by a monotone
-// piecewise cubic (Fritsch-Carlson PCHIP: no new extrema, C1), with zero slope at rho = 0
-// (an axisymmetric pressure is even in rho). Values are dimensionless (divided by the
-// reference pressure).
+// piecewise cubic in t = rho^2 (Fritsch-Carlson PCHIP: no new extrema, C1). In t an
+// axisymmetric pressure is smooth at the centre (it is even in rho), and each piece is a
+// polynomial on every chord, so the exact integrals take it piece by piece, exactly
+// (exact_resultants.hpp). Values are dimensionless (divided by the reference pressure).
 struct TabulatedShape {
   std::vector<double> rho;
   std::vector<double> p;
-  std::vector<double> slope;  // dp/drho at the knots, set by make_tabulated_profile
+  std::vector<double> slope;  // dp/dt at the knots (t = rho^2), set by tabulated_profile
 };
 
 using ProfileShape = std::variant<UniformShape, HertzShape, CosineSeriesShape, TabulatedShape>;

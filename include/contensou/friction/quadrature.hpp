@@ -27,6 +27,19 @@ struct KronrodNode {
   double gauss;    // weight in the embedded 10-point Gauss rule (0 if Kronrod-only)
 };
 
+// Gauss-Kronrod G7K15 on [-1, 1]; the symmetric half (same generator): the rule of the many
+// short intervals between a table's knot crossings (exact_resultants.hpp).
+inline constexpr KronrodNode kGK15[8] = {
+    {9.9145537112081263921e-1, 0.022935322010529224964, 0.0},
+    {9.4910791234275852453e-1, 0.063092092629978553291, 0.12948496616886969327},
+    {8.6486442335976907279e-1, 0.10479001032225018384, 0.0},
+    {7.4153118559939443986e-1, 0.14065325971552591875, 0.2797053914892766679},
+    {5.8608723546769113029e-1, 0.16900472663926790283, 0.0},
+    {4.0584515137739716691e-1, 0.19035057806478540991, 0.38183005050511894495},
+    {2.077849550078984676e-1, 0.20443294007529889241, 0.0},
+    {0.0, 0.20948214108472782801, 0.41795918367346938776},
+};
+
 // Gauss-Kronrod G10K21 on [-1, 1]; the symmetric half. Generated to 20 digits by
 // scripts/gen_kronrod.py (zeros of the Stieltjes polynomial E_11).
 inline constexpr KronrodNode kGK21[11] = {
