@@ -148,13 +148,13 @@ AdaptiveResult<T, Dim> integrate_adaptive_batch(F&& f, const TaggedInterval* ini
 }
 
 // The same for a point integrand f(double x, int tag) -> Sample<T, Dim>.
-template <class T, int Dim, int Capacity = 160, class F>
+template <class T, int Dim, int Capacity = 160, const auto& Rule = kGK21, class F>
 AdaptiveResult<T, Dim> integrate_adaptive(F&& f, const TaggedInterval* initial, int n_initial,
                                           const std::array<double, Dim>& tolerance) {
   auto batch = [&f](const double* x, int n, int tag, Sample<T, Dim>* out) {
     for (int i = 0; i < n; ++i) out[i] = f(x[i], tag);
   };
-  return integrate_adaptive_batch<T, Dim, Capacity>(batch, initial, n_initial, tolerance);
+  return integrate_adaptive_batch<T, Dim, Capacity, Rule>(batch, initial, n_initial, tolerance);
 }
 
 }  // namespace contensou::detail

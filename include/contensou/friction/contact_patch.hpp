@@ -5,6 +5,7 @@
 #include <optional>
 
 #include "contensou/friction/pressure_profile.hpp"
+#include "contensou/friction/scalar.hpp"
 
 namespace contensou {
 
@@ -23,8 +24,12 @@ T friction_at(const SlipSpeedFriction<T>& law, const T& w) {
   using std::exp;
   using std::pow;
   if (!(w > T(0))) return law.static_coefficient;
-  return law.kinetic_coefficient + (law.static_coefficient - law.kinetic_coefficient) *
-                                       exp(-pow(w / law.reference_speed, law.exponent));
+  const T z = w / law.reference_speed;
+  // The exponential (Stribeck) form, exponent 1, is the common case: no pow.
+  const T e = value_of(law.exponent) == 1.0 && !has_derivative(law.exponent)
+                  ? exp(-z)
+                  : exp(-pow(z, law.exponent));
+  return law.kinetic_coefficient + (law.static_coefficient - law.kinetic_coefficient) * e;
 }
 
 // Everything the exact model needs: sigma = p* p(rho) (1 + kx x/R + ky y/R) on a disk of radius

@@ -16,4 +16,16 @@ double value_of(const T& x) {
   }
 }
 
+// Whether a scalar carries a non-zero derivative (always false for a plain double).
+template <class T>
+bool has_derivative(const T& x) {
+  if constexpr (std::is_arithmetic_v<T>) {
+    return false;
+  } else {
+    for (int i = 0; i < static_cast<int>(x.v.size()); ++i)
+      if (x.v[i] != 0.0) return true;
+    return has_derivative(x.a);
+  }
+}
+
 }  // namespace contensou
