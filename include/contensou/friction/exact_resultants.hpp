@@ -279,6 +279,30 @@ inline std::size_t knot_breakpoints(const std::vector<double>& knot, double s_ma
   return n;
 }
 
+// The outer intervals of a table, broken where a chord's foot crosses a knot: on [0, pi/2]
+// at asin of the knot_breakpoints, then mirrored to [pi/2, pi] (mirror = pi: x -> pi - x)
+// or to [-pi/2, 0] (mirror = 0: x -> -x). Returns their number.
+template <std::size_t N>
+int crossing_intervals(const std::vector<double>& knot, double s_max, std::size_t max_breaks,
+                       double mirror, std::array<TaggedInterval, N>& out) {
+  std::array<double, kMaxCrossings> sines;
+  const std::size_t crossings = knot_breakpoints(knot, s_max, max_breaks, sines);
+  const double half_pi = 0.5 * std::numbers::pi;
+  int nb = 0;
+  double prev = 0.0;
+  for (std::size_t j = 0; j <= crossings; ++j) {
+    const double x = j < crossings ? std::asin(sines[j]) : half_pi;
+    if (x > prev) out[nb++] = {prev, x, 0};
+    prev = x;
+  }
+  for (int j = nb - 1; j >= 0; --j) {
+    const double a = mirror == 0.0 ? -out[j].b : mirror - out[j].b;
+    const double b = mirror == 0.0 ? -out[j].a : mirror - out[j].a;
+    out[nb + (nb - 1 - j)] = {a, b, 0};
+  }
+  return 2 * nb;
+}
+
 // Chebyshev terms of the far-knot sums on each knot interval (update_far_sums).
 inline constexpr int kFarTerms = 18;
 
@@ -651,7 +675,6 @@ ExactResult<T> exact_resultants(const ExactModel<T>& m, const Kinematics<T>& k,
   const bool fine = tol < 1e-8;
   const double pi = std::numbers::pi;
   // Break points of a table's outer integral (knot crossings), on the stack.
-  std::array<double, detail::kMaxCrossings> half_breaks;
   const std::size_t max_breaks = tol >= 1e-7 ? 16 : (tol >= 1e-9 ? 64 : 256);
   std::array<detail::TaggedInterval, 2 * detail::kMaxCrossings + 4> breaks;
   if (dv < R) {
@@ -691,20 +714,9 @@ ExactResult<T> exact_resultants(const ExactModel<T>& m, const Kinematics<T>& k,
       // A table: a chord's foot crosses knot t_k at sin theta = sqrt(t_k) R / d (t_foot =
       // (d/R)^2 sin^2 theta), where the chord integrals have a (t_k - t_foot)^(5/2) kink:
       // break there (and at pi/2), G7K15 on each piece.
-      const double s_max = dv / R;
-      const std::size_t crossings =
-          detail::knot_breakpoints(m.knot, s_max, max_breaks, half_breaks);
-      int nb = 0;
-      double prev = 0.0;
-      for (std::size_t j = 0; j <= crossings; ++j) {
-        const double th = j < crossings ? std::asin(half_breaks[j]) : 0.5 * pi;
-        if (th > prev) breaks[nb++] = {prev, th, 0};
-        prev = th;
-      }
-      for (int j = nb - 1; j >= 0; --j)
-        breaks[nb + (nb - 1 - j)] = {pi - breaks[j].b, pi - breaks[j].a, 0};
+      const int nb = detail::crossing_intervals(m.knot, dv / R, max_breaks, pi, breaks);
       res = detail::integrate_adaptive_batch<T, 3, detail::kPiecewiseCapacity, detail::kGK15>(
-          f, breaks.data(), 2 * nb, tol_out);
+          f, breaks.data(), nb, tol_out);
     } else {
       res =
           fine ? detail::integrate_adaptive_batch<T, 3, 160, detail::kGK31>(f, quarters, 4, tol_out)
@@ -744,17 +756,9 @@ ExactResult<T> exact_resultants(const ExactModel<T>& m, const Kinematics<T>& k,
     const detail::TaggedInterval halves[2] = {{-0.5 * pi, 0.0, 0}, {0.0, 0.5 * pi, 0}};
     if (!m.piece.empty()) {
       // A table: t_foot = sin^2 phi crosses knot t_k at phi = +-asin(sqrt(t_k)).
-      const std::size_t crossings = detail::knot_breakpoints(m.knot, 1.0, max_breaks, half_breaks);
-      int nb = 0;
-      double prev = 0.0;
-      for (std::size_t j = 0; j <= crossings; ++j) {
-        const double ph = j < crossings ? std::asin(half_breaks[j]) : 0.5 * pi;
-        if (ph > prev) breaks[nb++] = {prev, ph, 0};
-        prev = ph;
-      }
-      for (int j = nb - 1; j >= 0; --j) breaks[nb + (nb - 1 - j)] = {-breaks[j].b, -breaks[j].a, 0};
+      const int nb = detail::crossing_intervals(m.knot, 1.0, max_breaks, 0.0, breaks);
       res = detail::integrate_adaptive_batch<T, 3, detail::kPiecewiseCapacity, detail::kGK15>(
-          f, breaks.data(), 2 * nb, tol_out);
+          f, breaks.data(), nb, tol_out);
     } else {
       res =
           fine ? detail::integrate_adaptive_batch<T, 3, 160, detail::kGK31>(f, quarters, 4, tol_out)
