@@ -349,6 +349,16 @@ FitSetup prepare_fit(const MeasuredData& data, const ModelSpec& spec, const Nois
       for (int c = 0; c < kChannels; ++c) s.counts[c] += data.points[i].force[c].has_value();
   for (int c = 0; c < kChannels; ++c) s.n += s.counts[c];
   s.p_free = static_cast<int>(std::count(spec.free.begin(), spec.free.end(), true));
+  // Rows at rest (v = omega = 0) measure only the offsets: a fit needs motion.
+  bool moving = false;
+  for (std::size_t i = 0; i < data.points.size(); ++i) {
+    const Kinematics<double>& k = data.points[i].kinematics;
+    moving = moving || (s.used(i) && (k.vx != 0.0 || k.vy != 0.0 || k.omega != 0.0));
+  }
+  if (!moving)
+    throw InvalidArgument("data", std::to_string(data.points.size()) + " rows",
+                          "every row is at rest (v = omega = 0): the friction law needs rows with "
+                          "sliding or spin");
   // Refused before fitting (measured_values_needed).
   int scales = 0;
   for (int c = 0; c < kChannels; ++c) scales += s.counts[c] > 0 && !noise.given;
@@ -415,6 +425,39 @@ double estimate_noise_scales(const FitSetup& s, const std::vector<Resultants<dou
   return change;
 }
 
+// After a failed solve: the first row whose residuals or derivatives are not finite at the
+// current parameters, as " (first at file:line, vx = ...)", or "".
+std::string failing_row(ceres::Problem& problem, const FitSetup& s) {
+  std::vector<ceres::ResidualBlockId> blocks;
+  problem.GetResidualBlocks(&blocks);
+  std::size_t b = 0;
+  for (std::size_t i = 0; i < s.data.points.size() && b < blocks.size(); ++i) {
+    const MeasuredPoint& pt = s.data.points[i];
+    if (!s.used(i) || std::none_of(pt.force.begin(), pt.force.end(),
+                                   [](const std::optional<double>& f) { return f.has_value(); }))
+      continue;
+    const ceres::ResidualBlockId id = blocks[b++];
+    const int m = problem.GetCostFunctionForResidualBlock(id)->num_residuals();
+    std::vector<double> r(static_cast<std::size_t>(m));
+    std::vector<double> jac(static_cast<std::size_t>(m) * s.active.size());
+    double* jp[1] = {jac.data()};
+    double cost = 0.0;
+    const bool ok = problem.EvaluateResidualBlock(id, false, &cost, r.data(), jp);
+    const auto finite = [](double x) { return std::isfinite(x); };
+    if (ok && std::all_of(r.begin(), r.end(), finite) &&
+        std::all_of(jac.begin(), jac.end(), finite))
+      continue;
+    return " (first at " +
+           (pt.line > 0 ? s.data.source + ":" + std::to_string(pt.line)
+                        : "point " + std::to_string(i)) +
+           ", vx = " + format_value(pt.kinematics.vx) +
+           " m/s, vy = " + format_value(pt.kinematics.vy) +
+           " m/s, omega = " + format_value(pt.kinematics.omega) +
+           " rad/s: the model or its derivatives are not finite there)";
+  }
+  return "";
+}
+
 // Build the problem, solve, estimate the noise scales; repeated (warm-started) until the
 // scales settle, once when they are given and additive.
 Solution solve(const FitSetup& s) {
@@ -424,8 +467,20 @@ Solution solve(const FitSetup& s) {
   sol.packed.resize(s.active.size());
   for (std::size_t j = 0; j < s.active.size(); ++j) sol.packed[j] = sol.theta[s.active[j]];
   // The model at the start values, outside Ceres: a parameter outside its domain (a fixed
-  // kappa < 0, say) is reported by name here instead of as a failed solve.
-  evaluate_all(s.spec, sol.theta.data(), s.data);
+  // kappa < 0, say) is reported by name here instead of as a failed solve, and so is a row
+  // whose kinematics the model cannot evaluate (speeds far beyond any rig).
+  const std::vector<Resultants<double>> start = evaluate_all(s.spec, sol.theta.data(), s.data);
+  for (std::size_t i = 0; i < start.size(); ++i) {
+    if (!s.used(i) || start[i].vector().allFinite()) continue;
+    const MeasuredPoint& pt = s.data.points[i];
+    throw InvalidArgument("data",
+                          (pt.line > 0 ? s.data.source + ":" + std::to_string(pt.line)
+                                       : "point " + std::to_string(i)),
+                          "the model is not finite at vx = " + format_value(pt.kinematics.vx) +
+                              " m/s, vy = " + format_value(pt.kinematics.vy) +
+                              " m/s, omega = " + format_value(pt.kinematics.omega) +
+                              " rad/s: check the units of the kinematic columns");
+  }
   const bool fixed_scales = s.noise.given && s.noise.model == NoiseModel::additive;
   const int rounds = fixed_scales ? 1 : std::max(1, s.noise.iterations);
   for (int round = 0; round < rounds; ++round) {
@@ -445,7 +500,7 @@ Solution solve(const FitSetup& s) {
     // Never go on (covariance, report) from a failed solve.
     if (!sol.summary.IsSolutionUsable())
       throw std::runtime_error("fit of the " + fit_name(s.spec) +
-                               " failed: " + sol.summary.message);
+                               " failed: " + sol.summary.message + failing_row(*sol.problem, s));
     for (std::size_t j = 0; j < s.active.size(); ++j) sol.theta[s.active[j]] = sol.packed[j];
     sol.prediction = evaluate_all(s.spec, sol.theta.data(), s.data);
     if (fixed_scales) break;

@@ -53,6 +53,12 @@ expect "other unit" "missing required column 'omega_radps' (did you mean 'omega_
 printf 'vx_mps,vy_mps,omega_radps,Fx_n\n1,0,10,-5\n' > "$dir/case.csv"
 expect "misspelt channel" "column 'Fx_n' (4) is not a column this reader knows: did you mean 'Fx_N'?" \
   "$app" "$dir/case.csv" --radius 0.1 --json "$dir/report.json"
+{ echo 'vx_mps,vy_mps,omega_radps,Fx_N,Fy_N,Mz_Nm'; for i in 1 2 3 4 5 6 7 8; do echo '0,0,0,0.1,-0.2,0'; done; } > "$dir/rest.csv"
+expect "every row at rest" "every row is at rest (v = omega = 0)" \
+  "$app" "$dir/rest.csv" --radius 0.1 --json "$dir/report.json"
+{ echo 'vx_mps,vy_mps,omega_radps,Fx_N,Fy_N,Mz_Nm'; for i in 1 2 3 4 5 6 7 8; do echo "1e200,0,$i,-1000,0,-1"; done; } > "$dir/units.csv"
+expect "speeds beyond any rig" "units.csv:2, vx = 1e+200 m/s" \
+  "$app" "$dir/units.csv" --radius 0.087 --no-loop --json "$dir/report.json"
 printf '1,0,10,-5\n2,0,10,-6\n' > "$dir/noheader.csv"
 expect "no header" "the first row holds numbers, not column names" \
   "$app" "$dir/noheader.csv" --radius 0.1 --json "$dir/report.json"
@@ -80,5 +86,5 @@ else
   echo "FAIL good input"
   fails=$((fails + 1))
 fi
-echo "$((19 - fails)) passed, $fails failed"
+echo "$((21 - fails)) passed, $fails failed"
 [ "$fails" -eq 0 ]
