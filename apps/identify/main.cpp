@@ -23,18 +23,37 @@ constexpr const char* kName = "contensou-identify";
 struct ProfileChoice {
   PressureProfile profile;
   std::optional<double> reference_pressure;  // from a CSV profile
+  std::string description;
+  std::optional<double> rms_residual_pa, max_residual_pa;  // of a smoothing fit
 };
 
-// A profile CSV path or a built-in name: uniform, hertz, seed-tire.
-ProfileChoice load_profile(const std::string& spec) {
-  if (spec == "uniform") return {uniform_profile(), std::nullopt};
-  if (spec == "hertz") return {hertz_profile(), std::nullopt};
-  if (spec == "seed-tire") return {seed_tire_profile(), std::nullopt};
+// A profile CSV path or a built-in name: uniform, hertz, seed-tire. With smoothing > 0 a CSV
+// is fitted by a Chebyshev series in rho^2 of that many terms instead of interpolated.
+ProfileChoice load_profile(const std::string& spec, int smoothing = 0) {
+  if (spec == "uniform") return {uniform_profile(), std::nullopt, "uniform", {}, {}};
+  if (spec == "hertz") return {hertz_profile(), std::nullopt, "Hertz", {}, {}};
+  if (spec == "seed-tire")
+    return {seed_tire_profile(), std::nullopt, "the seed tire's series (Table 1)", {}, {}};
   if (!std::filesystem::exists(spec))
     throw std::runtime_error("--profile " + spec +
                              ": no such file (or use uniform, hertz, seed-tire)");
-  const MeasuredProfile m = read_profile_csv(spec);
-  return {m.profile, m.reference_pressure_pa};
+  if (smoothing <= 0) {
+    const MeasuredProfile m = read_profile_csv(spec);
+    return {m.profile, m.reference_pressure_pa, spec + ", " + describe(m.profile), {}, {}};
+  }
+  const ProfileTable t = read_profile_table(spec);
+  SmoothedProfile fit = smoothed_profile(t.rho, t.pressure_pa, smoothing);
+  // Mean pressure of the fit = 2 integral_0^1 p rho d rho [Pa]; the shape is p / mean.
+  const double mean = 2.0 * moment(fit.profile, 1);
+  if (!(mean > 0.0 && std::isfinite(mean)))
+    throw std::runtime_error("--profile-smoothing " + std::to_string(smoothing) + ": the fit of " +
+                             spec + " has no positive mean pressure");
+  for (double& c : std::get<ChebyshevShape>(fit.profile.shape).c) c /= mean;
+  if (!negative_intervals(fit.profile).empty()) fit.profile.clip_negative = true;
+  return {fit.profile, mean,
+          spec + ", " + describe(fit.profile) + " fitted to " + std::to_string(t.rho.size()) +
+              " points" + (fit.profile.clip_negative ? ", clipped at 0" : ""),
+          fit.rms_residual, fit.max_residual};
 }
 
 std::pair<std::string, double> parse_fix(const std::string& s) {
@@ -59,14 +78,18 @@ int run_fit(const std::string& data_path, double radius, std::optional<double> l
             const std::vector<std::string>& fixes, const std::string& loss, double loss_scale,
             const std::string& noise_model, const std::vector<double>& noise_scale,
             const std::string& json_path, const std::string& plots_dir, bool loop_on, double alpha,
-            bool speed_inside, int failing_point) {
+            bool speed_inside, int failing_point, int smoothing) {
   IdentificationOptions o;
   o.radius_m = radius;
   require_positive("--radius", radius);
+  if (smoothing > 0 && (profile_spec.empty() || !std::filesystem::exists(profile_spec)))
+    throw std::runtime_error("--profile-smoothing needs --profile with a CSV file");
+  ProfileChoice profile;
   if (load) require_positive("--normal-load", *load);
   o.normal_load_n = load;
   if (!profile_spec.empty()) {
-    const ProfileChoice p = load_profile(profile_spec);
+    profile = load_profile(profile_spec, smoothing);
+    const ProfileChoice& p = profile;
     o.profile = p.profile;
     const std::optional<double> ps = p.reference_pressure ? p.reference_pressure : pressure;
     if (ps) {
@@ -90,8 +113,14 @@ int run_fit(const std::string& data_path, double radius, std::optional<double> l
     o.noise_scale = std::array<double, 3>{noise_scale[0], noise_scale[1], noise_scale[2]};
   }
   const MeasuredData data = read_measured_csv(data_path);
-  app::RunInfo info{data_path, static_cast<int>(data.points.size()),
-                    data.count(0) + data.count(1) + data.count(2), radius, o.normal_load_n};
+  app::RunInfo info{data_path,
+                    static_cast<int>(data.points.size()),
+                    data.count(0) + data.count(1) + data.count(2),
+                    radius,
+                    o.normal_load_n,
+                    profile.description,
+                    profile.rms_residual_pa,
+                    profile.max_residual_pa};
   if (!loop_on) {
     const FitReport fit = fit_fractional_law(data, o);
     std::printf("%s %s: fractional law (seed eqs. 5-7)\n%s", kName, kVersion,
@@ -239,7 +268,7 @@ int main(int argc, char** argv) {
   std::vector<std::string> fixes;
   std::vector<double> noise_scale;
   bool no_loop = false, speed_inside = false, verbose = false;
-  int failing_point = -1;
+  int failing_point = -1, smoothing = 0;
   double alpha = 1e-3;
   app.add_option("data", data_path,
                  "measured diagrams (CSV: vx_mps, vy_mps, omega_radps, Fx_N, ...)");
@@ -268,6 +297,10 @@ int main(int argc, char** argv) {
                "closed loop: slip-speed friction at the local speed inside the exact integrals "
                "(exact, much slower)");
 
+  app.add_option("--profile-smoothing", smoothing,
+                 "fit the --profile CSV by a Chebyshev series in rho^2 of N terms (noisy film "
+                 "data) instead of interpolating it; the fit's residual is reported")
+      ->check(CLI::Range(1, 64));
   app.add_flag("--verbose", verbose, "show the solver's own log (Ceres, glog) on stderr");
   // Testing only (hidden): the residual of this data point fails to evaluate.
   app.add_option("--test-failing-point", failing_point)->group("");
@@ -325,7 +358,7 @@ int main(int argc, char** argv) {
     if (radius == 0.0) throw std::runtime_error("--radius is required (patch radius in m)");
     return run_fit(data_path, radius, load, profile_spec, pressure, fixes, loss, loss_scale,
                    noise_model, noise_scale, json_path, plots_dir, !no_loop, alpha, speed_inside,
-                   failing_point);
+                   failing_point, smoothing);
   } catch (const std::exception& e) {
     std::fprintf(stderr, "%s: error: %s\n", kName, e.what());
     return 1;

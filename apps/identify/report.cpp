@@ -79,6 +79,13 @@ nlohmann::json report_json(const RunInfo& info, const FitReport& base) {
                 {"radius_m", info.radius_m},
                 {"normal_load_N",
                  info.normal_load_n ? nlohmann::json(*info.normal_load_n) : nlohmann::json()}};
+  if (!info.profile.empty()) {
+    r["input"]["profile"] = info.profile;
+    if (info.profile_rms_residual_pa) {
+      r["input"]["profile_fit_rms_residual_Pa"] = *info.profile_rms_residual_pa;
+      r["input"]["profile_fit_max_residual_Pa"] = *info.profile_max_residual_pa;
+    }
+  }
   r["base"] = model_json("fractional", {}, base);
   r["steps"] = nlohmann::json::array();
   r["accepted_effects"] = nlohmann::json::array();
@@ -246,6 +253,12 @@ std::string format_table(const RunInfo& info, const FitReport& fit) {
   s += "data: " + info.file + ", " + std::to_string(info.points) + " points, " +
        std::to_string(info.values) + " measured values, R = " + fmt("%g", info.radius_m) + " m";
   if (info.normal_load_n) s += ", N = " + fmt("%g", *info.normal_load_n) + " N";
+  if (!info.profile.empty()) {
+    s += "\nprofile: " + info.profile;
+    if (info.profile_rms_residual_pa)
+      s += " (fit residual: rms " + fmt("%.4g", *info.profile_rms_residual_pa) + " Pa, max " +
+           fmt("%.4g", *info.profile_max_residual_pa) + " Pa)";
+  }
   s += "\n\nparameter   value          95 % interval                 unit\n";
   for (const ParameterEstimate& p : fit.parameters) {
     char line[160];

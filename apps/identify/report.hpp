@@ -15,6 +15,9 @@ struct RunInfo {
   int values = 0;
   double radius_m = 0.0;
   std::optional<double> normal_load_n;
+  std::string profile;                            // how the pressure profile was given ("" if none)
+  std::optional<double> profile_rms_residual_pa;  // a smoothing fit's residual
+  std::optional<double> profile_max_residual_pa;
 };
 
 // The fitted model as a JSON object (the MODEL of the report schema).

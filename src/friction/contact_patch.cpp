@@ -48,6 +48,11 @@ void validate(const ContactPatch& patch) {
       throw InvalidArgument("profile", describe(patch.profile),
                             "tabulated rho must lie in [0, 1] and end at the rim, 1");
   }
+  if (const auto* c = std::get_if<ChebyshevShape>(&patch.profile.shape)) {
+    if (c->c.empty())
+      throw InvalidArgument("profile", describe(patch.profile), "needs at least one coefficient");
+    for (double a : c->c) require_finite("Chebyshev series c_k", a);
+  }
   if (const auto* c = std::get_if<CosineSeriesShape>(&patch.profile.shape)) {
     require_positive("cosine series w", c->w);
     if (c->a.empty())

@@ -100,6 +100,8 @@ ExactModel<double> make_exact_model(const ContactPatch& patch, double representa
   } else if (std::holds_alternative<HertzShape>(prof.shape)) {
     m.chebyshev = {1.0};
     m.sqrt_edge = true;
+  } else if (const auto* cs = std::get_if<ChebyshevShape>(&prof.shape); cs && rho_max == 1.0) {
+    m.chebyshev = cs->c;  // already a series in t = rho^2: exact
   } else if (const auto* tab = std::get_if<TabulatedShape>(&prof.shape);
              tab && rho_max == 1.0 && (!prof.clip_negative || negative_intervals(prof).empty())) {
     // A table: its cubic pieces in t = rho^2 as they are (exact for the interpolant).

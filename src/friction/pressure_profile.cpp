@@ -91,6 +91,18 @@ std::vector<double> pchip_slopes(const std::vector<double>& x, const std::vector
   return d;
 }
 
+// sum_k c_k T_k(2 t - 1) by Clenshaw.
+double chebyshev_in_t(const std::vector<double>& c, double t) {
+  const double z = 2.0 * t - 1.0;
+  double b1 = 0.0, b2 = 0.0;
+  for (std::size_t k = c.size(); k-- > 1;) {
+    const double b0 = c[k] + 2.0 * z * b1 - b2;
+    b2 = b1;
+    b1 = b0;
+  }
+  return c[0] + z * b1 - b2;
+}
+
 double raw_value(const PressureProfile& profile, double rho) {
   return std::visit(
       Overloaded{[](const UniformShape&) { return 1.0; },
@@ -101,49 +113,61 @@ double raw_value(const PressureProfile& profile, double rho) {
                      s += c.a[k] * std::cos(std::numbers::pi * static_cast<double>(k) * c.w * rho);
                    return s;
                  },
-                 [&](const TabulatedShape& t) { return pchip_value(t, rho); }},
+                 [&](const TabulatedShape& t) { return pchip_value(t, rho); },
+                 [&](const ChebyshevShape& c) { return chebyshev_in_t(c.c, rho * rho); }},
       profile.shape);
 }
 
 // integral_lo^hi p(rho) rho^n d rho of the unclipped shape, exact for each kind.
 double raw_moment(const PressureProfile& profile, int n, double lo, double hi) {
   return std::visit(
-      Overloaded{[&](const UniformShape&) {
-                   return (std::pow(hi, n + 1) - std::pow(lo, n + 1)) / (n + 1);
-                 },
-                 [&](const HertzShape&) {
-                   // Only whole-range moments are needed: a Hertz shape never goes negative.
-                   // integral_0^1 sqrt(1 - r^2) r^n dr = (sqrt(pi)/4) Gamma((n+1)/2) / Gamma(n/2 +
-                   // 2).
-                   return std::sqrt(std::numbers::pi) / 4.0 *
-                          std::exp(std::lgamma((n + 1) / 2.0) - std::lgamma(n / 2.0 + 2.0));
-                 },
-                 [&](const CosineSeriesShape& c) {
-                   double s = 0.0;
-                   for (std::size_t k = 0; k < c.a.size(); ++k) {
-                     const double freq = std::numbers::pi * static_cast<double>(k) * c.w;
-                     s += c.a[k] * (cos_moment(freq, n, hi) - cos_moment(freq, n, lo));
-                   }
-                   return s;
-                 },
-                 [&](const TabulatedShape& t) {
-                   // Gauss-Legendre in rho on each piece (a cubic in rho^2), exact for degree
-                   // 6 + n.
-                   const GaussLegendreRule g = gauss_legendre(n / 2 + 4);
-                   std::vector<double> knots{lo};
-                   for (double r : t.rho)
-                     if (r > lo && r < hi) knots.push_back(r);
-                   knots.push_back(hi);
-                   double s = 0.0;
-                   for (std::size_t k = 0; k + 1 < knots.size(); ++k) {
-                     const double a = knots[k], b = knots[k + 1];
-                     for (std::size_t i = 0; i < g.nodes.size(); ++i) {
-                       const double r = 0.5 * (a + b) + 0.5 * (b - a) * g.nodes[i];
-                       s += 0.5 * (b - a) * g.weights[i] * pchip_value(t, r) * std::pow(r, n);
-                     }
-                   }
-                   return s;
-                 }},
+      Overloaded{
+          [&](const UniformShape&) {
+            return (std::pow(hi, n + 1) - std::pow(lo, n + 1)) / (n + 1);
+          },
+          [&](const HertzShape&) {
+            // Only whole-range moments are needed: a Hertz shape never goes negative.
+            // integral_0^1 sqrt(1 - r^2) r^n dr = (sqrt(pi)/4) Gamma((n+1)/2) / Gamma(n/2 +
+            // 2).
+            return std::sqrt(std::numbers::pi) / 4.0 *
+                   std::exp(std::lgamma((n + 1) / 2.0) - std::lgamma(n / 2.0 + 2.0));
+          },
+          [&](const CosineSeriesShape& c) {
+            double s = 0.0;
+            for (std::size_t k = 0; k < c.a.size(); ++k) {
+              const double freq = std::numbers::pi * static_cast<double>(k) * c.w;
+              s += c.a[k] * (cos_moment(freq, n, hi) - cos_moment(freq, n, lo));
+            }
+            return s;
+          },
+          [&](const TabulatedShape& t) {
+            // Gauss-Legendre in rho on each piece (a cubic in rho^2), exact for degree
+            // 6 + n.
+            const GaussLegendreRule g = gauss_legendre(n / 2 + 4);
+            std::vector<double> knots{lo};
+            for (double r : t.rho)
+              if (r > lo && r < hi) knots.push_back(r);
+            knots.push_back(hi);
+            double s = 0.0;
+            for (std::size_t k = 0; k + 1 < knots.size(); ++k) {
+              const double a = knots[k], b = knots[k + 1];
+              for (std::size_t i = 0; i < g.nodes.size(); ++i) {
+                const double r = 0.5 * (a + b) + 0.5 * (b - a) * g.nodes[i];
+                s += 0.5 * (b - a) * g.weights[i] * pchip_value(t, r) * std::pow(r, n);
+              }
+            }
+            return s;
+          },
+          [&](const ChebyshevShape& c) {
+            // A polynomial of degree 2 (K - 1) + n in rho: Gauss-Legendre, exact.
+            const GaussLegendreRule g = gauss_legendre(static_cast<int>(c.c.size()) + n / 2 + 1);
+            double s = 0.0;
+            for (std::size_t i = 0; i < g.nodes.size(); ++i) {
+              const double r = 0.5 * (lo + hi) + 0.5 * (hi - lo) * g.nodes[i];
+              s += 0.5 * (hi - lo) * g.weights[i] * chebyshev_in_t(c.c, r * r) * std::pow(r, n);
+            }
+            return s;
+          }},
       profile.shape);
 }
 
@@ -239,7 +263,7 @@ PressureProfile seed_tire_profile() {
   return p;
 }
 
-MeasuredProfile read_profile_csv(const std::string& path) {
+ProfileTable read_profile_table(const std::string& path) {
   const CsvTable table = read_csv(path);
   const int ir = table.column("rho"), ip = table.column("pressure_Pa");
   if (ir < 0 || ip < 0) {
@@ -249,7 +273,7 @@ MeasuredProfile read_profile_csv(const std::string& path) {
                      "missing column '" + missing + "' (need rho,pressure_Pa" +
                          (close.empty() ? "" : "; did you mean '" + close + "'?") + ")");
   }
-  std::vector<double> rho, p;
+  ProfileTable out;
   for (const CsvRow& row : table.rows) {
     double v[2];
     for (int k = 0; k < 2; ++k) {
@@ -261,29 +285,102 @@ MeasuredProfile read_profile_csv(const std::string& path) {
     if (v[0] < 0.0 || v[0] > 1.0 + 1e-12)
       throw table.cell_error(row.line, ir, "rho = " + format_value(v[0]) + " outside [0, 1]");
     const double r = std::min(v[0], 1.0);  // past the rim by rounding: on it
-    if (!rho.empty() && !(r > rho.back()))
+    if (!out.rho.empty() && !(r > out.rho.back()))
       throw table.cell_error(row.line, ir,
                              "rho = " + format_value(r) + " not increasing (previous " +
-                                 format_value(rho.back()) + ")");
-    rho.push_back(r);
-    p.push_back(v[1]);
+                                 format_value(out.rho.back()) + ")");
+    out.rho.push_back(r);
+    out.pressure_pa.push_back(v[1]);
   }
-  if (rho.size() < 2)
-    throw ParseError(path, table.header_line, 0,
-                     "a profile needs at least 2 rows (found " + std::to_string(rho.size()) + ")");
-  if (rho.back() < 1.0 - 1e-9)
+  if (out.rho.size() < 2)
+    throw ParseError(
+        path, table.header_line, 0,
+        "a profile needs at least 2 rows (found " + std::to_string(out.rho.size()) + ")");
+  if (out.rho.back() < 1.0 - 1e-9)
     throw table.cell_error(table.rows.back().line, ir, "the last rho must be 1 (the rim)");
+  return out;
+}
+
+MeasuredProfile read_profile_csv(const std::string& path) {
+  const ProfileTable t = read_profile_table(path);
   MeasuredProfile out;
-  out.profile = tabulated_profile(rho, p);
+  out.profile = tabulated_profile(t.rho, t.pressure_pa);
   // Mean pressure = 2 integral_0^1 p rho d rho (in Pa, before normalising).
   const double mean = 2.0 * moment(out.profile, 1);
   if (!(mean > 0.0 && std::isfinite(mean)))
-    throw ParseError(path, table.header_line, 0,
-                     "the profile's mean pressure is not positive and finite");
-  auto& t = std::get<TabulatedShape>(out.profile.shape);
-  for (double& x : t.p) x /= mean;
-  for (double& x : t.slope) x /= mean;
+    throw ParseError(path, 0, 0, "the profile's mean pressure is not positive and finite");
+  auto& tab = std::get<TabulatedShape>(out.profile.shape);
+  for (double& x : tab.p) x /= mean;
+  for (double& x : tab.slope) x /= mean;
   out.reference_pressure_pa = mean;
+  return out;
+}
+
+SmoothedProfile smoothed_profile(const std::vector<double>& rho, const std::vector<double>& p,
+                                 int terms) {
+  const PressureProfile checked = tabulated_profile(rho, p);  // validates rho and p
+  const auto& tab = std::get<TabulatedShape>(checked.shape);
+  const int n = static_cast<int>(tab.rho.size());
+  if (terms < 1 || terms > n - 1)
+    throw InvalidArgument(
+        "terms", std::to_string(terms),
+        "a smoothing fit needs 1 to (points - 1) = " + std::to_string(n - 1) + " terms");
+  // Least squares in t = rho^2 by QR of the Chebyshev design matrix (Householder, in place).
+  std::vector<std::vector<double>> A(static_cast<std::size_t>(n),
+                                     std::vector<double>(static_cast<std::size_t>(terms)));
+  std::vector<double> y = tab.p;
+  for (int i = 0; i < n; ++i) {
+    const double z = 2.0 * tab.rho[i] * tab.rho[i] - 1.0;
+    double tp = 1.0, tc = z;
+    for (int k = 0; k < terms; ++k) {
+      const double tk = k == 0 ? 1.0 : (k == 1 ? z : 2.0 * z * tc - tp);
+      if (k >= 2) {
+        tp = tc;
+        tc = tk;
+      }
+      A[i][k] = tk;
+    }
+  }
+  for (int k = 0; k < terms; ++k) {
+    double norm = 0.0;
+    for (int i = k; i < n; ++i) norm += A[i][k] * A[i][k];
+    norm = std::sqrt(norm);
+    if (!(norm > 0.0)) continue;
+    const double alpha = A[k][k] > 0.0 ? -norm : norm;
+    std::vector<double> v(static_cast<std::size_t>(n - k));
+    for (int i = k; i < n; ++i) v[i - k] = A[i][k];
+    v[0] -= alpha;
+    double vv = 0.0;
+    for (double x : v) vv += x * x;
+    if (!(vv > 0.0)) continue;
+    auto reflect = [&](auto get, auto set) {
+      double d = 0.0;
+      for (int i = k; i < n; ++i) d += v[i - k] * get(i);
+      d = 2.0 * d / vv;
+      for (int i = k; i < n; ++i) set(i, get(i) - d * v[i - k]);
+    };
+    for (int j = k; j < terms; ++j)
+      reflect([&](int i) { return A[i][j]; }, [&](int i, double x) { A[i][j] = x; });
+    reflect([&](int i) { return y[i]; }, [&](int i, double x) { y[i] = x; });
+  }
+  std::vector<double> c(static_cast<std::size_t>(terms), 0.0);
+  for (int k = terms - 1; k >= 0; --k) {
+    double s = y[k];
+    for (int j = k + 1; j < terms; ++j) s -= A[k][j] * c[j];
+    if (A[k][k] == 0.0)
+      throw InvalidArgument("terms", std::to_string(terms),
+                            "the points do not determine that many terms");
+    c[k] = s / A[k][k];
+  }
+  SmoothedProfile out;
+  out.profile.shape = ChebyshevShape{c};
+  double ss = 0.0;
+  for (int i = 0; i < n; ++i) {
+    const double e = tab.p[i] - chebyshev_in_t(c, tab.rho[i] * tab.rho[i]);
+    ss += e * e;
+    out.max_residual = std::max(out.max_residual, std::abs(e));
+  }
+  out.rms_residual = std::sqrt(ss / n);
   return out;
 }
 
@@ -350,6 +447,9 @@ std::string describe(const PressureProfile& profile) {
                  },
                  [](const TabulatedShape& t) {
                    return "tabulated (" + std::to_string(t.rho.size()) + " points, PCHIP)";
+                 },
+                 [](const ChebyshevShape& c) {
+                   return "Chebyshev series in rho^2 (" + std::to_string(c.c.size()) + " terms)";
                  }},
       profile.shape);
   if (profile.clip_negative) s += ", clipped at 0";

@@ -60,5 +60,25 @@ else
   echo "FAIL tabulated profile: $(cat "$dir/tab.err")"
   fails=$((fails + 1))
 fi
+# Noisy film data (the same table with 3 % scatter) through --profile-smoothing: a smooth
+# Chebyshev series in rho^2, its residual in the report, and a refusal without a profile CSV.
+awk -F, 'NR == 1 { print; next } { srand(NR); print $1 "," $2 * (1 + 0.03 * (rand() - 0.5) * 3.46) }' \
+  "$dir/profile.csv" | tr -d '\r' | sed '1s/^\xEF\xBB\xBF//' > "$dir/film.csv"
+if "$app" "$plain" --radius 0.087 --profile "$dir/film.csv" --profile-smoothing 6 \
+  --json "$dir/film.json" > "$dir/film.out" 2> "$dir/film.err" &&
+  grep -q '"profile_fit_rms_residual_Pa"' "$dir/film.json" &&
+  grep -q "^profile: .*Chebyshev series in rho^2 (6 terms) fitted to 41 points (fit residual: rms" "$dir/film.out"; then
+  echo "ok   noisy film data smoothed: $(grep -m1 '^profile:' "$dir/film.out")"
+else
+  echo "FAIL --profile-smoothing: $(cat "$dir/film.err")"
+  fails=$((fails + 1))
+fi
+if "$app" "$plain" --radius 0.087 --profile seed-tire --profile-smoothing 6 > /dev/null 2> "$dir/s.err" ||
+  ! grep -q "needs --profile with a CSV file" "$dir/s.err"; then
+  echo "FAIL --profile-smoothing without a CSV: $(cat "$dir/s.err")"
+  fails=$((fails + 1))
+else
+  echo "ok   --profile-smoothing without a CSV is refused"
+fi
 echo "$fails failed"
 [ "$fails" -eq 0 ]

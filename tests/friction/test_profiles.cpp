@@ -7,6 +7,7 @@
 #include <variant>
 
 #include "contensou/friction/error.hpp"
+#include "contensou/friction/exact_resultants.hpp"
 #include "contensou/friction/pressure_profile.hpp"
 #include "contensou/friction/quadrature.hpp"
 
@@ -185,4 +186,51 @@ TEST(Profiles, ProfileCsvWithAnInfiniteMeanPressureIsAnError) {
   EXPECT_THROW(read_profile_csv(
                    write_temp("huge.csv", "rho,pressure_Pa\n0,1.7e308\n0.5,-1.7e308\n1,1.7e308\n")),
                ParseError);
+}
+
+// A smoothing fit (for noisy film data): a Chebyshev series in t = rho^2 by least squares.
+TEST(Profiles, SmoothingFitRecoversASeriesAndReportsItsResidual) {
+  // Data from a 4-term series in t: the fit with 4 terms reproduces it.
+  const std::vector<double> c{1.0, -0.3, 0.08, -0.02};
+  std::vector<double> rho, p;
+  for (int i = 0; i <= 40; ++i) {
+    rho.push_back(i / 40.0);
+    p.push_back(shape_value(PressureProfile{ChebyshevShape{c}}, rho.back()));
+  }
+  const SmoothedProfile exact = smoothed_profile(rho, p, 4);
+  const auto& fitted = std::get<ChebyshevShape>(exact.profile.shape).c;
+  ASSERT_EQ(fitted.size(), 4u);
+  for (std::size_t k = 0; k < 4; ++k) EXPECT_NEAR(fitted[k], c[k], 1e-13);
+  EXPECT_LT(exact.rms_residual, 1e-14);
+  // With 2 % noise and 6 terms, the residual is the noise (and less than 1.3 times it).
+  std::vector<double> noisy = p;
+  unsigned state = 12345;
+  double ss = 0.0;
+  for (double& v : noisy) {
+    state = state * 1103515245u + 12345u;
+    const double e = 0.02 * ((state >> 8) / double(1u << 24) - 0.5) * std::sqrt(12.0);
+    v += e;
+    ss += e * e;
+  }
+  const SmoothedProfile s = smoothed_profile(rho, noisy, 6);
+  const double noise = std::sqrt(ss / static_cast<double>(noisy.size()));
+  EXPECT_LT(s.rms_residual, 1.3 * noise);
+  EXPECT_GT(s.rms_residual, 0.7 * noise);
+  EXPECT_GE(s.max_residual, s.rms_residual);
+  EXPECT_THROW(smoothed_profile(rho, p, 0), InvalidArgument);
+  EXPECT_THROW(smoothed_profile(rho, p, 41), InvalidArgument);
+  EXPECT_THROW(smoothed_profile({0.0, 0.5}, {1.0, 0.9}, 1), InvalidArgument);  // no rim
+}
+
+// A Chebyshev series in t has closed-form moments (checked by brute force) and the exact
+// integrals take it without refitting (no representation error).
+TEST(Profiles, ChebyshevShapeMomentsAndExactModel) {
+  const PressureProfile p{ChebyshevShape{{0.9, -0.25, 0.05}}};
+  for (int n = 0; n <= 5; ++n) EXPECT_NEAR(moment(p, n), brute_moment(p, n), 1e-12) << n;
+  ContactPatch patch = seed_tire_patch();
+  patch.profile = p;
+  const ExactModel<double> m = make_exact_model(patch);
+  EXPECT_EQ(m.chebyshev.size(), 3u);
+  EXPECT_EQ(m.representation_error, 0.0);
+  EXPECT_NE(describe(p).find("Chebyshev series in rho^2 (3 terms)"), std::string::npos);
 }

@@ -35,7 +35,15 @@ struct TabulatedShape {
   std::vector<double> slope;  // dp/dt at the knots (t = rho^2), set by tabulated_profile
 };
 
-using ProfileShape = std::variant<UniformShape, HertzShape, CosineSeriesShape, TabulatedShape>;
+// p(rho) = sum_k c_k T_k(2 rho^2 - 1): a Chebyshev series in t = rho^2, smooth and even in rho
+// (what a smoothing fit of noisy film data gives, smoothed_profile). The exact integrals take
+// it as it is, at the speed of any smooth profile.
+struct ChebyshevShape {
+  std::vector<double> c;
+};
+
+using ProfileShape =
+    std::variant<UniformShape, HertzShape, CosineSeriesShape, TabulatedShape, ChebyshevShape>;
 
 // A pressure profile: the radial shape, the linear shift and what to do with a negative part.
 // A contact pressure cannot be negative, and friction would generate energy where it is:
@@ -56,6 +64,17 @@ PressureProfile cosine_series_profile(double w, std::vector<double> a);
 // rho > 0 is extended flat to the centre.
 PressureProfile tabulated_profile(std::vector<double> rho, std::vector<double> p);
 
+// A least-squares Chebyshev series in t = rho^2 with `terms` terms through tabulated values
+// (for noisy pressure-film data, instead of the interpolating table), and how far the data
+// are from it. Validates rho and p as tabulated_profile does; terms in [1, points - 1].
+struct SmoothedProfile {
+  PressureProfile profile;
+  double rms_residual = 0.0;  // root-mean-square of p_i - fit(rho_i), in the units of p
+  double max_residual = 0.0;  // largest |p_i - fit(rho_i)|
+};
+SmoothedProfile smoothed_profile(const std::vector<double>& rho, const std::vector<double>& p,
+                                 int terms);
+
 // The tire of the seed (Table 1): w = 0.848, a_0..a_7, no shift, not clipped.
 PressureProfile seed_tire_profile();
 
@@ -67,6 +86,12 @@ struct MeasuredProfile {
   double reference_pressure_pa = 0.0;
 };
 MeasuredProfile read_profile_csv(const std::string& path);
+
+// The same file as its rows (rho, pressure in Pa), validated, for a smoothing fit.
+struct ProfileTable {
+  std::vector<double> rho, pressure_pa;
+};
+ProfileTable read_profile_table(const std::string& path);
 
 // The dimensionless shape p(rho) for rho in [0, 1], after clipping if enabled (no shift).
 double shape_value(const PressureProfile& profile, double rho);
@@ -81,7 +106,7 @@ double moment(const PressureProfile& profile, int n);
 std::vector<std::pair<double, double>> negative_intervals(const PressureProfile& profile);
 
 // Share of the unclipped shape's negative part in its load, integral of max(-p, 0) rho d rho
-// over integral of |p| rho d rho (0 for a physical profile; about 1e-9 for the seed tire).
+// over integral of |p| rho d rho (0 for a physical profile; 1.8e-4 for the seed tire).
 double negative_load_share(const PressureProfile& profile);
 
 // A short human-readable name ("uniform", "Hertz", "cosine series (8 terms)", ...).
