@@ -65,6 +65,57 @@ ChebyshevFit fit_chebyshev(const std::function<double(double)>& q, double tol) {
 
 }  // namespace
 
+namespace {
+
+// Clips a piecewise cubic at zero: each piece is split at its sign changes (scan and
+// bisection to rounding), and the negative parts become zero pieces, so that the pieces stay
+// polynomials and the exact integrals stay exact for max(p, 0).
+void clip_pieces(std::vector<double>& knot, std::vector<std::array<double, 4>>& piece) {
+  auto value = [](const std::array<double, 4>& c, double s) {
+    return c[0] + s * (c[1] + s * (c[2] + s * c[3]));
+  };
+  // The same cubic written about a point s0 to its right: c_j(s0) = sum_i C(i, j) s0^(i-j) c_i.
+  auto shifted = [](const std::array<double, 4>& c, double s0) {
+    return std::array<double, 4>{c[0] + s0 * (c[1] + s0 * (c[2] + s0 * c[3])),
+                                 c[1] + s0 * (2.0 * c[2] + 3.0 * s0 * c[3]), c[2] + 3.0 * s0 * c[3],
+                                 c[3]};
+  };
+  std::vector<double> out_knot;
+  std::vector<std::array<double, 4>> out_piece;
+  for (std::size_t k = 0; k < piece.size(); ++k) {
+    const double a = knot[k], h = knot[k + 1] - a;
+    std::vector<double> cuts{0.0};
+    constexpr int kScan = 16;
+    double s0 = 0.0, f0 = value(piece[k], 0.0);
+    for (int i = 1; i <= kScan; ++i) {
+      const double s1 = h * i / kScan, f1 = value(piece[k], s1);
+      if ((f0 < 0.0) != (f1 < 0.0)) {
+        double lo = s0, hi = s1;
+        for (int it = 0; it < 100 && hi - lo > 1e-16 * h; ++it) {
+          const double mid = 0.5 * (lo + hi);
+          ((value(piece[k], mid) < 0.0) == (f0 < 0.0) ? lo : hi) = mid;
+        }
+        cuts.push_back(0.5 * (lo + hi));
+      }
+      s0 = s1;
+      f0 = f1;
+    }
+    cuts.push_back(h);
+    for (std::size_t j = 0; j + 1 < cuts.size(); ++j) {
+      if (!(cuts[j + 1] > cuts[j])) continue;
+      const bool negative = value(piece[k], 0.5 * (cuts[j] + cuts[j + 1])) < 0.0;
+      out_knot.push_back(a + cuts[j]);
+      out_piece.push_back(negative ? std::array<double, 4>{0.0, 0.0, 0.0, 0.0}
+                                   : shifted(piece[k], cuts[j]));
+    }
+  }
+  out_knot.push_back(knot.back());
+  knot = std::move(out_knot);
+  piece = std::move(out_piece);
+}
+
+}  // namespace
+
 ExactModel<double> make_exact_model(const ContactPatch& patch, double representation_tolerance) {
   if (!(representation_tolerance > 0.0 && representation_tolerance < 1e-3))
     throw InvalidArgument("representation_tolerance", format_value(representation_tolerance),
@@ -84,7 +135,8 @@ ExactModel<double> make_exact_model(const ContactPatch& patch, double representa
                               "the pressure at zero, keep_negative to use it as given, or "
                               "correct the profile");
   }
-  if (prof.clip_negative) {
+  const bool table = std::holds_alternative<TabulatedShape>(prof.shape);
+  if (prof.clip_negative && !table) {  // a table is clipped piece by piece below
     const auto neg = negative_intervals(prof);
     if (neg.size() == 1 && neg.front().second >= 1.0 && neg.front().first > 0.0)
       rho_max = neg.front().first;  // negative only at the rim: shrink the disk exactly
@@ -102,8 +154,7 @@ ExactModel<double> make_exact_model(const ContactPatch& patch, double representa
     m.sqrt_edge = true;
   } else if (const auto* cs = std::get_if<ChebyshevShape>(&prof.shape); cs && rho_max == 1.0) {
     m.chebyshev = cs->c;  // already a series in t = rho^2: exact
-  } else if (const auto* tab = std::get_if<TabulatedShape>(&prof.shape);
-             tab && rho_max == 1.0 && (!prof.clip_negative || negative_intervals(prof).empty())) {
+  } else if (const auto* tab = std::get_if<TabulatedShape>(&prof.shape)) {
     // A table: its cubic pieces in t = rho^2 as they are (exact for the interpolant).
     if (tab->rho.front() > 0.0) {  // constant below the first knot
       m.knot.push_back(0.0);
@@ -118,11 +169,12 @@ ExactModel<double> make_exact_model(const ContactPatch& patch, double representa
           {tab->p[k], d0, (3.0 * del - 2.0 * d0 - d1) / h, (d0 + d1 - 2.0 * del) / (h * h)});
     }
     m.knot.push_back(1.0);
+    if (prof.clip_negative) clip_pieces(m.knot, m.piece);
     detail::update_knot_terms(m.knot, m.piece, m.knot_m0, m.knot_m2);
     // The far-knot series' deviation, as a bound on the chord integrals' error (in units of
     // the profile times the chord length, as a profile representation error is).
     m.representation_error =
-        detail::update_far_sums(m.knot, m.knot_m0, m.knot_m2, m.far_m0, m.far_m2);
+        detail::update_far_sums(m.knot, m.knot_m0, m.knot_m2, m.far_m0, m.far_m2, m.far_from);
   } else {
     const ChebyshevFit fit =
         fit_chebyshev([&](double t) { return shape_value(prof, rho_max * std::sqrt(t)); },

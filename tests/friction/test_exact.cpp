@@ -464,6 +464,31 @@ TEST(ExactResultants, TabulatedProfileIsExactForItsInterpolant) {
   }
 }
 
+// A table with a negative part, clipped: the pieces are split at their zero crossings and the
+// negative parts become zero pieces, so the integrals stay exact for max(p, 0).
+TEST(ExactResultants, ClippedTableIsSplitAtItsZeros) {
+  ContactPatch p = uniform_patch();
+  p.profile = tabulated_profile({0.0, 0.3, 0.6, 0.8, 1.0}, {1.0, 0.9, 0.3, -0.2, -0.4});
+  p.profile.clip_negative = true;
+  p.profile.kx = 0.1;
+  const ExactModel<double> m = make_exact_model(p);
+  ASSERT_FALSE(m.piece.empty());
+  EXPECT_LT(m.representation_error, 1e-11);
+  int zero_pieces = 0;
+  for (const auto& c : m.piece) zero_pieces += c[0] == 0.0 && c[1] == 0.0 && c[3] == 0.0;
+  EXPECT_GE(zero_pieces, 1);
+  const double fN = p.friction * normal_load(p), R = p.radius_m;
+  for (double ratio : {0.2, 0.9, 2.5}) {
+    const Kinematics<double> k{0.6 * ratio * 8.0, -0.8 * ratio * 8.0, 8.0 / R};
+    const auto e = exact_resultants(m, k, {1e-10});
+    const auto b = brute_force(p, k);
+    EXPECT_NEAR(e.resultants.Fx, b.Fx, 2e-4 * fN) << ratio;
+    EXPECT_NEAR(e.resultants.Fy, b.Fy, 2e-4 * fN) << ratio;
+    EXPECT_NEAR(e.resultants.Mz, b.Mz, 2e-4 * fN * R) << ratio;
+    EXPECT_LT(e.resultants.Fx * k.vx + e.resultants.Fy * k.vy + e.resultants.Mz * k.omega, 0.0);
+  }
+}
+
 // A 201-point sampling of the seed series reproduces the series' resultants to the
 // interpolation error (a cubic in t with monotone slopes: about 1e-6 of f N here).
 TEST(ExactResultants, TabulatedSeedSeriesReproducesTheSeries) {

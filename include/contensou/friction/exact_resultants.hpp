@@ -63,6 +63,7 @@ struct ExactModel {
   std::vector<std::array<double, 4>> piece;
   std::vector<std::array<double, 4>> knot_m0, knot_m2;
   std::vector<double> far_m0, far_m2;  // per knot interval: Chebyshev series of the far knots
+  std::vector<std::size_t> far_from;   // per knot interval: its first far knot
   std::vector<T> chord_q0, chord_q2;   // chord transforms (update_chord_transforms)
   std::vector<double> chord_tail;      // sum_{j >= k} |q0_j| + |q2_j|: truncation bound
   double representation_error = 0.0;   // bound on |p - representation| (dimensionless)
@@ -103,6 +104,7 @@ ExactModel<T> promote(const ExactModel<double>& m) {
   out.knot_m2 = m.knot_m2;
   out.far_m0 = m.far_m0;
   out.far_m2 = m.far_m2;
+  out.far_from = m.far_from;
   for (double c : m.chord_q0) out.chord_q0.push_back(T(c));
   for (double c : m.chord_q2) out.chord_q2.push_back(T(c));
   out.chord_tail = m.chord_tail;
@@ -322,25 +324,34 @@ inline void knot_sums(const std::vector<double>& knot, const std::vector<std::ar
   }
 }
 
-// On the knot interval [knot[k], knot[k+1]] the knots from k + 2 on are at least one interval
-// away: their sum is smooth there and is stored as a Chebyshev series of kFarTerms terms, so
-// that a chord costs one knot term and two short series, whatever the number of knots.
-// Returns the largest deviation of the series from the sums at test points (M0 and M2).
+// On the knot interval [knot[k], knot[k+1]] the knots at least one interval width beyond its
+// upper end (from far_from[k] on) are far: their sum is smooth there (its nearest singularity
+// lies a width away, so a Chebyshev series converges like 5.8^-n) and is stored as a series of
+// kFarTerms terms; the nearer ones (at most kMaxNear) are summed in closed form. A chord thus
+// costs a few knot terms and two short series, whatever the number of knots. Returns the
+// largest deviation of the series from the sums at test points (M0 and M2).
+inline constexpr std::size_t kMaxNear = 32;
 inline double update_far_sums(const std::vector<double>& knot,
                               const std::vector<std::array<double, 4>>& m0,
                               const std::vector<std::array<double, 4>>& m2,
-                              std::vector<double>& far0, std::vector<double>& far2) {
+                              std::vector<double>& far0, std::vector<double>& far2,
+                              std::vector<std::size_t>& far_from) {
   const std::size_t n = knot.size() - 1;  // intervals
   constexpr int N = kFarTerms;
   far0.assign(n * N, 0.0);
   far2.assign(n * N, 0.0);
+  far_from.assign(n, 0);
   double dev = 0.0;
   for (std::size_t k = 0; k < n; ++k) {
     const double a = knot[k], b = knot[k + 1];
+    std::size_t first_far = k + 2;
+    while (first_far < knot.size() && first_far < k + 1 + kMaxNear && knot[first_far] - b < b - a)
+      ++first_far;
+    far_from[k] = first_far;
     double v0[N], v2[N];
     for (int j = 0; j < N; ++j) {
       const double z = std::cos(std::numbers::pi * (j + 0.5) / N);
-      knot_sums(knot, m0, m2, k + 2, 0.5 * (a + b) + 0.5 * (b - a) * z, v0[j], v2[j]);
+      knot_sums(knot, m0, m2, far_from[k], 0.5 * (a + b) + 0.5 * (b - a) * z, v0[j], v2[j]);
     }
     for (int i = 0; i < N; ++i) {
       double c0 = 0.0, c2 = 0.0;
@@ -354,7 +365,7 @@ inline double update_far_sums(const std::vector<double>& knot,
     }
     for (double z : {-1.0, -0.77, -0.31, 0.13, 0.58, 0.93, 1.0}) {
       double e0, e2;
-      knot_sums(knot, m0, m2, k + 2, 0.5 * (a + b) + 0.5 * (b - a) * z, e0, e2);
+      knot_sums(knot, m0, m2, far_from[k], 0.5 * (a + b) + 0.5 * (b - a) * z, e0, e2);
       double s0 = 0.0, s2 = 0.0, tp = 1.0, tc = z;
       for (int i = 0; i < N; ++i) {
         const double t = i == 0 ? 1.0 : (i == 1 ? z : 2.0 * z * tc - tp);
@@ -371,7 +382,7 @@ inline double update_far_sums(const std::vector<double>& knot,
   return dev;
 }
 
-// M0 and M2 of a piecewise profile at t_f: the nearest knot above t_f in closed form, the
+// M0 and M2 of a piecewise profile at t_f: the near knots above t_f in closed form, the
 // others from the far-knot series of t_f's interval.
 template <class T>
 void piecewise_chord_moments(const ExactModel<T>& m, const T& t_f, T& M0, T& M2) {
@@ -383,13 +394,15 @@ void piecewise_chord_moments(const ExactModel<T>& m, const T& t_f, T& M0, T& M2)
   if (!(tv < 1.0)) return;
   const std::size_t n = knot.size() - 1;
   std::size_t k = std::upper_bound(knot.begin(), knot.end(), tv) - knot.begin();
-  k = std::min(std::max<std::size_t>(k, 1), n) - 1;  // t_f in [knot[k], knot[k+1])
-  const T d = knot[k + 1] - t_f;
-  const T r = sqrt(d);
-  const auto& a = m.knot_m0[k + 1];
-  const auto& b = m.knot_m2[k + 1];
-  M0 = r * (a[0] + d * (a[1] + d * (a[2] + d * a[3])));
-  M2 = r * d * (b[0] + d * (b[1] + d * (b[2] + d * b[3])));
+  k = std::min(std::max<std::size_t>(k, 1), n) - 1;      // t_f in [knot[k], knot[k+1])
+  for (std::size_t j = k + 1; j < m.far_from[k]; ++j) {  // the near knots, in closed form
+    const T d = knot[j] - t_f;
+    const T r = sqrt(d);
+    const auto& a = m.knot_m0[j];
+    const auto& b = m.knot_m2[j];
+    M0 += r * (a[0] + d * (a[1] + d * (a[2] + d * a[3])));
+    M2 += r * d * (b[0] + d * (b[1] + d * (b[2] + d * b[3])));
+  }
   const double lo = knot[k], hi = knot[k + 1];
   const T z = (2.0 * t_f - lo - hi) / (hi - lo);
   const double* c0 = m.far_m0.data() + k * kFarTerms;
