@@ -29,7 +29,7 @@ struct ProfileChoice {
 
 // A profile CSV path or a built-in name: uniform, hertz, seed-tire. With smoothing > 0 a CSV
 // is fitted by a Chebyshev series in rho^2 of that many terms instead of interpolated.
-ProfileChoice load_profile(const std::string& spec, int smoothing = 0) {
+ProfileChoice load_profile(const std::string& spec, int smoothing = 0, bool clip = false) {
   if (spec == "uniform") return {uniform_profile(), std::nullopt, "uniform", {}, {}};
   if (spec == "hertz") return {hertz_profile(), std::nullopt, "Hertz", {}, {}};
   if (spec == "seed-tire")
@@ -38,11 +38,25 @@ ProfileChoice load_profile(const std::string& spec, int smoothing = 0) {
     throw std::runtime_error("--profile " + spec +
                              ": no such file (or use uniform, hertz, seed-tire)");
   if (smoothing <= 0) {
-    const MeasuredProfile m = read_profile_csv(spec);
+    MeasuredProfile m = read_profile_csv(spec);
+    const auto negative = negative_intervals(m.profile);
+    if (!negative.empty() && !clip)
+      throw std::runtime_error(
+          "--profile " + spec + ": the pressure is negative on rho in (" +
+          format_value(negative.front().first) + ", " + format_value(negative.front().second) +
+          "); a contact pressure cannot be: correct the table, or add --profile-clip to clip it at "
+          "zero");
+    m.profile.clip_negative = clip;
     return {m.profile, m.reference_pressure_pa, spec + ", " + describe(m.profile), {}, {}};
   }
   const ProfileTable t = read_profile_table(spec);
-  SmoothedProfile fit = smoothed_profile(t.rho, t.pressure_pa, smoothing);
+  SmoothedProfile fit;
+  try {
+    fit = smoothed_profile(t.rho, t.pressure_pa, smoothing);
+  } catch (const InvalidArgument& e) {
+    throw std::runtime_error("--profile-smoothing " + std::to_string(smoothing) + " (" + spec +
+                             "): " + e.what());
+  }
   // Mean pressure of the fit = 2 integral_0^1 p rho d rho [Pa]; the shape is p / mean.
   const double mean = 2.0 * moment(fit.profile, 1);
   if (!(mean > 0.0 && std::isfinite(mean)))
@@ -78,7 +92,7 @@ int run_fit(const std::string& data_path, double radius, std::optional<double> l
             const std::vector<std::string>& fixes, const std::string& loss, double loss_scale,
             const std::string& noise_model, const std::vector<double>& noise_scale,
             const std::string& json_path, const std::string& plots_dir, bool loop_on, double alpha,
-            bool speed_inside, int failing_point, int smoothing) {
+            bool speed_inside, int failing_point, int smoothing, bool profile_clip) {
   IdentificationOptions o;
   o.radius_m = radius;
   require_positive("--radius", radius);
@@ -88,7 +102,7 @@ int run_fit(const std::string& data_path, double radius, std::optional<double> l
   if (load) require_positive("--normal-load", *load);
   o.normal_load_n = load;
   if (!profile_spec.empty()) {
-    profile = load_profile(profile_spec, smoothing);
+    profile = load_profile(profile_spec, smoothing, profile_clip);
     const ProfileChoice& p = profile;
     o.profile = p.profile;
     const std::optional<double> ps = p.reference_pressure ? p.reference_pressure : pressure;
@@ -267,7 +281,7 @@ int main(int argc, char** argv) {
   std::optional<double> load, pressure;
   std::vector<std::string> fixes;
   std::vector<double> noise_scale;
-  bool no_loop = false, speed_inside = false, verbose = false;
+  bool no_loop = false, speed_inside = false, verbose = false, profile_clip = false;
   int failing_point = -1, smoothing = 0;
   double alpha = 1e-3;
   app.add_option("data", data_path,
@@ -301,6 +315,8 @@ int main(int argc, char** argv) {
                  "fit the --profile CSV by a Chebyshev series in rho^2 of N terms (noisy film "
                  "data) instead of interpolating it; the fit's residual is reported")
       ->check(CLI::Range(1, 64));
+  app.add_flag("--profile-clip", profile_clip,
+               "clip a --profile CSV that dips below zero at zero (otherwise refused)");
   app.add_flag("--verbose", verbose, "show the solver's own log (Ceres, glog) on stderr");
   // Testing only (hidden): the residual of this data point fails to evaluate.
   app.add_option("--test-failing-point", failing_point)->group("");
@@ -358,7 +374,7 @@ int main(int argc, char** argv) {
     if (radius == 0.0) throw std::runtime_error("--radius is required (patch radius in m)");
     return run_fit(data_path, radius, load, profile_spec, pressure, fixes, loss, loss_scale,
                    noise_model, noise_scale, json_path, plots_dir, !no_loop, alpha, speed_inside,
-                   failing_point, smoothing);
+                   failing_point, smoothing, profile_clip);
   } catch (const std::exception& e) {
     std::fprintf(stderr, "%s: error: %s\n", kName, e.what());
     return 1;

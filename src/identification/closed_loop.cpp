@@ -67,27 +67,31 @@ Eigen::MatrixXd free_columns(const Eigen::MatrixXd& J, const ModelSpec& s) {
   return A;
 }
 
-// Score (LM) statistic of column j given the free columns A of the current fit:
-// (z' r)^2 / (z' (I - P_A) z) / s^2, chi-square with 1 dof under the null.
-double lm_statistic(const Eigen::VectorXd& r, const Eigen::MatrixXd& J, const ModelSpec& s, int j) {
-  const Eigen::MatrixXd A = free_columns(J, s);
-  const Eigen::VectorXd z = J.col(j);
-  const Eigen::VectorXd zp = z - A * A.colPivHouseholderQr().solve(z);
-  const double denom = zp.squaredNorm();
-  if (!(denom > 1e-20 * std::max(z.squaredNorm(), 1e-300))) return 0.0;
-  const double s2 = r.squaredNorm() / std::max<double>(1.0, static_cast<double>(r.size()) -
-                                                                static_cast<double>(A.cols()));
-  const double num = z.dot(r);
-  return num * num / denom / s2;
-}
-
 // The direction in which a candidate moves the weighted residual, its Jacobian column with the
-// free columns projected out, (I - P_A) z: two candidates with nearly parallel directions
+// free columns A projected out, (I - P_A) z: two candidates with nearly parallel directions
 // explain the same residual.
 Eigen::VectorXd score_direction(const Eigen::MatrixXd& J, const ModelSpec& s, int j) {
   const Eigen::MatrixXd A = free_columns(J, s);
   const Eigen::VectorXd z = J.col(j);
   return z - A * A.colPivHouseholderQr().solve(z);
+}
+
+// Score (LM) statistic of a column z with direction zp = (I - P_A) z, A the free columns of
+// the current fit: (z' r)^2 / (zp' zp) / s^2, chi-square with 1 dof under the null.
+double score_statistic(const Eigen::VectorXd& r, const Eigen::VectorXd& z,
+                       const Eigen::VectorXd& zp, const ModelSpec& s) {
+  const double denom = zp.squaredNorm();
+  if (!(denom > 1e-20 * std::max(z.squaredNorm(), 1e-300))) return 0.0;
+  int free = 0;
+  for (int i = 0; i < K; ++i) free += s.free[i];
+  const double s2 = r.squaredNorm() / std::max<double>(1.0, static_cast<double>(r.size()) -
+                                                                static_cast<double>(free));
+  const double num = z.dot(r);
+  return num * num / denom / s2;
+}
+
+double lm_statistic(const Eigen::VectorXd& r, const Eigen::MatrixXd& J, const ModelSpec& s, int j) {
+  return score_statistic(r, J.col(j), score_direction(J, s, j), s);
 }
 
 double direction_correlation(const Eigen::VectorXd& a, const Eigen::VectorXd& b) {
@@ -247,9 +251,9 @@ std::vector<CandidateScore> score_candidates(const MeasuredData& data, const Loo
       sc.p_value = std::min(1.0, chi2_survival(best, 1.0) * static_cast<double>(grid.size()));
       directions->emplace_back();  // scanned: no single direction
     } else {
-      sc.statistic = lm_statistic(r, J, st.spec, c.scored);
-      sc.p_value = chi2_survival(sc.statistic, 1.0);
       directions->push_back(score_direction(J, st.spec, c.scored));
+      sc.statistic = score_statistic(r, J.col(c.scored), directions->back(), st.spec);
+      sc.p_value = chi2_survival(sc.statistic, 1.0);
     }
     scores.push_back(sc);
   }
@@ -373,7 +377,7 @@ std::string step_label(int step) {
 }  // namespace
 
 // The loop of the header: base fit; then per step score, rank, fit and test the candidates
-// (the first that passes is accepted); then prune.
+// (of those that pass, the lowest BIC is accepted; close alternatives are named); then prune.
 ClosedLoopReport close_the_loop(const MeasuredData& data, const IdentificationOptions& options,
                                 const ClosedLoopOptions& loop) {
   ClosedLoopReport report;

@@ -59,6 +59,11 @@ expect "every row at rest" "every row is at rest (v = omega = 0)" \
 { echo 'vx_mps,vy_mps,omega_radps,Fx_N,Fy_N,Mz_Nm'; for i in 1 2 3 4 5 6 7 8; do echo "1e200,0,$i,-1000,0,-1"; done; } > "$dir/units.csv"
 expect "speeds beyond any rig" "units.csv:2, vx = 1e+200 m/s" \
   "$app" "$dir/units.csv" --radius 0.087 --no-loop --json "$dir/report.json"
+printf 'rho,pressure_Pa\n0,1e5\n0.5,-3e4\n1,1e5\n' > "$dir/dip.csv"
+expect "negative profile" "add --profile-clip to clip it at zero" \
+  "$app" "$good" --radius 0.087 --profile "$dir/dip.csv" --json "$dir/report.json"
+expect "smoothing with too many terms" "--profile-smoothing 6 (" \
+  "$app" "$good" --radius 0.087 --profile "$dir/dip.csv" --profile-smoothing 6 --json "$dir/report.json"
 printf '1,0,10,-5\n2,0,10,-6\n' > "$dir/noheader.csv"
 expect "no header" "the first row holds numbers, not column names" \
   "$app" "$dir/noheader.csv" --radius 0.1 --json "$dir/report.json"
@@ -86,5 +91,5 @@ else
   echo "FAIL good input"
   fails=$((fails + 1))
 fi
-echo "$((21 - fails)) passed, $fails failed"
+echo "$((23 - fails)) passed, $fails failed"
 [ "$fails" -eq 0 ]
