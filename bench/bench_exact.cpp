@@ -68,7 +68,8 @@ ContactPatch table_patch() {
 }
 
 // The profiles of the benchmark: the seed series (the baseline of the ratios), the same series
-// clipped at zero, the 101-point table, and the seed series with f(w) inside the integrals.
+// clipped at zero, the 101-point table, and the seed series and the table with f(w) inside the
+// integrals.
 const std::vector<Data>& variants() {
   static const std::vector<Data> v = [] {
     std::vector<Data> out;
@@ -80,6 +81,9 @@ const std::vector<Data>& variants() {
     ContactPatch fw = seed_patch();
     fw.slip_speed_friction = SlipSpeedFriction<double>{0.3, 0.2, 5.0, 1.0};
     out.emplace_back("f(w)", fw);
+    ContactPatch table_fw = table_patch();
+    table_fw.slip_speed_friction = fw.slip_speed_friction;
+    out.emplace_back("table101+f(w)", table_fw);
     return out;
   }();
   return v;

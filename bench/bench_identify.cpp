@@ -59,7 +59,7 @@ void BM_ClosedLoop(benchmark::State& state) {
 // x, y and at 45 degrees, u = 3 m/s) plus pure spin both ways and pure sliding along x and y,
 // 1 % noise: 112 points. Counters: whether the loop named speed_dependence and shape, and
 // the largest final channel rms over its noise scale.
-void BM_ClosedLoopTableWithSpeedLaw(benchmark::State& state) {
+void BM_ClosedLoopTableWithSpeedLaw(benchmark::State& state, bool speed_inside) {
   std::vector<double> rho, pv;
   for (int i = 0; i <= 100; ++i) {
     const double r = i / 100.0;
@@ -95,8 +95,10 @@ void BM_ClosedLoopTableWithSpeedLaw(benchmark::State& state) {
   IdentificationOptions o;
   o.radius_m = p.radius_m;
   o.profile = p.profile;
+  ClosedLoopOptions loop;
+  loop.speed_inside_integrals = speed_inside;
   ClosedLoopReport r;
-  for (auto _ : state) r = close_the_loop(d, o);
+  for (auto _ : state) r = close_the_loop(d, o, loop);
   const auto& acc = r.accepted_effects;
   const bool named = std::find(acc.begin(), acc.end(), "speed_dependence") != acc.end() &&
                      std::find(acc.begin(), acc.end(), "shape") != acc.end();
@@ -107,10 +109,21 @@ void BM_ClosedLoopTableWithSpeedLaw(benchmark::State& state) {
   state.counters["named_speed_and_shape"] = named ? 1.0 : 0.0;
   state.counters["effects"] = static_cast<double>(acc.size());
   state.counters["white"] = r.final_fit.residual_white ? 1.0 : 0.0;
+  state.counters["rms/noise"] = worst;
+  // The injected law: f_k / f_s = 0.7 (beta = 0.3), w_s = 5 m/s.
+  for (const ParameterEstimate& e : r.final_fit.parameters) {
+    if (e.name == "speed_drop") state.counters["beta"] = e.value;
+    if (e.name == "speed_ref_mps") state.counters["w_s"] = e.value;
+  }
 }
 
 BENCHMARK_CAPTURE(BM_Fit, estimated_noise_scales, false)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_ClosedLoop)->Unit(benchmark::kMillisecond);
-BENCHMARK(BM_ClosedLoopTableWithSpeedLaw)->Unit(benchmark::kSecond)->Iterations(1);
+BENCHMARK_CAPTURE(BM_ClosedLoopTableWithSpeedLaw, local_speed, true)
+    ->Unit(benchmark::kSecond)
+    ->Iterations(1);
+BENCHMARK_CAPTURE(BM_ClosedLoopTableWithSpeedLaw, effective_speed, false)
+    ->Unit(benchmark::kSecond)
+    ->Iterations(1);
 BENCHMARK_CAPTURE(BM_Fit, given_noise_scales_baseline, true)->Unit(benchmark::kMillisecond);
 BENCHMARK_MAIN();

@@ -19,17 +19,25 @@ struct SlipSpeedFriction {
   T exponent{1.0};             // delta
 };
 
+// The falling part of the law, g(w) = exp(-(w / w_s)^delta) (1 at w = 0), so that
+// f(w) = f_k + (f_s - f_k) g(w).
 template <class T>
-T friction_at(const SlipSpeedFriction<T>& law, const T& w) {
+T slip_speed_decay(const SlipSpeedFriction<T>& law, const T& w) {
   using std::exp;
   using std::pow;
-  if (!(w > T(0))) return law.static_coefficient;
+  if (!(w > T(0))) return T(1.0);
   const T z = w / law.reference_speed;
   // The exponential (Stribeck) form, exponent 1, is the common case: no pow.
-  const T e = value_of(law.exponent) == 1.0 && !has_derivative(law.exponent)
-                  ? exp(-z)
-                  : exp(-pow(z, law.exponent));
-  return law.kinetic_coefficient + (law.static_coefficient - law.kinetic_coefficient) * e;
+  return value_of(law.exponent) == 1.0 && !has_derivative(law.exponent)
+             ? exp(-z)
+             : exp(-pow(z, law.exponent));
+}
+
+template <class T>
+T friction_at(const SlipSpeedFriction<T>& law, const T& w) {
+  if (!(w > T(0))) return law.static_coefficient;
+  return law.kinetic_coefficient +
+         (law.static_coefficient - law.kinetic_coefficient) * slip_speed_decay(law, w);
 }
 
 // Everything the exact model needs: sigma = p* p(rho) (1 + kx x/R + ky y/R) on a disk of radius

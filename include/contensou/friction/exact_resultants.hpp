@@ -129,12 +129,13 @@ struct ExactResult {
 
 namespace detail {
 
-// Clenshaw sum of a Chebyshev series in z = 2 t - 1.
+// Clenshaw sum of a Chebyshev series in z = 2 t - 1 (its first `terms` terms; 0: all).
 template <class T, class S>
-T chebyshev_sum(const std::vector<T>& c, const S& t) {
+T chebyshev_sum(const std::vector<T>& c, const S& t, std::size_t terms = 0) {
   const S z = 2.0 * t - 1.0;
   T b1(0.0), b2(0.0);
-  for (std::size_t k = c.size() - 1; k >= 1; --k) {
+  const std::size_t n = terms == 0 ? c.size() : std::min(terms, c.size());
+  for (std::size_t k = n - 1; k >= 1; --k) {
     const T b0 = c[k] + 2.0 * z * b1 - b2;
     b2 = b1;
     b1 = b0;
@@ -420,10 +421,11 @@ void piecewise_chord_moments(const ExactModel<T>& m, const T& t_f, T& M0, T& M2)
   M2 += c2[0] + z * q1 - q2;
 }
 
-// The profile of a model at t = rho^2 (Chebyshev series, or piecewise).
+// The profile of a model at t = rho^2 (Chebyshev series, its first `terms` terms if given; or
+// piecewise).
 template <class T, class S>
-T profile_at(const ExactModel<T>& m, const S& t) {
-  if (m.piece.empty()) return chebyshev_sum(m.chebyshev, t);
+T profile_at(const ExactModel<T>& m, const S& t, std::size_t terms = 0) {
+  if (m.piece.empty()) return chebyshev_sum(m.chebyshev, t, terms);
   const double tv = std::clamp(value_of(t), 0.0, 1.0);
   std::size_t k = std::upper_bound(m.knot.begin(), m.knot.end(), tv) - m.knot.begin();
   k = std::min(std::max<std::size_t>(k, 1), m.piece.size()) - 1;
@@ -494,41 +496,125 @@ void chord_moments_closed_form(const ExactModel<T>& m, std::size_t terms, const 
   }
 }
 
-// Moments of a chord with a slip-speed law: integral sigma f(w) (tau - tau_c) {1, x, y} dtau,
-// w = |omega| |tau - tau_c|, by an adaptive rule.
+// The profile at n points t[i] (batch: the Clenshaw chains of a series run side by side).
 template <class T>
-std::array<T, 3> chord_moments_adaptive(const ExactModel<T>& m, const Chord<T>& c,
-                                        const T& abs_omega, std::array<double, 3>& inner_error,
-                                        const std::array<double, 3>& tol) {
-  using std::cos;
-  using std::sin;
+void profile_batch(const ExactModel<T>& m, const T* t, int n, std::size_t terms, T* out) {
+  if (!m.piece.empty()) {
+    for (int i = 0; i < n; ++i) out[i] = profile_at(m, t[i]);
+    return;
+  }
+  constexpr int kMax = kKronrodPoints;
+  std::array<T, kMax> z, b1, b2;
+  for (int i = 0; i < n; ++i) {
+    z[i] = 2.0 * t[i] - 1.0;
+    b1[i] = b2[i] = T(0.0);
+  }
+  const std::size_t nt = std::min(std::max<std::size_t>(terms, 1), m.chebyshev.size());
+  for (std::size_t k = nt - 1; k >= 1; --k) {
+    const T& c = m.chebyshev[k];
+    for (int i = 0; i < n; ++i) {
+      const T b0 = c + 2.0 * z[i] * b1[i] - b2[i];
+      b2[i] = b1[i];
+      b1[i] = b0;
+    }
+  }
+  for (int i = 0; i < n; ++i) out[i] = m.chebyshev[0] + z[i] * b1[i] - b2[i];
+}
+
+// The falling part of a slip-speed law on one chord: integral sigma g(w) (tau - tau_c)
+// {1, x, y} dtau / p*, g(w) = exp(-(w / w_s)^delta), w = |omega| |tau - tau_c| (f = f_k + (f_s -
+// f_k) g; the constant part f_k is in closed form). Adaptive G15K31 on the two sides of the
+// centre of sliding (a kink of |tau - tau_c|), in tau, or for a Hertz edge in the chord angle
+// theta, tau = h sin(theta) (then R^2 - |r|^2 = h^2 cos^2(theta) and the edge is smooth); the
+// profile series is summed to `terms` terms.
+template <class T>
+std::array<T, 3> chord_moments_falling(const ExactModel<T>& m, const Chord<T>& c,
+                                       const T& abs_omega, std::size_t terms,
+                                       std::array<double, 3>& inner_error,
+                                       const std::array<double, 3>& tol) {
   const double R = m.radius;
   inner_error = {0.0, 0.0, 0.0};
   const T A = 1.0 + (m.kx * c.fx + m.ky * c.fy) / R;  // shift factor at the foot
   const T B = m.kx * c.ex + m.ky * c.ey;              // its slope per unit w = tau / R
-  // f(w) depends on the slip speed: adaptive rule in the chord angle, tau = h sin(theta)
-  // (so R^2 - |r|^2 = h^2 cos^2(theta)), split at the centre of sliding (a kink of |tau - tau_c|).
-  const double ratio = std::clamp(value_of(c.tau_c) / std::max(value_of(c.h), 1e-300), -1.0, 1.0);
-  const double th_c = std::asin(ratio);
-  auto f = [&](double th, int) {
-    Sample<T, 3> out;
-    const double cs = std::cos(th);
-    const T tau = c.h * std::sin(th);
-    const T x = c.fx + tau * c.ex, y = c.fy + tau * c.ey;
-    const T edge = c.h * cs / R;  // sqrt(1 - t)
-    T p = profile_at(m, 1.0 - edge * edge);
-    if (m.sqrt_edge) p *= edge;
-    const T arm = tau - c.tau_c;
-    const T w = abs_omega * (value_of(arm) < 0.0 ? -arm : arm);
-    const T v = p * (A + B * (tau / R)) * arm * friction_at(*m.slip_speed, w) * (c.h * cs);
-    out.value = {v, v * x, v * y};
-    return out;
+  const bool angle = m.sqrt_edge;
+  auto f = [&](const double* x, int n, int, Sample<T, 3>* out) {
+    std::array<T, kKronrodPoints> tau, jac, t, p;
+    for (int i = 0; i < n; ++i) {
+      if (angle) {
+        const double cs = std::cos(x[i]);
+        tau[i] = c.h * std::sin(x[i]);
+        jac[i] = c.h * cs;
+        const T edge = jac[i] / R;  // sqrt(1 - t)
+        t[i] = 1.0 - edge * edge;
+      } else {
+        tau[i] = T(x[i]);
+        jac[i] = T(1.0);
+        t[i] = c.t_foot + (tau[i] / R) * (tau[i] / R);
+      }
+    }
+    profile_batch(m, t.data(), n, terms, p.data());
+    for (int i = 0; i < n; ++i) {
+      if (angle) p[i] *= jac[i] / R;
+      const T arm = tau[i] - c.tau_c;
+      const T w = abs_omega * (value_of(arm) < 0.0 ? -arm : arm);
+      const T v = p[i] * (A + B * (tau[i] / R)) * arm * slip_speed_decay(*m.slip_speed, w) * jac[i];
+      out[i].value = {v, v * (c.fx + tau[i] * c.ex), v * (c.fy + tau[i] * c.ey)};
+    }
   };
-  const TaggedInterval parts[2] = {{-0.5 * std::numbers::pi, th_c, 0},
-                                   {th_c, 0.5 * std::numbers::pi, 1}};
-  const int first = th_c > -0.5 * std::numbers::pi ? 0 : 1;
-  const int count = (th_c < 0.5 * std::numbers::pi ? 2 : 1) - first;
-  const auto r = integrate_adaptive<T, 3, 48>(f, parts + first, count, tol);
+  double lo, hi, mid;
+  if (angle) {
+    const double ratio = std::clamp(value_of(c.tau_c) / std::max(value_of(c.h), 1e-300), -1.0, 1.0);
+    lo = -0.5 * std::numbers::pi;
+    hi = 0.5 * std::numbers::pi;
+    mid = std::asin(ratio);
+  } else {
+    hi = value_of(c.h);
+    lo = -hi;
+    mid = std::clamp(value_of(c.tau_c), lo, hi);
+  }
+  if (m.piece.empty()) {
+    const TaggedInterval parts[2] = {{lo, mid, 0}, {mid, hi, 1}};
+    const int first = mid > lo ? 0 : 1;
+    const int count = (mid < hi ? 2 : 1) - first;
+    const auto r = integrate_adaptive_batch<T, 3, 48, kGK31>(f, parts + first, count, tol);
+    inner_error = r.error;
+    return r.value;
+  }
+  // A table: the chord crosses knot t_k at tau = +-R (t_k - t_foot)^(1/2), where the profile
+  // is only C1. Break there (at most kChordBreaks = 8 per half chord, every m-th knot: 4 let the
+  // inner rule run out of intervals at 1e-6, 16 to 32 cost more for no gain on a 101-point table),
+  // and at the centre of sliding; G7K15 on each piece, where p is a polynomial of degree 6.
+  constexpr std::size_t kChordBreaks = 8;
+  std::array<double, kChordBreaks> cross;
+  const double tf = value_of(c.t_foot);
+  const std::size_t first_knot =
+      std::upper_bound(m.knot.begin(), m.knot.end(), tf) - m.knot.begin();
+  const std::size_t inside = first_knot + 1 < m.knot.size() ? m.knot.size() - 1 - first_knot : 0;
+  const std::size_t stride = std::max<std::size_t>(1, (inside + kChordBreaks - 1) / kChordBreaks);
+  std::size_t nc = 0;
+  for (std::size_t k = first_knot; k + 1 < m.knot.size() && nc < kChordBreaks; k += stride)
+    cross[nc++] = R * std::sqrt(m.knot[k] - tf);
+  std::array<double, 2 * kChordBreaks + 3> pts;
+  std::size_t np = 0;
+  pts[np++] = lo;
+  for (std::size_t j = nc; j-- > 0;)
+    if (-cross[j] > lo) pts[np++] = -cross[j];
+  for (std::size_t j = 0; j < nc; ++j)
+    if (cross[j] < hi) pts[np++] = cross[j];
+  pts[np++] = hi;
+  std::array<TaggedInterval, 2 * kChordBreaks + 4> parts;
+  int count = 0;
+  for (std::size_t j = 0; j + 1 < np; ++j) {
+    const double a = pts[j], b = pts[j + 1];
+    if (mid > a && mid < b) {
+      parts[count++] = {a, mid, 0};
+      parts[count++] = {mid, b, 0};
+    } else if (b > a) {
+      parts[count++] = {a, b, 0};
+    }
+  }
+  const auto r =
+      integrate_adaptive_batch<T, 3, 4 * kChordBreaks, kGK15>(f, parts.data(), count, tol);
   inner_error = r.error;
   return r.value;
 }
@@ -655,12 +741,39 @@ ExactResult<T> exact_resultants(const ExactModel<T>& m, const Kinematics<T>& k,
   const double shift = 1.0 + std::hypot(value_of(m.kx), value_of(m.ky));
   const double tail_scale = 2.0 * std::numbers::pi * R * R * shift;
   while (terms > 1 && m.chord_tail[terms - 1] * tail_scale <= 1e-3 * unit) --terms;
-  if (!m.slip_speed && m.piece.empty()) {
+  // A slip-speed law f = f_k + (f_s - f_k) g(w) (theory.md section 2): the f_k part is the
+  // constant-f closed form, only the falling part (f_s - f_k) g needs an inner rule.
+  const T f_const = m.slip_speed ? m.slip_speed->kinetic_coefficient : m.friction;
+  const T f_fall = m.slip_speed ? m.slip_speed->static_coefficient - f_const : T(0.0);
+  const double fall = std::abs(value_of(f_fall));
+  if (m.piece.empty()) {
     const double dropped =
-        std::abs(value_of(m.friction) * value_of(m.pressure)) * m.chord_tail[terms] * tail_scale;
+        std::abs(value_of(f_const) * value_of(m.pressure)) * m.chord_tail[terms] * tail_scale;
     out.error.Fx += dropped;
     out.error.Fy += dropped;
     out.error.Mz += dropped * R;
+  }
+  // The falling part sums the profile series to profile_terms terms: the dropped tail
+  // sum_{k >= n} |c_k| bounds |p - p_n|, so its error is at most |f_s - f_k| p* tail (1 + |k|)
+  // pi R^2 (times R for Mz).
+  std::size_t profile_terms = m.chebyshev.size();
+  std::array<double, 3> tol_fall = tol_inner;
+  if (m.slip_speed && fall > 0.0) {
+    for (double& t : tol_fall) t /= fall;
+    if (m.piece.empty()) {
+      const double area = std::numbers::pi * R * R * shift;
+      double tail = 0.0;
+      while (profile_terms > 1 &&
+             (tail + std::abs(value_of(m.chebyshev[profile_terms - 1]))) * fall * area <=
+                 1e-3 * unit) {
+        tail += std::abs(value_of(m.chebyshev[profile_terms - 1]));
+        --profile_terms;
+      }
+      const double dropped = fall * value_of(m.pressure) * tail * area;
+      out.error.Fx += dropped;
+      out.error.Fy += dropped;
+      out.error.Mz += dropped * R;
+    }
   }
 
   // Outer integrand for a batch of chords with Jacobians jac: u = sign(omega) z x e,
@@ -669,11 +782,18 @@ ExactResult<T> exact_resultants(const ExactModel<T>& m, const Kinematics<T>& k,
                                detail::Sample<T, 3>* out_samples) {
     std::array<std::array<T, 3>, detail::kKronrodPoints> I;
     std::array<std::array<double, 3>, detail::kKronrodPoints> ie{};
+    detail::chord_moments_closed_form(m, terms, ch, n, I.data());
     if (m.slip_speed) {
-      for (int i = 0; i < n; ++i)
-        I[i] = detail::chord_moments_adaptive(m, ch[i], abs_omega, ie[i], tol_inner);
-    } else {
-      detail::chord_moments_closed_form(m, terms, ch, n, I.data());
+      for (int i = 0; i < n; ++i) {
+        for (T& v : I[i]) v *= f_const;
+        if (fall == 0.0) continue;
+        const auto g =
+            detail::chord_moments_falling(m, ch[i], abs_omega, profile_terms, ie[i], tol_fall);
+        for (int c = 0; c < 3; ++c) {
+          I[i][c] += f_fall * g[c];
+          ie[i][c] *= fall;
+        }
+      }
     }
     for (int i = 0; i < n; ++i) {
       const T ux = -sgn * ch[i].ey, uy = sgn * ch[i].ex * m.kappa;
