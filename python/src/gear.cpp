@@ -123,7 +123,11 @@ std::vector<Cell> map_cpp(const std::string& text, const std::string& model, con
 
 void bind_gear(nb::module_& m) {
   m.def(
-      "_default_config", [] { return app::to_json(app::ShimmyConfig{}).dump(); },
+      "_default_config",
+      [] {
+        static const app::ShimmyConfig defaults;  // a named object: GCC 12 at -O3 warns
+        return app::to_json(defaults).dump();     // (maybe-uninitialized) on a temporary
+      },
       "contensou-shimmy --print-config, as compact JSON text");
   m.def(
       "_normalise_config", [](const std::string& text) { return app::to_json(parse(text)).dump(); },
