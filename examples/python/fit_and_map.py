@@ -52,9 +52,10 @@ def plot_fit(result: contensou.IdentificationResult, path: Path) -> None:
         bottom.set_ylabel("residual")
         bottom.grid(True, which="both", alpha=0.3)
     axes[0, 0].legend(loc="best", fontsize=8)
-    p = result.parameters
-    fig.suptitle(f"seed tire diagrams: f = {p['f'].value:.4f} [{p['f'].ci95[0]:.4f}, "
-                 f"{p['f'].ci95[1]:.4f}], kx = {p['kx'].value:.4f}; accepted: "
+    f = result.parameters["f"]
+    lo, hi = f.ci95 if f.ci95 is not None else (float("nan"), float("nan"))
+    fig.suptitle(f"seed tire diagrams: f = {f.value:.4f} [{lo:.4f}, {hi:.4f}], "
+                 f"kx = {result.parameters['kx'].value:.4f}; accepted: "
                  f"{', '.join(result.accepted_effects) or 'none'}")
     fig.tight_layout()
     fig.savefig(path, dpi=110)

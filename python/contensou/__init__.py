@@ -9,13 +9,13 @@ The loops run in C++ (the extension ``contensou._core``) with the GIL released.
 Bad input raises ``ValueError`` with the C++ library's message.
 """
 
+from . import _core
 from ._core import (
     ContactPatch,
     ExactModel,
     FractionalLaw,
     PressureProfile,
     SlipSpeedFriction,
-    __version__,
     cosine_series_profile,
     fractional_law_fitted,
     fractional_law_from_patch,
@@ -38,6 +38,8 @@ from .gear import (
     stability_map_native,
 )
 from .identification import IdentificationResult, LoopStep, Parameter, identify
+
+__version__: str = _core.version  # the CMake project's version
 
 __all__ = [
     "ContactPatch",

@@ -180,7 +180,7 @@ class LandingResult:
         return bool(self.metrics["shimmy"])
 
     def to_dataframe(self) -> Any:
-        import pandas as pd  # optional
+        import pandas as pd  # type: ignore[import-untyped]  # optional
 
         return pd.DataFrame(self.history, columns=self.columns)
 
@@ -291,7 +291,7 @@ def _cell_task(k: int, config: str, model: str, x: tuple, y: tuple) -> tuple:
 def _progress(total: int, enabled: bool, label: str) -> Any:
     if enabled:
         try:
-            from tqdm.auto import tqdm
+            from tqdm.auto import tqdm  # type: ignore[import-untyped]
 
             return tqdm(total=total, desc=label, unit="cell")
         except ImportError:
@@ -334,7 +334,7 @@ def stability_map(
     try:
         if client is None:
             for k in range(total):
-                cells[k] = _cell_task(k, text, model, tuple(x), tuple(y))
+                cells[k] = _cell_task(k, text, model, x, y)
                 bar.update(1)
         else:
             from distributed import as_completed  # optional: only with a client
@@ -363,5 +363,5 @@ def stability_map_native(
     contensou-shimmy --map runs it."""
     cfg = _config(config)
     x, y = (_axis(a) for a in axes)
-    cells = _core._stability_map_cpp(cfg._text(), _model(model), tuple(x), tuple(y), int(threads))
+    cells = _core._stability_map_cpp(cfg._text(), _model(model), x, y, int(threads))
     return StabilityMapResult._from_cells(x, y, model, cells)

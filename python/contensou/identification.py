@@ -232,7 +232,7 @@ def identify(
     hertz, seed-tire or a CSV path, ``pressure`` the reference pressure of a built-in profile,
     ``fix`` holds parameters, ...). ``source`` names the data in the report (default: the
     path, or "<DataFrame>" / "<arrays>")."""
-    kwargs = dict(
+    kwargs: dict[str, Any] = dict(
         radius=float(radius),
         normal_load=None if normal_load is None else float(normal_load),
         profile=None if profile is None else os.fspath(profile),
@@ -248,7 +248,7 @@ def identify(
         profile_smoothing=int(profile_smoothing),
         profile_clip=bool(profile_clip),
     )
-    none = dict(vx=None, vy=None, omega=None, fx=None, fy=None, mz=None, fz=None, t=None)
+    none: dict[str, Any] = dict(vx=None, vy=None, omega=None, fx=None, fy=None, mz=None, fz=None, t=None)
     if isinstance(data, (str, os.PathLike)):
         path = os.fspath(data)
         raw = _core._identify(path=path, source=source or path, **none, **kwargs)

@@ -35,10 +35,14 @@ inline nb::object to_numpy(std::vector<double> values, std::initializer_list<std
   return nb::cast(nb::ndarray<nb::numpy, double>(owned->data(), shape, owner));
 }
 
-// Element i of an input of length n or 1.
-inline double at(const InArray& a, std::size_t i) {
-  return a.shape(0) == 1 ? a(0) : a(i);
-}
+// Element i of an input of length n or 1, by pointer and stride (0 for one value broadcast),
+// taken once before a loop.
+struct Strided {
+  const double* data;
+  std::size_t stride;
+  explicit Strided(const InArray& a) : data(a.data()), stride(a.shape(0) == 1 ? 0 : 1) {}
+  double operator[](std::size_t i) const { return data[i * stride]; }
+};
 
 // Runs body(begin, end) over [0, n) in `threads` contiguous chunks (0: one per core). An
 // exception in a chunk stops that chunk; the one of the lowest chunk is rethrown after all have

@@ -49,13 +49,13 @@ void exact_loop(const ExactModel<double>& model, InArray vx, InArray vy, InArray
   double* F = force.data();
   double* E = error.data();
   bool* C = conv.data();
+  const Strided x(vx), y(vy), w(omega);
   nb::gil_scoped_release release;
   parallel_for(n, threads, [&](std::size_t begin, std::size_t end) {
     for (std::size_t i = begin; i < end; ++i) {
       ExactResult<double> r;
       try {
-        r = exact_resultants(model, Kinematics<double>{at(vx, i), at(vy, i), at(omega, i)},
-                             options);
+        r = exact_resultants(model, Kinematics<double>{x[i], y[i], w[i]}, options);
       } catch (const std::invalid_argument& e) {
         rethrow_at_point(e, i);
       }
@@ -81,13 +81,15 @@ void fractional_loop(const FractionalLaw<double>& law, InArray vx, InArray vy, I
   validate(law);
   double* F = force.data();
   double* J = with_jacobian ? jacobian.data() : nullptr;
+  const Strided x(vx), y(vy), w(omega);
   nb::gil_scoped_release release;
   parallel_for(n, threads, [&](std::size_t begin, std::size_t end) {
+    const FractionalLaw<double> local = law;  // a copy the output stores cannot alias
     for (std::size_t i = begin; i < end; ++i) {
-      const Kinematics<double> k{at(vx, i), at(vy, i), at(omega, i)};
+      const Kinematics<double> k{x[i], y[i], w[i]};
       try {
         if (J) {
-          const FractionalWithJacobian r = fractional_resultants_with_jacobian(law, k);
+          const FractionalWithJacobian r = fractional_resultants_with_jacobian(local, k);
           F[3 * i] = r.resultants.Fx;
           F[3 * i + 1] = r.resultants.Fy;
           F[3 * i + 2] = r.resultants.Mz;
@@ -95,7 +97,7 @@ void fractional_loop(const FractionalLaw<double>& law, InArray vx, InArray vy, I
             for (int b = 0; b < 3; ++b)
               J[9 * i + 3 * static_cast<std::size_t>(a) + b] = r.jacobian(a, b);
         } else {
-          const Resultants<double> r = fractional_resultants(law, k);
+          const Resultants<double> r = fractional_resultants(local, k);
           F[3 * i] = r.Fx;
           F[3 * i + 1] = r.Fy;
           F[3 * i + 2] = r.Mz;
@@ -111,7 +113,8 @@ std::vector<Kinematics<double>> kinematics_of(InArray vx, InArray vy, InArray om
   const std::size_t n = vx.shape(0);
   check_lengths(vx, vy, omega, n);
   std::vector<Kinematics<double>> k(n);
-  for (std::size_t i = 0; i < n; ++i) k[i] = {at(vx, i), at(vy, i), at(omega, i)};
+  const Strided x(vx), y(vy), w(omega);
+  for (std::size_t i = 0; i < n; ++i) k[i] = {x[i], y[i], w[i]};
   return k;
 }
 

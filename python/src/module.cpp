@@ -10,7 +10,7 @@ NB_MODULE(_core, m) {
   m.doc() =
       "contensou's C++ library: coupled sliding-spinning dry friction (friction, "
       "identification, gear). Use the package contensou, which wraps this module.";
-  m.attr("__version__") = contensou::kVersion;
+  m.attr("version") = contensou::kVersion;  // contensou.__version__
   // Bad input is a ValueError carrying the library's message: InvalidArgument already derives
   // from std::invalid_argument (ValueError); a malformed file (ParseError, a runtime_error)
   // is bad input too.
