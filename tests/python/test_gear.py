@@ -142,7 +142,7 @@ def test_serial_map_equals_the_cpp_map_on_threads(app_run, serial_map):
 
 
 def test_dask_map_equals_the_serial_map(app_run, serial_map):
-    with distributed.LocalCluster(n_workers=2, threads_per_worker=1, processes=False,
+    with distributed.LocalCluster(n_workers=2, threads_per_worker=1, processes=True,
                                   dashboard_address=None) as cluster, \
             distributed.Client(cluster) as client:
         on_dask = c.stability_map(app_run[0], AXES, client=client, progress=True)
