@@ -13,6 +13,7 @@ from __future__ import annotations
 import copy
 import json
 import os
+import re
 from dataclasses import dataclass
 from typing import Any, Iterator, Mapping, NamedTuple, Optional, Sequence, Union
 
@@ -24,8 +25,12 @@ MODELS = ("coupled", "decoupled", "nonholonomic")
 
 
 def _normalise(data: Mapping[str, Any]) -> dict[str, Any]:
-    """Every key, defaults for those left out; ValueError naming a bad key or value."""
-    return json.loads(_core._normalise_config(json.dumps(data)))
+    """Every key, defaults for those left out; ValueError naming a bad key or value (the
+    reader's line and column refer to no file here, so they are left out)."""
+    try:
+        return json.loads(_core._normalise_config(json.dumps(data), "<configuration>"))
+    except ValueError as e:
+        raise ValueError(re.sub(r"^<configuration>:\d+:(\d+:)? ", "", str(e))) from None
 
 
 class _Section:
@@ -68,12 +73,16 @@ class LandingConfig:
     @classmethod
     def from_json(cls, source: Union[str, os.PathLike]) -> "LandingConfig":
         """From a JSON file (a path) or JSON text; keys left out keep their defaults."""
-        text = os.fspath(source)
+        text, name = os.fspath(source), "<text>"
         if not text.lstrip().startswith("{"):
-            with open(text, encoding="utf-8") as f:
-                text = f.read()
+            name = text
+            try:
+                with open(text, encoding="utf-8") as f:
+                    text = f.read()
+            except OSError as e:
+                raise ValueError(f"{name}: cannot open the configuration file ({e.strerror})") from None
         cfg = cls.__new__(cls)
-        cfg._data = json.loads(_core._normalise_config(text))
+        cfg._data = json.loads(_core._normalise_config(text, name))
         return cfg
 
     def to_dict(self) -> dict[str, Any]:

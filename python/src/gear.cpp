@@ -130,10 +130,14 @@ void bind_gear(nb::module_& m) {
       },
       "contensou-shimmy --print-config, as compact JSON text");
   m.def(
-      "_normalise_config", [](const std::string& text) { return app::to_json(parse(text)).dump(); },
-      "text"_a,
+      "_normalise_config",
+      [](const std::string& text, const std::string& name) {
+        return app::to_json(app::parse_shimmy_config(text, name)).dump();
+      },
+      "text"_a, "name"_a = "<configuration>",
       "reads a configuration as contensou-shimmy --config does (defaults for keys left out, "
-      "ValueError naming a bad key or value) and writes it back with every key");
+      "ValueError naming `name`, line, column and the bad key or value) and writes it back with "
+      "every key");
   m.def("_gear_parameter_names", &gear_parameter_names);
   m.def("_simulate_landing", &simulate, "config"_a, "model"_a, "record"_a);
   m.def("_map_cell", &map_cell, "config"_a, "model"_a, "x"_a, "y"_a, "i"_a, "j"_a);

@@ -44,13 +44,13 @@ def test_default_configuration_is_the_apps(shimmy_app, tmp_path):
     assert "structure.offset_m" in c.LandingConfig.parameter_names()
 
 
-def test_bad_configuration_values_are_value_errors():
+def test_bad_configuration_values_are_value_errors(tmp_path):
     cfg = c.LandingConfig()
     mass = cfg["structure.lateral_mass_kg"]
-    with pytest.raises(ValueError, match=r"structure\.lateral_mass_kg = -1: must be positive"):
+    with pytest.raises(ValueError, match=r"^structure\.lateral_mass_kg = -1: must be positive"):
         cfg["structure.lateral_mass_kg"] = -1.0
     assert cfg["structure.lateral_mass_kg"] == mass  # unchanged after the error
-    with pytest.raises(ValueError, match=r"structure\.offset_m: expected a number"):
+    with pytest.raises(ValueError, match=r"^structure\.offset_m: expected a number"):
         cfg["structure.offset_m"] = "far"
     with pytest.raises(KeyError):
         cfg["structure.no_such_thing"] = 1.0
@@ -58,6 +58,13 @@ def test_bad_configuration_values_are_value_errors():
         c.LandingConfig({"structure": {"offset": 0.2}})
     with pytest.raises(ValueError, match="invalid JSON"):
         c.LandingConfig.from_json("{ not json")
+    # A file's errors name the file, line and column, as the app's do.
+    bad = tmp_path / "bad.json"
+    bad.write_text('{\n  "structure": {\n    "offset_m": "far"\n  }\n}\n')
+    with pytest.raises(ValueError, match=r"bad\.json:3:5: structure\.offset_m: expected a number"):
+        c.LandingConfig.from_json(bad)
+    with pytest.raises(ValueError, match="cannot open"):
+        c.LandingConfig.from_json(tmp_path / "missing.json")
     with pytest.raises(ValueError, match="model"):
         c.simulate_landing(cfg, "magnetic")
     with pytest.raises(ValueError, match="is not a gear parameter"):
