@@ -27,9 +27,14 @@ class ExactResults(NamedTuple):
     converged: np.ndarray  # (...): False where the interval budget ran out before the tolerance
 
 
+MAX_THREADS = 256
+
+
 def _check_threads(threads: int) -> int:
-    if isinstance(threads, bool) or not isinstance(threads, (int, np.integer)) or threads < 0:
-        raise ValueError(f"threads = {threads!r}: must be a non-negative integer (0: all cores)")
+    if (isinstance(threads, bool) or not isinstance(threads, (int, np.integer))
+            or not 0 <= threads <= MAX_THREADS):
+        raise ValueError(
+            f"threads = {threads!r}: must be an integer in 0..{MAX_THREADS} (0: one per core)")
     return int(threads)
 
 

@@ -174,13 +174,13 @@ def _column(data: Any, name: str) -> Optional[np.ndarray]:
         col = data[name]
     except (KeyError, IndexError, ValueError):
         return None
-    if hasattr(col, "to_numpy"):  # pandas Series: missing values (None, pd.NA) become NaN
-        arr = col.to_numpy(dtype=np.float64, na_value=np.nan)
-    else:
-        try:
+    try:
+        if hasattr(col, "to_numpy"):  # pandas Series: missing values (None, pd.NA) become NaN
+            arr = col.to_numpy(dtype=np.float64, na_value=np.nan)
+        else:
             arr = np.asarray(col, dtype=np.float64)
-        except (TypeError, ValueError) as e:
-            raise ValueError(f"column '{name}': not numbers ({e})") from None
+    except (TypeError, ValueError) as e:
+        raise ValueError(f"column '{name}': not numbers ({e})") from None
     if arr.ndim != 1:
         raise ValueError(f"column '{name}': expected one dimension, got shape {arr.shape}")
     return np.ascontiguousarray(arr)

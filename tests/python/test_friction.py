@@ -219,8 +219,9 @@ def test_bad_input_raises_value_error_with_the_library_message(tmp_path):
         c.fractional_resultants(bad, 0.1, 0.0, 1.0)
     with pytest.raises(ValueError, match="do not broadcast"):
         c.exact_resultants(patch, np.zeros(3), np.zeros(4), 1.0)
-    with pytest.raises(ValueError, match="threads"):
-        c.exact_resultants(patch, 0.1, 0.0, 1.0, threads=-1)
+    for threads in (-1, 100000, 1.5):
+        with pytest.raises(ValueError, match="threads"):
+            c.exact_resultants(patch, 0.1, 0.0, 1.0, threads=threads)
     with pytest.raises(ValueError, match=r"rho = 1.5: must lie in \[0, 1\]"):
         c.shape_values(c.hertz_profile(), [0.5, 1.5])
     with pytest.raises(ValueError, match="rho"):

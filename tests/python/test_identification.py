@@ -129,5 +129,9 @@ def test_bad_input_is_a_value_error_with_the_message(tmp_path):
     broken.write_text("vx_mps,vy_mps,omega_radps,Fx_N\n0.1,0,10,-5\n0.2,0,ten,-6\n")
     with pytest.raises(ValueError, match=r"broken\.csv:3: column 'omega_radps' \(3\): not a number"):
         c.identify(str(broken), radius=0.087)
+    words = df.astype({"Fx_N": object})
+    words.loc[2, "Fx_N"] = "high"
+    with pytest.raises(ValueError, match="column 'Fx_N': not numbers"):
+        c.identify(words, radius=0.087)
     with pytest.raises(ValueError, match="loss"):
         c.identify(df, radius=0.087, loss="square")
