@@ -1,13 +1,15 @@
 #!/usr/bin/env bash
-# Installs every dependency from Debian 12's packages, builds contensou in ./build and runs the
-# main job on the built-in data. Usage: scripts/setup.sh   (CONTENSOU_WERROR=ON for CI)
+# Installs every dependency from Debian 12's packages, builds contensou in ./build, creates the
+# Python virtual environment .venv with the package `contensou` installed in it (pip install .,
+# python/requirements.txt), and runs the main job on the built-in data.
+# Usage: scripts/setup.sh   (CONTENSOU_WERROR=ON for CI)
 set -euo pipefail
 cd "$(dirname "$0")/.."
 
 packages=(build-essential cmake ninja-build pkg-config
   libeigen3-dev libceres-dev libsundials-dev libgtest-dev libgmock-dev libbenchmark-dev
   libcubature-dev libcli11-dev nlohmann-json3-dev gnuplot-nox clang-format
-  clang-14 libclang-rt-14-dev)
+  clang-14 libclang-rt-14-dev python3-venv python3-dev)
 missing=()
 for p in "${packages[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
@@ -23,6 +25,15 @@ fi
 cmake -S . -B build -G Ninja -DCMAKE_BUILD_TYPE=Release \
   -DCONTENSOU_WERROR="${CONTENSOU_WERROR:-OFF}"
 cmake --build build --parallel
+
+# The Python package in .venv: build requirements and the packages the tests and the example use
+# (pinned in python/requirements.txt), then the extension, built against the same CMake targets
+# in build/python (scikit-build-core, nanobind; warnings as errors with CONTENSOU_WERROR=ON).
+[ -x .venv/bin/python ] || python3 -m venv .venv
+.venv/bin/python -m pip install --quiet --disable-pip-version-check -r python/requirements.txt
+CONTENSOU_WERROR="${CONTENSOU_WERROR:-OFF}" .venv/bin/python -m pip install --quiet \
+  --disable-pip-version-check --no-build-isolation .
+.venv/bin/python -c "import contensou; print('python: contensou', contensou.__version__, 'in .venv')"
 echo
 ./build/examples/contensou-model-error
 echo

@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # Runs the whole test suite on the build made by scripts/setup.sh.
-#   scripts/test.sh             the Release build in ./build
-#   scripts/test.sh --sanitize  builds ./build-asan with ASan+UBSan and runs the tests there
+#   scripts/test.sh             the Release build in ./build (ctest), then the Python package in
+#                               .venv (pytest tests/python) and its example
+#   scripts/test.sh --sanitize  builds ./build-asan with ASan+UBSan and runs the C++ tests there
 set -euo pipefail
 cd "$(dirname "$0")/.."
 dir=build
@@ -15,3 +16,17 @@ if [ "${1:-}" = "--sanitize" ]; then
 fi
 [ -d "$dir" ] || { echo "test: no $dir; run scripts/setup.sh first" >&2; exit 1; }
 ctest --test-dir "$dir" --output-on-failure --parallel 2
+[ "$dir" = build ] || exit 0
+
+# The Python package (scripts/setup.sh installed it into .venv); its tests compare with the
+# apps and a reference program of ./build.
+[ -x .venv/bin/python ] || { echo "test: no .venv; run scripts/setup.sh first" >&2; exit 1; }
+status=0
+CONTENSOU_BUILD_DIR="$PWD/build" .venv/bin/python -m pytest tests/python -q -p no:cacheprovider \
+  || status=$?
+if [ "$status" -eq 5 ]; then
+  echo "test: pytest collected no tests in tests/python" >&2
+  exit 1
+fi
+[ "$status" -eq 0 ] || exit "$status"
+.venv/bin/python examples/python/fit_and_map.py --out out/python

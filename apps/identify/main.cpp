@@ -10,6 +10,7 @@
 
 #include "contensou/contensou.hpp"
 #include "contensou/identification/fit.hpp"
+#include "contensou/identification/report.hpp"
 #include "contensou/identification/simulation.hpp"
 #include "gnuplot.hpp"
 #include "report.hpp"
@@ -19,56 +20,6 @@ using namespace contensou;
 namespace {
 
 constexpr const char* kName = "contensou-identify";
-
-struct ProfileChoice {
-  PressureProfile profile;
-  std::optional<double> reference_pressure;  // from a CSV profile
-  std::string description;
-  std::optional<double> rms_residual_pa, max_residual_pa;  // of a smoothing fit
-};
-
-// A profile CSV path or a built-in name: uniform, hertz, seed-tire. With smoothing > 0 a CSV
-// is fitted by a Chebyshev series in rho^2 of that many terms instead of interpolated.
-ProfileChoice load_profile(const std::string& spec, int smoothing = 0, bool clip = false) {
-  if (spec == "uniform") return {uniform_profile(), std::nullopt, "uniform", {}, {}};
-  if (spec == "hertz") return {hertz_profile(), std::nullopt, "Hertz", {}, {}};
-  if (spec == "seed-tire")
-    return {seed_tire_profile(), std::nullopt, "the seed tire's series (Table 1)", {}, {}};
-  if (!std::filesystem::exists(spec))
-    throw std::runtime_error("--profile " + spec +
-                             ": no such file (or use uniform, hertz, seed-tire)");
-  if (smoothing <= 0) {
-    MeasuredProfile m = read_profile_csv(spec);
-    const auto negative = negative_intervals(m.profile);
-    if (!negative.empty() && !clip)
-      throw std::runtime_error(
-          "--profile " + spec + ": the pressure is negative on rho in (" +
-          format_value(negative.front().first) + ", " + format_value(negative.front().second) +
-          "); a contact pressure cannot be: correct the table, or add --profile-clip to clip it at "
-          "zero");
-    m.profile.clip_negative = clip;
-    return {m.profile, m.reference_pressure_pa, spec + ", " + describe(m.profile), {}, {}};
-  }
-  const ProfileTable t = read_profile_table(spec);
-  SmoothedProfile fit;
-  try {
-    fit = smoothed_profile(t.rho, t.pressure_pa, smoothing);
-  } catch (const InvalidArgument& e) {
-    throw std::runtime_error("--profile-smoothing " + std::to_string(smoothing) + " (" + spec +
-                             "): " + e.what());
-  }
-  // Mean pressure of the fit = 2 integral_0^1 p rho d rho [Pa]; the shape is p / mean.
-  const double mean = 2.0 * moment(fit.profile, 1);
-  if (!(mean > 0.0 && std::isfinite(mean)))
-    throw std::runtime_error("--profile-smoothing " + std::to_string(smoothing) + ": the fit of " +
-                             spec + " has no positive mean pressure");
-  for (double& c : std::get<ChebyshevShape>(fit.profile.shape).c) c /= mean;
-  if (!negative_intervals(fit.profile).empty()) fit.profile.clip_negative = true;
-  return {fit.profile, mean,
-          spec + ", " + describe(fit.profile) + " fitted to " + std::to_string(t.rho.size()) +
-              " points" + (fit.profile.clip_negative ? ", clipped at 0" : ""),
-          fit.rms_residual, fit.max_residual};
-}
 
 std::pair<std::string, double> parse_fix(const std::string& s) {
   const auto eq = s.find('=');
@@ -102,7 +53,7 @@ int run_fit(const std::string& data_path, double radius, std::optional<double> l
   if (load) require_positive("--normal-load", *load);
   o.normal_load_n = load;
   if (!profile_spec.empty()) {
-    profile = load_profile(profile_spec, smoothing, profile_clip);
+    profile = choose_profile(profile_spec, smoothing, profile_clip);
     const ProfileChoice& p = profile;
     o.profile = p.profile;
     const std::optional<double> ps = p.reference_pressure ? p.reference_pressure : pressure;
@@ -142,7 +93,7 @@ int run_fit(const std::string& data_path, double radius, std::optional<double> l
     if (!plots_dir.empty() && app::write_plots(plots_dir, data, fit, radius))
       std::printf("pictures: %s/fit_*.png\n", plots_dir.c_str());
     if (!json_path.empty()) {
-      app::write_file_atomically(json_path, app::report_json(info, fit).dump(2) + "\n");
+      app::write_file_atomically(json_path, fit_report_json(info, fit) + "\n");
       std::printf("report: %s\n", json_path.c_str());
     }
     return 0;
@@ -187,7 +138,7 @@ int run_fit(const std::string& data_path, double radius, std::optional<double> l
                   plots_dir.c_str());
   }
   if (!json_path.empty()) {
-    app::write_file_atomically(json_path, app::loop_report_json(info, loop).dump(2) + "\n");
+    app::write_file_atomically(json_path, loop_report_json(info, loop) + "\n");
     std::printf("report: %s\n", json_path.c_str());
   }
   return 0;
@@ -209,7 +160,7 @@ struct SimulateArgs {
 };
 
 int run_simulate(SimulateArgs a) {
-  const ProfileChoice p = load_profile(a.profile);
+  const ProfileChoice p = choose_profile(a.profile);
   ContactPatch patch;
   patch.radius_m = a.radius;
   patch.reference_pressure_pa =

@@ -79,7 +79,11 @@ ShimmyConfig read_shimmy_config(const std::string& path) {
   if (!in) throw std::runtime_error(path + ": cannot open the configuration file");
   std::stringstream buf;
   buf << in.rdbuf();
-  Reader r{path, buf.str()};
+  return parse_shimmy_config(buf.str(), path);
+}
+
+ShimmyConfig parse_shimmy_config(const std::string& text, const std::string& path) {
+  Reader r{path, text};
   nlohmann::json j;
   try {
     j = nlohmann::json::parse(r.text);

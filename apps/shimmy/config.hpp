@@ -32,4 +32,8 @@ nlohmann::json to_json(const ShimmyConfig& config);
 // column (for syntax errors and unknown keys) and the bad value.
 ShimmyConfig read_shimmy_config(const std::string& path);
 
+// The same from text in memory; `path` stands for the file in error messages (the Python
+// package reads its configuration objects through this).
+ShimmyConfig parse_shimmy_config(const std::string& text, const std::string& path);
+
 }  // namespace contensou::app

@@ -8,5 +8,6 @@
 #include "contensou/identification/effect_model.hpp"
 #include "contensou/identification/fit.hpp"
 #include "contensou/identification/measured_data.hpp"
+#include "contensou/identification/report.hpp"
 #include "contensou/identification/simulation.hpp"
 #include "contensou/identification/statistics.hpp"

@@ -1,0 +1,76 @@
+"""contensou: coupled sliding-spinning dry friction over a contact patch, from Python.
+
+numpy in, numpy out: the exact resultants and the fractional law on arrays of any shape
+(``contensou.friction``), identification of the law from measured diagrams given as a pandas
+DataFrame, arrays or a CSV path (``contensou.identify``), and the landing-gear shimmy model
+with stability maps in-process or on a ``dask.distributed`` client (``contensou.gear``).
+The loops run in C++ (the extension ``contensou._core``) with the GIL released.
+
+Bad input raises ``ValueError`` with the C++ library's message.
+"""
+
+from . import _core
+from ._core import (
+    ContactPatch,
+    ExactModel,
+    FractionalLaw,
+    PressureProfile,
+    SlipSpeedFriction,
+    cosine_series_profile,
+    fractional_law_fitted,
+    fractional_law_from_patch,
+    hertz_profile,
+    read_profile_csv,
+    seed_tire_patch,
+    seed_tire_profile,
+    smoothed_profile,
+    tabulated_profile,
+    uniform_profile,
+)
+from .friction import ExactResults, exact_resultants, fractional_resultants, shape_values
+from .gear import (
+    LandingConfig,
+    LandingResult,
+    MapAxis,
+    StabilityMapResult,
+    simulate_landing,
+    stability_map,
+    stability_map_native,
+)
+from .identification import IdentificationResult, LoopStep, Parameter, identify
+
+__version__: str = _core.version  # the CMake project's version
+
+__all__ = [
+    "ContactPatch",
+    "ExactModel",
+    "ExactResults",
+    "FractionalLaw",
+    "IdentificationResult",
+    "LandingConfig",
+    "LandingResult",
+    "LoopStep",
+    "MapAxis",
+    "Parameter",
+    "PressureProfile",
+    "SlipSpeedFriction",
+    "StabilityMapResult",
+    "__version__",
+    "cosine_series_profile",
+    "exact_resultants",
+    "fractional_law_fitted",
+    "fractional_law_from_patch",
+    "fractional_resultants",
+    "hertz_profile",
+    "identify",
+    "read_profile_csv",
+    "seed_tire_patch",
+    "seed_tire_profile",
+    "shape_values",
+    "simulate_landing",
+    "smoothed_profile",
+    "stability_map",
+    "stability_map_native",
+    "tabulated_profile",
+    "uniform_profile",
+]

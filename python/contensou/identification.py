@@ -1,0 +1,272 @@
+"""Identification of the friction law from measured diagrams (contensou-identify from Python).
+
+``identify`` takes a pandas DataFrame (or any mapping of column name to array, or a numpy
+structured or 2-D array) with the CSV's column names (theory.md section 6: vx_mps, vy_mps,
+omega_radps and any of Fx_N, Fy_N, Mz_Nm, optional Fz_N, t_s; NaN = not measured), or the path
+of such a CSV, and runs the fit and the closed loop of the app. ``to_json()`` gives the app's
+report (``contensou-identify --json``) byte for byte.
+"""
+
+from __future__ import annotations
+
+import json
+import os
+from dataclasses import dataclass, field
+from typing import Any, Mapping, Optional, Union
+
+import numpy as np
+
+from . import _core
+
+COLUMNS = ("vx_mps", "vy_mps", "omega_radps", "Fx_N", "Fy_N", "Mz_Nm", "Fz_N", "t_s")
+CHANNELS = ("Fx_N", "Fy_N", "Mz_Nm")
+
+
+@dataclass(frozen=True)
+class Parameter:
+    """One parameter of a fitted model."""
+
+    name: str
+    value: float
+    ci95: Optional[tuple[float, float]]  # None: fixed, derived or not determined by the data
+    std_error: Optional[float]
+    unit: str
+    fixed: bool = False
+    determined: bool = True
+    derived_from_profile: bool = False
+
+
+@dataclass
+class LoopStep:
+    """One fitted candidate of the closed loop (a row of the app's loop table)."""
+
+    step: int
+    effect: str
+    detail: str
+    accepted: bool
+    removed_in_backward_pass: bool
+    verdict: str
+    parameters: dict[str, Parameter]
+    lr_p_value: float
+    threshold: float
+    bic_before: float
+    bic_after: float
+    error_before: float
+    error_after: float
+    ambiguous_with: list[str]
+    separation: list[str]
+    prediction_before: np.ndarray  # (n, 3) model at the data points before the step
+    prediction_after: np.ndarray  # (n, 3) after it
+    report: dict[str, Any] = field(repr=False)  # the step as in the JSON report
+
+
+def _parameters(params: Mapping[str, Any]) -> dict[str, Parameter]:
+    out = {}
+    for name, p in params.items():
+        ci = p.get("ci95")
+        out[name] = Parameter(
+            name=name,
+            value=p["value"],
+            ci95=None if ci is None else (ci[0], ci[1]),
+            std_error=p.get("std_error"),
+            unit=p.get("unit", ""),
+            fixed=p.get("fixed", False),
+            determined=p.get("determined", True),
+            derived_from_profile=p.get("derived_from_profile", False),
+        )
+    return out
+
+
+class IdentificationResult:
+    """The result of ``identify``: the final model's parameters with 95 % intervals and
+    covariance, the closed loop's steps, and predictions and residuals as (n, 3) arrays
+    (columns Fx, Fy, Mz; NaN where the channel was not measured)."""
+
+    def __init__(self, raw: dict[str, Any]):
+        self._json: str = raw["json"]
+        self.report: dict[str, Any] = json.loads(self._json)
+        final = self.report["final"]
+        self.model: str = final["name"]  # "fractional" or "exact"
+        self.parameters: dict[str, Parameter] = _parameters(final["params"])
+        self.base_parameters: dict[str, Parameter] = _parameters(self.report["base"]["params"])
+        self.accepted_effects: list[str] = list(self.report["accepted_effects"])
+        self.structure_remains: bool = bool(self.report.get("structure_remains", False))
+        self.error_before: float = self.report["error_before"]
+        self.error_after: float = self.report["error_after"]
+        cov = raw["covariance"]
+        self.covariance_names: list[str] = list(cov["names"])
+        self.covariance: np.ndarray = np.asarray(cov["matrix"])
+        self.kinematics: np.ndarray = np.asarray(raw["kinematics"])
+        self.measured: np.ndarray = np.asarray(raw["measured"])
+        self.prediction: np.ndarray = np.asarray(raw["final_prediction"])
+        self.base_prediction: np.ndarray = np.asarray(raw["base_prediction"])
+        self.steps: list[LoopStep] = []
+        for s, arrays in zip(self.report["steps"], raw.get("steps", [])):
+            self.steps.append(
+                LoopStep(
+                    step=s["step"],
+                    effect=s["chosen"],
+                    detail=s["detail"],
+                    accepted=s["accepted"],
+                    removed_in_backward_pass=s["removed_in_backward_pass"],
+                    verdict=s["verdict"],
+                    parameters=_parameters(s["parameters"]),
+                    lr_p_value=s["lr_p_value"],
+                    threshold=s["threshold"],
+                    bic_before=s["bic_before"],
+                    bic_after=s["bic_after"],
+                    error_before=s["error_before"],
+                    error_after=s["error_after"],
+                    ambiguous_with=list(s["ambiguous_with"]),
+                    separation=list(s["separation"]),
+                    prediction_before=np.asarray(arrays["prediction_before"]),
+                    prediction_after=np.asarray(arrays["prediction_after"]),
+                    report=s,
+                )
+            )
+
+    @property
+    def names(self) -> list[str]:
+        return list(self.parameters)
+
+    @property
+    def values(self) -> np.ndarray:
+        return np.array([p.value for p in self.parameters.values()])
+
+    @property
+    def ci95(self) -> np.ndarray:
+        """(p, 2): lower and upper 95 % bounds, NaN where there is no interval."""
+        return np.array(
+            [p.ci95 if p.ci95 is not None else (np.nan, np.nan) for p in self.parameters.values()]
+        ).reshape(-1, 2)
+
+    @property
+    def residuals(self) -> np.ndarray:
+        """(n, 3): measured minus the final model, NaN where not measured."""
+        return self.measured - self.prediction
+
+    @property
+    def base_residuals(self) -> np.ndarray:
+        """(n, 3): measured minus the base model (the fractional law)."""
+        return self.measured - self.base_prediction
+
+    @property
+    def psi(self) -> np.ndarray:
+        """|v| / |omega R| of each point (inf for pure sliding)."""
+        k = self.kinematics
+        v = np.hypot(k[:, 0], k[:, 1])
+        u = np.abs(k[:, 2]) * self.report["input"]["radius_m"]
+        with np.errstate(divide="ignore", invalid="ignore"):
+            return np.where(u > 0, v / np.where(u > 0, u, 1.0), np.inf)
+
+    def to_json(self) -> str:
+        """The report exactly as ``contensou-identify --json`` writes it (same schema, same
+        bytes for the same input; ends with a newline)."""
+        return self._json + "\n"
+
+    def __repr__(self) -> str:
+        body = ", ".join(f"{p.name}={p.value:.6g}" for p in self.parameters.values())
+        return f"<IdentificationResult {self.model}: {body}; effects {self.accepted_effects}>"
+
+
+def _column(data: Any, name: str) -> Optional[np.ndarray]:
+    try:
+        col = data[name]
+    except (KeyError, IndexError, ValueError):
+        return None
+    try:
+        if hasattr(col, "to_numpy"):  # pandas Series: missing values (None, pd.NA) become NaN
+            arr = col.to_numpy(dtype=np.float64, na_value=np.nan)
+        else:
+            arr = np.asarray(col, dtype=np.float64)
+    except (TypeError, ValueError) as e:
+        raise ValueError(f"column '{name}': not numbers ({e})") from None
+    if arr.ndim != 1:
+        raise ValueError(f"column '{name}': expected one dimension, got shape {arr.shape}")
+    return np.ascontiguousarray(arr)
+
+
+def _columns_of(data: Any) -> dict[str, Optional[np.ndarray]]:
+    if isinstance(data, np.ndarray) and data.dtype.names is None:
+        a = np.asarray(data, dtype=np.float64)
+        if a.ndim != 2 or not 4 <= a.shape[1] <= len(COLUMNS):
+            raise ValueError(
+                f"a plain array must be (n, k) with 4 <= k <= 8 columns in the order "
+                f"{', '.join(COLUMNS)}; got shape {a.shape}"
+            )
+        return {
+            name: np.ascontiguousarray(a[:, k]) if k < a.shape[1] else None
+            for k, name in enumerate(COLUMNS)
+        }
+    names = data.dtype.names if isinstance(data, np.ndarray) else list(getattr(data, "keys")())
+    missing = [c for c in COLUMNS[:3] if c not in names]
+    if missing:
+        raise ValueError(
+            f"missing required column(s) {', '.join(missing)} (columns: {', '.join(map(str, names))};"
+            f" expected vx_mps, vy_mps, omega_radps and any of Fx_N, Fy_N, Mz_Nm, Fz_N, t_s)"
+        )
+    return {c: (_column(data, c) if c in names else None) for c in COLUMNS}
+
+
+def identify(
+    data: Union[str, os.PathLike, Mapping[str, Any], np.ndarray, Any],
+    *,
+    radius: float,
+    profile: Optional[Union[str, os.PathLike]] = None,
+    pressure: Optional[float] = None,
+    normal_load: Optional[float] = None,
+    loop: bool = True,
+    fix: Optional[Mapping[str, float]] = None,
+    loss: str = "none",
+    loss_scale: float = 2.0,
+    noise_model: str = "additive",
+    noise_scale: Optional[tuple[float, float, float]] = None,
+    alpha: float = 1e-3,
+    speed_inside_integrals: bool = False,
+    profile_smoothing: int = 0,
+    profile_clip: bool = False,
+    source: Optional[str] = None,
+) -> IdentificationResult:
+    """Fits the fractional law to measured diagrams and, with ``loop=True`` (the default),
+    closes the loop as ``contensou-identify`` does (same options: ``profile`` is uniform,
+    hertz, seed-tire or a CSV path, ``pressure`` the reference pressure of a built-in profile,
+    ``fix`` holds parameters, ...). ``source`` names the data in the report (default: the
+    path, or "<DataFrame>" / "<arrays>")."""
+    kwargs: dict[str, Any] = dict(
+        radius=float(radius),
+        normal_load=None if normal_load is None else float(normal_load),
+        profile=None if profile is None else os.fspath(profile),
+        pressure=None if pressure is None else float(pressure),
+        fixed={str(k): float(v) for k, v in (fix or {}).items()},
+        loss=loss,
+        loss_scale=float(loss_scale),
+        noise_model=noise_model,
+        noise_scale=None if noise_scale is None else [float(s) for s in noise_scale],
+        loop=bool(loop),
+        alpha=float(alpha),
+        speed_inside_integrals=bool(speed_inside_integrals),
+        profile_smoothing=int(profile_smoothing),
+        profile_clip=bool(profile_clip),
+    )
+    none: dict[str, Any] = dict(vx=None, vy=None, omega=None, fx=None, fy=None, mz=None, fz=None, t=None)
+    if isinstance(data, (str, os.PathLike)):
+        path = os.fspath(data)
+        raw = _core._identify(path=path, source=source or path, **none, **kwargs)
+    else:
+        cols = _columns_of(data)
+        if source is None:
+            source = "<DataFrame>" if hasattr(data, "iloc") else "<arrays>"
+        raw = _core._identify(
+            path=None,
+            source=source,
+            vx=cols["vx_mps"],
+            vy=cols["vy_mps"],
+            omega=cols["omega_radps"],
+            fx=cols["Fx_N"],
+            fy=cols["Fy_N"],
+            mz=cols["Mz_Nm"],
+            fz=cols["Fz_N"],
+            t=cols["t_s"],
+            **kwargs,
+        )
+    return IdentificationResult(raw)

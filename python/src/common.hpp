@@ -1,0 +1,83 @@
+// Shared pieces of the Python extension contensou._core (nanobind).
+#pragma once
+
+#include <nanobind/nanobind.h>
+#include <nanobind/ndarray.h>
+
+#include <algorithm>
+#include <cstddef>
+#include <exception>
+#include <initializer_list>
+#include <stdexcept>
+#include <string>
+#include <thread>
+#include <utility>
+#include <vector>
+
+namespace contensou::python {
+
+namespace nb = nanobind;
+
+// A flat input of n points, or of one point broadcast to all (length 1).
+using InArray = nb::ndarray<const double, nb::ndim<1>, nb::c_contig, nb::device::cpu>;
+// Outputs allocated by the Python side: (n, 3) and (n, 3, 3), C-contiguous.
+using OutArray2 = nb::ndarray<double, nb::ndim<2>, nb::c_contig, nb::device::cpu>;
+using OutArray3 = nb::ndarray<double, nb::ndim<3>, nb::c_contig, nb::device::cpu>;
+
+void bind_friction(nb::module_& m);
+void bind_identification(nb::module_& m);
+void bind_gear(nb::module_& m);
+
+// A numpy array that owns `values` (row-major, the given shape).
+inline nb::object to_numpy(std::vector<double> values, std::initializer_list<std::size_t> shape) {
+  auto* owned = new std::vector<double>(std::move(values));
+  nb::capsule owner(owned, [](void* p) noexcept { delete static_cast<std::vector<double>*>(p); });
+  return nb::cast(nb::ndarray<nb::numpy, double>(owned->data(), shape, owner));
+}
+
+// Element i of an input of length n or 1, by pointer and stride (0 for one value broadcast),
+// taken once before a loop.
+struct Strided {
+  const double* data;
+  std::size_t stride;
+  explicit Strided(const InArray& a) : data(a.data()), stride(a.shape(0) == 1 ? 0 : 1) {}
+  double operator[](std::size_t i) const { return data[i * stride]; }
+};
+
+// Runs body(begin, end) over [0, n) in `threads` contiguous chunks (0: one per core). An
+// exception in a chunk stops that chunk; the one of the lowest chunk is rethrown after all have
+// joined, so the first bad point is reported whatever the number of threads. Call with the GIL
+// released.
+template <class Body>
+void parallel_for(std::size_t n, unsigned threads, Body&& body) {
+  if (threads == 0) threads = std::max(1u, std::thread::hardware_concurrency());
+  threads = static_cast<unsigned>(std::min<std::size_t>(threads, std::max<std::size_t>(n, 1)));
+  if (threads <= 1) {
+    body(std::size_t{0}, n);
+    return;
+  }
+  std::vector<std::exception_ptr> errors(threads);
+  std::vector<std::thread> pool;
+  const std::size_t chunk = (n + threads - 1) / threads;
+  for (unsigned t = 0; t < threads; ++t) {
+    const std::size_t begin = std::min(n, t * chunk), end = std::min(n, begin + chunk);
+    pool.emplace_back([&, t, begin, end] {
+      try {
+        body(begin, end);
+      } catch (...) {
+        errors[t] = std::current_exception();
+      }
+    });
+  }
+  for (std::thread& th : pool) th.join();
+  for (const std::exception_ptr& e : errors)
+    if (e) std::rethrow_exception(e);
+}
+
+// Names the point of a bad input: "<the library's message> (point i of the flattened input)".
+[[noreturn]] inline void rethrow_at_point(const std::exception& e, std::size_t i) {
+  throw std::invalid_argument(std::string(e.what()) + " (point " + std::to_string(i) +
+                              " of the flattened input)");
+}
+
+}  // namespace contensou::python

@@ -1,0 +1,328 @@
+// Friction: profiles, the contact patch, the exact resultants and the fractional law, with loops
+// over flat numpy arrays in C++ (GIL released, optional threads). Broadcasting and shapes are
+// handled by the Python side (contensou/friction.py).
+#include <nanobind/stl/optional.h>
+#include <nanobind/stl/pair.h>
+#include <nanobind/stl/string.h>
+#include <nanobind/stl/vector.h>
+
+#include <chrono>
+#include <type_traits>
+#include <variant>
+
+#include "common.hpp"
+#include "contensou/friction.hpp"
+
+namespace contensou::python {
+namespace {
+
+using namespace nb::literals;
+
+const char* shape_kind(const PressureProfile& p) {
+  return std::visit(
+      [](const auto& s) -> const char* {
+        using S = std::decay_t<decltype(s)>;
+        if constexpr (std::is_same_v<S, UniformShape>) return "uniform";
+        if constexpr (std::is_same_v<S, HertzShape>) return "hertz";
+        if constexpr (std::is_same_v<S, CosineSeriesShape>) return "cosine_series";
+        if constexpr (std::is_same_v<S, TabulatedShape>) return "tabulated";
+        return "chebyshev";
+      },
+      p.shape);
+}
+
+void check_lengths(const InArray& vx, const InArray& vy, const InArray& omega, std::size_t n) {
+  for (const InArray* a : {&vx, &vy, &omega})
+    if (a->shape(0) != n && a->shape(0) != 1)
+      throw std::invalid_argument("inputs of " + std::to_string(a->shape(0)) +
+                                  " points do not broadcast to " + std::to_string(n));
+}
+
+void exact_loop(const ExactModel<double>& model, InArray vx, InArray vy, InArray omega,
+                OutArray2 force, OutArray2 error, nb::ndarray<bool, nb::ndim<1>, nb::c_contig> conv,
+                double tolerance, unsigned threads) {
+  const std::size_t n = force.shape(0);
+  check_lengths(vx, vy, omega, n);
+  if (force.shape(1) != 3 || error.shape(0) != n || error.shape(1) != 3 || conv.shape(0) != n)
+    throw std::invalid_argument("outputs must be (n, 3), (n, 3) and (n,)");
+  const ExactOptions options{tolerance};
+  double* F = force.data();
+  double* E = error.data();
+  bool* C = conv.data();
+  const Strided x(vx), y(vy), w(omega);
+  nb::gil_scoped_release release;
+  parallel_for(n, threads, [&](std::size_t begin, std::size_t end) {
+    for (std::size_t i = begin; i < end; ++i) {
+      ExactResult<double> r;
+      try {
+        r = exact_resultants(model, Kinematics<double>{x[i], y[i], w[i]}, options);
+      } catch (const std::invalid_argument& e) {
+        rethrow_at_point(e, i);
+      }
+      F[3 * i] = r.resultants.Fx;
+      F[3 * i + 1] = r.resultants.Fy;
+      F[3 * i + 2] = r.resultants.Mz;
+      E[3 * i] = r.error.Fx;
+      E[3 * i + 1] = r.error.Fy;
+      E[3 * i + 2] = r.error.Mz;
+      C[i] = r.converged;
+    }
+  });
+}
+
+void fractional_loop(const FractionalLaw<double>& law, InArray vx, InArray vy, InArray omega,
+                     OutArray2 force, OutArray3 jacobian, unsigned threads) {
+  const std::size_t n = force.shape(0);
+  check_lengths(vx, vy, omega, n);
+  const bool with_jacobian = jacobian.is_valid();
+  if (force.shape(1) != 3 || (with_jacobian && (jacobian.shape(0) != n || jacobian.shape(1) != 3 ||
+                                                jacobian.shape(2) != 3)))
+    throw std::invalid_argument("outputs must be (n, 3) and (n, 3, 3)");
+  validate(law);
+  double* F = force.data();
+  double* J = with_jacobian ? jacobian.data() : nullptr;
+  const Strided x(vx), y(vy), w(omega);
+  nb::gil_scoped_release release;
+  parallel_for(n, threads, [&](std::size_t begin, std::size_t end) {
+    const FractionalLaw<double> local = law;  // a copy the output stores cannot alias
+    for (std::size_t i = begin; i < end; ++i) {
+      const Kinematics<double> k{x[i], y[i], w[i]};
+      try {
+        if (J) {
+          const FractionalWithJacobian r = fractional_resultants_with_jacobian(local, k);
+          F[3 * i] = r.resultants.Fx;
+          F[3 * i + 1] = r.resultants.Fy;
+          F[3 * i + 2] = r.resultants.Mz;
+          for (int a = 0; a < 3; ++a)
+            for (int b = 0; b < 3; ++b)
+              J[9 * i + 3 * static_cast<std::size_t>(a) + b] = r.jacobian(a, b);
+        } else {
+          const Resultants<double> r = fractional_resultants(local, k);
+          F[3 * i] = r.Fx;
+          F[3 * i + 1] = r.Fy;
+          F[3 * i + 2] = r.Mz;
+        }
+      } catch (const std::invalid_argument& e) {
+        rethrow_at_point(e, i);
+      }
+    }
+  });
+}
+
+std::vector<Kinematics<double>> kinematics_of(InArray vx, InArray vy, InArray omega) {
+  const std::size_t n = vx.shape(0);
+  check_lengths(vx, vy, omega, n);
+  std::vector<Kinematics<double>> k(n);
+  const Strided x(vx), y(vy), w(omega);
+  for (std::size_t i = 0; i < n; ++i) k[i] = {x[i], y[i], w[i]};
+  return k;
+}
+
+// The baseline of bench/bench_python.py: the plain C++ loop over the same points into a
+// std::vector allocated in the timed region (as the Python call allocates its arrays), one
+// thread, timed here. Returns seconds.
+double cpp_loop_exact(const ExactModel<double>& model, InArray vx, InArray vy, InArray omega,
+                      double tolerance) {
+  const std::vector<Kinematics<double>> k = kinematics_of(vx, vy, omega);
+  const ExactOptions options{tolerance};
+  nb::gil_scoped_release release;
+  const auto t0 = std::chrono::steady_clock::now();
+  std::vector<ExactResult<double>> out(k.size());  // the results' memory is part of a call
+  for (std::size_t i = 0; i < k.size(); ++i) out[i] = exact_resultants(model, k[i], options);
+  const auto t1 = std::chrono::steady_clock::now();
+  return std::chrono::duration<double>(t1 - t0).count();
+}
+
+double cpp_loop_fractional(const FractionalLaw<double>& law, InArray vx, InArray vy, InArray omega,
+                           bool jacobian) {
+  const std::vector<Kinematics<double>> k = kinematics_of(vx, vy, omega);
+  nb::gil_scoped_release release;
+  double sink = 0.0;
+  const auto t0 = std::chrono::steady_clock::now();
+  if (jacobian) {
+    std::vector<FractionalWithJacobian> out(k.size());
+    for (std::size_t i = 0; i < k.size(); ++i)
+      out[i] = fractional_resultants_with_jacobian(law, k[i]);
+    sink = out.empty() ? 0.0 : out.back().resultants.Fx;
+  } else {
+    std::vector<Resultants<double>> out(k.size());
+    for (std::size_t i = 0; i < k.size(); ++i) out[i] = fractional_resultants(law, k[i]);
+    sink = out.empty() ? 0.0 : out.back().Fx;
+  }
+  const auto t1 = std::chrono::steady_clock::now();
+  volatile double keep = sink;
+  (void)keep;
+  return std::chrono::duration<double>(t1 - t0).count();
+}
+
+}  // namespace
+
+void bind_friction(nb::module_& m) {
+  nb::class_<PressureProfile>(m, "PressureProfile",
+                              "A pressure profile p(rho): radial shape, shift kx, ky and what to "
+                              "do with a negative part (contensou/friction/pressure_profile.hpp).")
+      .def_prop_ro("kind", &shape_kind, "uniform, hertz, cosine_series, tabulated or chebyshev")
+      .def_rw("kx", &PressureProfile::kx, "shift along x (0.14 for the seed's rolling tire)")
+      .def_rw("ky", &PressureProfile::ky, "shift along y")
+      .def_rw("clip_negative", &PressureProfile::clip_negative, "replace p by max(p, 0)")
+      .def_rw("keep_negative", &PressureProfile::keep_negative,
+              "use a negative part as given (else make_exact_model refuses it)")
+      .def("moment", &moment, "n"_a, "A^n = integral_0^1 p(rho) rho^n d rho")
+      .def("negative_intervals", &negative_intervals,
+           "intervals of rho where the unclipped shape is negative")
+      .def("negative_load_share", &negative_load_share)
+      .def("describe", &describe)
+      .def("__repr__",
+           [](const PressureProfile& p) {
+             return "<PressureProfile " + describe(p) + ", kx=" + format_value(p.kx) +
+                    ", ky=" + format_value(p.ky) + ">";
+           })
+      .def(
+          "_shape_values",
+          [](const PressureProfile& p, InArray rho, OutArray2 out) {
+            if (out.shape(0) != rho.shape(0) || out.shape(1) != 1)
+              throw std::invalid_argument("output must be (n, 1)");
+            for (std::size_t i = 0; i < rho.shape(0); ++i) {
+              if (!(rho(i) >= 0.0 && rho(i) <= 1.0))
+                throw std::invalid_argument("rho = " + format_value(rho(i)) +
+                                            ": must lie in [0, 1] (point " + std::to_string(i) +
+                                            " of the flattened input)");
+              out(i, 0) = shape_value(p, rho(i));
+            }
+          },
+          "rho"_a, "out"_a);
+
+  m.def("uniform_profile", &uniform_profile, "p(rho) = 1");
+  m.def("hertz_profile", &hertz_profile, "p(rho) = sqrt(1 - rho^2)");
+  m.def("cosine_series_profile", &cosine_series_profile, "w"_a, "a"_a,
+        "p(rho) = sum_k a_k cos(pi k w rho) (seed eq. 8)");
+  m.def("tabulated_profile", &tabulated_profile, "rho"_a, "p"_a,
+        "a table p(rho) at increasing rho in [0, 1] ending at 1, monotone cubic in rho^2");
+  m.def("seed_tire_profile", &seed_tire_profile, "the tire of the seed (Table 1)");
+  m.def(
+      "read_profile_csv",
+      [](const std::string& path) {
+        MeasuredProfile r = read_profile_csv(path);
+        return std::make_pair(r.profile, r.reference_pressure_pa);
+      },
+      "path"_a,
+      "a profile CSV (rho, pressure_Pa): (profile, reference pressure = mean pressure [Pa])");
+  m.def(
+      "smoothed_profile",
+      [](const std::vector<double>& rho, const std::vector<double>& p, int terms) {
+        SmoothedProfile s = smoothed_profile(rho, p, terms);
+        return std::make_pair(s.profile, std::make_pair(s.rms_residual, s.max_residual));
+      },
+      "rho"_a, "p"_a, "terms"_a,
+      "least-squares Chebyshev series in rho^2: (profile, (rms residual, max residual))");
+
+  nb::class_<SlipSpeedFriction<double>>(
+      m, "SlipSpeedFriction", "f(w) = f_k + (f_s - f_k) exp(-(w / w_s)^delta), w the slip speed")
+      .def(
+          "__init__",
+          [](SlipSpeedFriction<double>* s, double fs, double fk, double ws, double delta) {
+            new (s) SlipSpeedFriction<double>{fs, fk, ws, delta};
+          },
+          "static_coefficient"_a = 0.3, "kinetic_coefficient"_a = 0.3, "reference_speed"_a = 1.0,
+          "exponent"_a = 1.0)
+      .def_rw("static_coefficient", &SlipSpeedFriction<double>::static_coefficient)
+      .def_rw("kinetic_coefficient", &SlipSpeedFriction<double>::kinetic_coefficient)
+      .def_rw("reference_speed", &SlipSpeedFriction<double>::reference_speed)
+      .def_rw("exponent", &SlipSpeedFriction<double>::exponent);
+
+  nb::class_<ContactPatch>(m, "ContactPatch",
+                           "Geometry, pressure and friction of the exact model (SI units)")
+      .def(
+          "__init__",
+          [](ContactPatch* p, double radius_m, double reference_pressure_pa, double friction,
+             double kappa, std::optional<PressureProfile> profile,
+             std::optional<SlipSpeedFriction<double>> slip) {
+            new (p) ContactPatch{};
+            p->radius_m = radius_m;
+            p->reference_pressure_pa = reference_pressure_pa;
+            p->friction = friction;
+            p->kappa = kappa;
+            if (profile) p->profile = *profile;
+            p->slip_speed_friction = slip;
+          },
+          "radius_m"_a = 0.087, "reference_pressure_pa"_a = 2.1e5, "friction"_a = 0.3,
+          "kappa"_a = 1.0, "profile"_a.none() = nb::none(),
+          "slip_speed_friction"_a.none() = nb::none())
+      .def_rw("radius_m", &ContactPatch::radius_m)
+      .def_rw("reference_pressure_pa", &ContactPatch::reference_pressure_pa)
+      .def_rw("friction", &ContactPatch::friction)
+      .def_rw("kappa", &ContactPatch::kappa)
+      .def_rw("profile", &ContactPatch::profile)
+      .def_rw("slip_speed_friction", &ContactPatch::slip_speed_friction, nb::arg().none())
+      .def_prop_ro(
+          "normal_load", [](const ContactPatch& p) { return normal_load(p); },
+          "N = 2 pi R^2 p* A^1 [N]")
+      .def("validate", [](const ContactPatch& p) { validate(p); })
+      .def("__repr__", [](const ContactPatch& p) {
+        return "<ContactPatch R=" + format_value(p.radius_m) +
+               " m, p*=" + format_value(p.reference_pressure_pa) +
+               " Pa, f=" + format_value(p.friction) + ", kappa=" + format_value(p.kappa) + ", " +
+               describe(p.profile) + ">";
+      });
+  m.def("seed_tire_patch", &seed_tire_patch, "the seed's tire: R = 0.087 m, p* = 210 kPa, f = 0.3");
+
+  nb::class_<ExactModel<double>>(m, "ExactModel",
+                                 "The integration-ready form of a ContactPatch: build once, "
+                                 "evaluate many times")
+      .def(
+          "__init__",
+          [](ExactModel<double>* e, const ContactPatch& patch, double tol) {
+            new (e) ExactModel<double>(make_exact_model(patch, tol));
+          },
+          "patch"_a, "representation_tolerance"_a = 1e-15)
+      .def_ro("radius", &ExactModel<double>::radius)
+      .def_ro("representation_error", &ExactModel<double>::representation_error)
+      .def_ro("load_area", &ExactModel<double>::load_area);
+
+  nb::class_<FractionalLaw<double>>(m, "FractionalLaw",
+                                    "The fractional (Pade-type) law, seed eqs. 5-7 in vector form")
+      .def(
+          "__init__",
+          [](FractionalLaw<double>* l, double F0, double M0, double a, double mm, double kx,
+             double ky, double kappa, double c, double Mk, double a_k, double radius, double eps) {
+            new (l) FractionalLaw<double>{F0, M0, a, mm, kx, ky, kappa, c, Mk, a_k, radius, eps};
+          },
+          "F0"_a = 0.0, "M0"_a = 0.0, "a"_a = 1.0, "m"_a = 64.0 / 9.0, "kx"_a = 0.0, "ky"_a = 0.0,
+          "kappa"_a = 1.0, "c"_a = 4.0, "Mk"_a = 0.0, "a_k"_a = 1.0, "radius"_a = 0.1,
+          "regularization_speed"_a = 1e-4)
+      .def_rw("F0", &FractionalLaw<double>::F0)
+      .def_rw("M0", &FractionalLaw<double>::M0)
+      .def_rw("a", &FractionalLaw<double>::a)
+      .def_rw("m", &FractionalLaw<double>::m)
+      .def_rw("kx", &FractionalLaw<double>::kx)
+      .def_rw("ky", &FractionalLaw<double>::ky)
+      .def_rw("kappa", &FractionalLaw<double>::kappa)
+      .def_rw("c", &FractionalLaw<double>::c)
+      .def_rw("Mk", &FractionalLaw<double>::Mk)
+      .def_rw("a_k", &FractionalLaw<double>::a_k)
+      .def_rw("radius", &FractionalLaw<double>::radius)
+      .def_rw("regularization_speed", &FractionalLaw<double>::regularization_speed)
+      .def("validate", [](const FractionalLaw<double>& l) { validate(l); })
+      .def("__repr__", [](const FractionalLaw<double>& l) {
+        return "<FractionalLaw F0=" + format_value(l.F0) + " N, M0=" + format_value(l.M0) +
+               " N m, a=" + format_value(l.a) + ", m=" + format_value(l.m) +
+               ", kx=" + format_value(l.kx) + ", ky=" + format_value(l.ky) +
+               ", kappa=" + format_value(l.kappa) + ", R=" + format_value(l.radius) + " m>";
+      });
+  m.def("fractional_law_from_patch", &fractional_law_from_patch, "patch"_a,
+        "asymptote-matched coefficients from the patch's moments");
+  m.def("fractional_law_fitted", &fractional_law_fitted, "patch"_a, "psi_min"_a = 1e-2,
+        "psi_max"_a = 1e2, "n"_a = 41,
+        "a and m (c, a_k) fitted by least squares to the exact integrals over psi");
+
+  m.def("_exact_loop", &exact_loop, "model"_a, "vx"_a, "vy"_a, "omega"_a, "force"_a, "error"_a,
+        "converged"_a, "tolerance"_a, "threads"_a);
+  m.def("_fractional_loop", &fractional_loop, "law"_a, "vx"_a, "vy"_a, "omega"_a, "force"_a,
+        "jacobian"_a.none(), "threads"_a);
+  m.def("_cpp_loop_exact", &cpp_loop_exact, "model"_a, "vx"_a, "vy"_a, "omega"_a,
+        "tolerance"_a = 1e-10, "seconds of the plain C++ loop (benchmark baseline)");
+  m.def("_cpp_loop_fractional", &cpp_loop_fractional, "law"_a, "vx"_a, "vy"_a, "omega"_a,
+        "jacobian"_a = false, "seconds of the plain C++ loop (benchmark baseline)");
+}
+
+}  // namespace contensou::python

@@ -1,0 +1,147 @@
+// Gear: a thin layer over the shimmy app's JSON configuration (apps/shimmy/config.cpp, compiled
+// into this module) and the gear module's public functions: simulate_landing and stability_map.
+// Configurations cross the boundary as JSON text, so that this file knows no gear parameter by
+// name and the Python side can ship a cell of a map to a Dask worker as plain data.
+#include <nanobind/stl/string.h>
+#include <nanobind/stl/tuple.h>
+#include <nanobind/stl/vector.h>
+
+#include <tuple>
+
+#include "common.hpp"
+#include "config.hpp"
+#include "contensou/friction/error.hpp"
+#include "contensou/gear.hpp"
+
+namespace contensou::python {
+namespace {
+
+using namespace nb::literals;
+using Axis = std::tuple<std::string, double, double, int>;  // parameter, from, to, points
+using Cell = std::tuple<double, double, double, double, double, bool, bool, std::string>;
+
+app::ShimmyConfig parse(const std::string& text) {
+  return app::parse_shimmy_config(text, "<configuration>");
+}
+
+MapAxis axis_of(const Axis& a) {
+  return MapAxis{std::get<0>(a), std::get<1>(a), std::get<2>(a), std::get<3>(a)};
+}
+
+Cell cell_of(const MapCell& c) {
+  return {c.x,     c.y,    c.growth_rate_per_s, c.frequency_hz, c.last_amplitude_rad, c.shimmy,
+          c.valid, c.error};
+}
+
+// Every sample of a landing as one row: the columns of contensou-shimmy's CSV history.
+const std::vector<std::string> kHistoryColumns = {
+    "t_s",        "y_m",      "ydot_mps",       "psi_rad", "psidot_radps", "wheel_spin_radps",
+    "lambda_m",   "load_n",   "patch_radius_m", "vx_mps",  "vy_mps",       "omega_radps",
+    "slip_ratio", "friction", "Fx_n",           "Fy_n",    "Mz_nm",        "brake_nm",
+    "rolling"};
+
+nb::dict simulate(const std::string& text, const std::string& model, bool record) {
+  const app::ShimmyConfig c = parse(text);
+  const ContactModel cm = contact_model_from_string(model);
+  SolverOptions solver = c.solver;
+  solver.record = record;
+  LandingRun r;
+  {
+    nb::gil_scoped_release release;
+    r = simulate_landing(make_gear_model(c.gear, cm), solver, c.criterion);
+  }
+  const std::size_t n = r.samples.size(), w = kHistoryColumns.size();
+  std::vector<double> h;
+  h.reserve(n * w);
+  for (const LandingSample& s : r.samples) {
+    const ContactState& k = s.contact;
+    h.push_back(s.t);
+    for (int i = 0; i < kStateSize; ++i) h.push_back(s.x[i]);
+    for (double v :
+         {k.load_n, k.patch_radius_m, k.slip.vx, k.slip.vy, k.slip.omega, k.slip_ratio, k.friction,
+          k.force.Fx, k.force.Fy, k.force.Mz, k.brake_torque_nm, s.rolling ? 1.0 : 0.0})
+      h.push_back(v);
+  }
+  nb::dict d;
+  d["columns"] = kHistoryColumns;
+  d["history"] = to_numpy(std::move(h), {n, w});
+  nb::list events;
+  for (const LandingEvent& e : r.events) events.append(nb::make_tuple(e.t, e.what));
+  d["events"] = events;
+  const OscillationEstimate& o = r.metrics.torsion;
+  nb::dict metrics;
+  metrics["shimmy"] = r.metrics.shimmy;
+  metrics["valid"] = o.valid();
+  metrics["frequency_hz"] = o.frequency_hz;
+  metrics["growth_rate_per_s"] = o.growth_rate_per_s;
+  metrics["first_amplitude_rad"] = o.first_amplitude;
+  metrics["last_amplitude_rad"] = o.last_amplitude;
+  metrics["half_cycles"] = o.half_cycles;
+  metrics["peak_torsion_rad"] = r.metrics.peak_torsion_rad;
+  metrics["peak_lateral_m"] = r.metrics.peak_lateral_m;
+  metrics["spin_up_s"] = r.spin_up_s ? nb::cast(*r.spin_up_s) : nb::none();
+  metrics["window_s"] = nb::make_tuple(r.window_start_s, r.window_end_s);
+  metrics["steps"] = r.steps;
+  metrics["wall_s"] = r.wall_s;
+  d["metrics"] = metrics;
+  d["contact"] = std::string(to_string(r.contact));
+  return d;
+}
+
+// Cell (i, j) of the map over x and y: the C++ stability_map on the one-cell grid at
+// (x.value(i), y.value(j)), so the cell is computed exactly as in a whole map.
+Cell map_cell(const std::string& text, const std::string& model, const Axis& xa, const Axis& ya,
+              int i, int j) {
+  const app::ShimmyConfig c = parse(text);
+  const MapAxis x = axis_of(xa), y = axis_of(ya);
+  if (i < 0 || i >= x.points || j < 0 || j >= y.points)
+    throw std::invalid_argument("cell (" + std::to_string(i) + ", " + std::to_string(j) +
+                                ") is outside the " + std::to_string(x.points) + " x " +
+                                std::to_string(y.points) + " map");
+  const MapAxis x1{x.parameter, x.value(i), x.value(i), 1};
+  const MapAxis y1{y.parameter, y.value(j), y.value(j), 1};
+  nb::gil_scoped_release release;
+  const GearModel base = make_gear_model(c.gear, contact_model_from_string(model));
+  const StabilityMap m = stability_map(base, x1, y1, c.solver, c.criterion, 1);
+  return cell_of(m.cells.at(0));
+}
+
+// The whole map by the C++ stability_map on `threads` threads (row-major cells).
+std::vector<Cell> map_cpp(const std::string& text, const std::string& model, const Axis& xa,
+                          const Axis& ya, unsigned threads) {
+  const app::ShimmyConfig c = parse(text);
+  nb::gil_scoped_release release;
+  const GearModel base = make_gear_model(c.gear, contact_model_from_string(model));
+  const StabilityMap m =
+      stability_map(base, axis_of(xa), axis_of(ya), c.solver, c.criterion, threads);
+  std::vector<Cell> out;
+  for (const MapCell& cell : m.cells) out.push_back(cell_of(cell));
+  return out;
+}
+
+}  // namespace
+
+void bind_gear(nb::module_& m) {
+  m.def(
+      "_default_config",
+      [] {
+        static const app::ShimmyConfig defaults;  // a named object: GCC 12 at -O3 warns
+        return app::to_json(defaults).dump();     // (maybe-uninitialized) on a temporary
+      },
+      "contensou-shimmy --print-config, as compact JSON text");
+  m.def(
+      "_normalise_config",
+      [](const std::string& text, const std::string& name) {
+        return app::to_json(app::parse_shimmy_config(text, name)).dump();
+      },
+      "text"_a, "name"_a = "<configuration>",
+      "reads a configuration as contensou-shimmy --config does (defaults for keys left out, "
+      "ValueError naming `name`, line, column and the bad key or value) and writes it back with "
+      "every key");
+  m.def("_gear_parameter_names", &gear_parameter_names);
+  m.def("_simulate_landing", &simulate, "config"_a, "model"_a, "record"_a);
+  m.def("_map_cell", &map_cell, "config"_a, "model"_a, "x"_a, "y"_a, "i"_a, "j"_a);
+  m.def("_stability_map_cpp", &map_cpp, "config"_a, "model"_a, "x"_a, "y"_a, "threads"_a);
+}
+
+}  // namespace contensou::python

@@ -1,0 +1,29 @@
+// contensou._core: the extension module of the Python package (python/contensou).
+#include <nanobind/nanobind.h>
+
+#include "common.hpp"
+#include "contensou/friction/error.hpp"
+#include "contensou/version.hpp"
+
+NB_MODULE(_core, m) {
+  namespace nb = nanobind;
+  m.doc() =
+      "contensou's C++ library: coupled sliding-spinning dry friction (friction, "
+      "identification, gear). Use the package contensou, which wraps this module.";
+  m.attr("version") = contensou::kVersion;  // contensou.__version__
+  // Bad input is a ValueError carrying the library's message: InvalidArgument already derives
+  // from std::invalid_argument (ValueError); a malformed file (ParseError, a runtime_error)
+  // is bad input too.
+  nb::register_exception_translator([](const std::exception_ptr& p, void*) {
+    try {
+      std::rethrow_exception(p);
+    } catch (const contensou::ParseError& e) {
+      PyErr_SetString(PyExc_ValueError, e.what());
+    } catch (const contensou::InvalidArgument& e) {
+      PyErr_SetString(PyExc_ValueError, e.what());
+    }
+  });
+  contensou::python::bind_friction(m);
+  contensou::python::bind_identification(m);
+  contensou::python::bind_gear(m);
+}

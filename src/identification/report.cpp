@@ -1,0 +1,204 @@
+// The identification report as JSON and the choice of a profile (moved from the app so that the
+// Python package writes the same report).
+#include "contensou/identification/report.hpp"
+
+#include <cmath>
+#include <filesystem>
+#include <nlohmann/json.hpp>
+#include <stdexcept>
+#include <variant>
+
+#include "contensou/friction/error.hpp"
+
+namespace contensou {
+namespace {
+
+nlohmann::json model_json(const std::string& name, const std::vector<std::string>& effects,
+                          const FitReport& fit) {
+  nlohmann::json m;
+  m["name"] = name;
+  m["effects"] = effects;
+  nlohmann::json params = nlohmann::json::object();
+  for (const ParameterEstimate& p : fit.parameters) {
+    nlohmann::json e;
+    e["value"] = p.value;
+    e["ci95"] = p.ci95 ? nlohmann::json::array({(*p.ci95)[0], (*p.ci95)[1]}) : nlohmann::json();
+    e["unit"] = p.unit;
+    e["fixed"] = p.fixed;
+    e["derived_from_profile"] = p.derived;
+    e["determined"] = p.determined || p.fixed;
+    e["std_error"] = std::isfinite(p.std_error) ? nlohmann::json(p.std_error) : nlohmann::json();
+    params[p.name] = e;
+  }
+  m["params"] = params;
+  nlohmann::json rms = nlohmann::json::object(), noise = nlohmann::json::object();
+  nlohmann::json diag = nlohmann::json::array();
+  for (const ChannelDiagnostics& c : fit.channels) {
+    rms[c.channel] = c.rms;
+    noise[c.channel] = c.noise_scale;
+    diag.push_back({{"channel", c.channel},
+                    {"points", c.points},
+                    {"runs_p_value", c.runs_p_value},
+                    {"lag1_autocorrelation", c.lag1},
+                    {"durbin_watson", c.durbin_watson},
+                    {"white", c.white}});
+  }
+  m["rms"] = rms;
+  m["noise_scale"] = noise;
+  m["diagnostics"] = diag;
+  m["residual_white"] = fit.residual_white;
+  m["aic"] = fit.aic;
+  m["bic"] = fit.bic;
+  m["chi2"] = fit.chi2;
+  m["degrees_of_freedom"] = fit.degrees_of_freedom;
+  m["error"] = fit.error;
+  m["converged"] = fit.converged;
+  nlohmann::json corr = nlohmann::json::object();
+  corr["names"] = fit.correlation_names;
+  nlohmann::json rows = nlohmann::json::array();
+  for (Eigen::Index i = 0; i < fit.correlation.rows(); ++i) {
+    nlohmann::json row = nlohmann::json::array();
+    for (Eigen::Index j = 0; j < fit.correlation.cols(); ++j) row.push_back(fit.correlation(i, j));
+    rows.push_back(row);
+  }
+  corr["matrix"] = rows;
+  m["correlation"] = corr;
+  return m;
+}
+
+nlohmann::json fit_report(const ReportInput& info, const FitReport& base) {
+  nlohmann::json r;
+  r["input"] = {{"file", info.file},
+                {"points", info.points},
+                {"values", info.values},
+                {"radius_m", info.radius_m},
+                {"normal_load_N",
+                 info.normal_load_n ? nlohmann::json(*info.normal_load_n) : nlohmann::json()}};
+  if (!info.profile.empty()) {
+    r["input"]["profile"] = info.profile;
+    if (info.profile_rms_residual_pa) {
+      r["input"]["profile_fit_rms_residual_Pa"] = *info.profile_rms_residual_pa;
+      r["input"]["profile_fit_max_residual_Pa"] = *info.profile_max_residual_pa;
+    }
+  }
+  r["base"] = model_json("fractional", {}, base);
+  r["steps"] = nlohmann::json::array();
+  r["accepted_effects"] = nlohmann::json::array();
+  r["final"] = r["base"];
+  r["error_before"] = base.error;
+  r["error_after"] = base.error;
+  r["error_definition"] =
+      "root mean square over measured channels of (channel rms / channel's largest |value|)";
+  return r;
+}
+
+nlohmann::json loop_report(const ReportInput& info, const ClosedLoopReport& loop) {
+  nlohmann::json r = fit_report(info, loop.base);
+  std::vector<std::string> effects;
+  nlohmann::json steps = nlohmann::json::array();
+  int k = 0;
+  for (const LoopStep& st : loop.steps) {
+    nlohmann::json scores = nlohmann::json::array();
+    for (const CandidateScore& c : st.scores)
+      scores.push_back({{"effect", c.effect},
+                        {"detail", c.detail},
+                        {"score", c.statistic},
+                        {"p_value", c.p_value}});
+    nlohmann::json params = nlohmann::json::object();
+    for (const ParameterEstimate& p : st.parameters)
+      params[p.name] = {
+          {"value", p.value},
+          {"ci95", p.ci95 ? nlohmann::json::array({(*p.ci95)[0], (*p.ci95)[1]}) : nlohmann::json()},
+          {"unit", p.unit}};
+    nlohmann::json rms_b = nlohmann::json::object(), rms_a = nlohmann::json::object();
+    for (const ChannelDiagnostics& c : st.channels_before) rms_b[c.channel] = c.rms;
+    for (const ChannelDiagnostics& c : st.channels_after) rms_a[c.channel] = c.rms;
+    steps.push_back({{"step", ++k},
+                     {"candidate_scores", scores},
+                     {"chosen", st.effect},
+                     {"detail", st.detail},
+                     {"accepted", st.accepted && !st.removed},
+                     {"removed_in_backward_pass", st.removed},
+                     {"verdict", st.verdict},
+                     {"ambiguous_with", st.ambiguous_with},
+                     {"separation", st.separation},
+                     {"parameters", params},
+                     {"lr", st.lr},
+                     {"lr_dof", st.lr_dof},
+                     {"lr_p_value", st.lr_p_value},
+                     {"threshold", st.threshold},
+                     {"bic_before", st.bic_before},
+                     {"bic_after", st.bic_after},
+                     {"cv_before", st.cv_before},
+                     {"cv_after", st.cv_after},
+                     {"rms_before", rms_b},
+                     {"rms_after", rms_a},
+                     {"error_before", st.error_before},
+                     {"error_after", st.error_after}});
+  }
+  r["steps"] = steps;
+  r["accepted_effects"] = loop.accepted_effects;
+  nlohmann::json ambiguities = nlohmann::json::array();
+  for (const LoopStep& st : loop.steps)
+    if (st.accepted && !st.removed)
+      for (const std::string& sep : st.separation) ambiguities.push_back(sep);
+  r["ambiguities"] = ambiguities;
+  r["final"] = model_json(loop.final_spec.uses_exact() ? "exact" : "fractional",
+                          loop.accepted_effects, loop.final_fit);
+  r["error_after"] = loop.final_fit.error;
+  r["structure_remains"] = loop.structure_remains;
+  return r;
+}
+
+}  // namespace
+
+std::string fit_report_json(const ReportInput& input, const FitReport& base, int indent) {
+  return fit_report(input, base).dump(indent);
+}
+
+std::string loop_report_json(const ReportInput& input, const ClosedLoopReport& loop, int indent) {
+  return loop_report(input, loop).dump(indent);
+}
+
+ProfileChoice choose_profile(const std::string& spec, int smoothing, bool clip) {
+  if (spec == "uniform") return {uniform_profile(), std::nullopt, "uniform", {}, {}};
+  if (spec == "hertz") return {hertz_profile(), std::nullopt, "Hertz", {}, {}};
+  if (spec == "seed-tire")
+    return {seed_tire_profile(), std::nullopt, "the seed tire's series (Table 1)", {}, {}};
+  if (!std::filesystem::exists(spec))
+    throw std::runtime_error("--profile " + spec +
+                             ": no such file (or use uniform, hertz, seed-tire)");
+  if (smoothing <= 0) {
+    MeasuredProfile m = read_profile_csv(spec);
+    const auto negative = negative_intervals(m.profile);
+    if (!negative.empty() && !clip)
+      throw std::runtime_error(
+          "--profile " + spec + ": the pressure is negative on rho in (" +
+          format_value(negative.front().first) + ", " + format_value(negative.front().second) +
+          "); a contact pressure cannot be: correct the table, or add --profile-clip to clip it at "
+          "zero");
+    m.profile.clip_negative = clip;
+    return {m.profile, m.reference_pressure_pa, spec + ", " + describe(m.profile), {}, {}};
+  }
+  const ProfileTable t = read_profile_table(spec);
+  SmoothedProfile fit;
+  try {
+    fit = smoothed_profile(t.rho, t.pressure_pa, smoothing);
+  } catch (const InvalidArgument& e) {
+    throw std::runtime_error("--profile-smoothing " + std::to_string(smoothing) + " (" + spec +
+                             "): " + e.what());
+  }
+  // Mean pressure of the fit = 2 integral_0^1 p rho d rho [Pa]; the shape is p / mean.
+  const double mean = 2.0 * moment(fit.profile, 1);
+  if (!(mean > 0.0 && std::isfinite(mean)))
+    throw std::runtime_error("--profile-smoothing " + std::to_string(smoothing) + ": the fit of " +
+                             spec + " has no positive mean pressure");
+  for (double& c : std::get<ChebyshevShape>(fit.profile.shape).c) c /= mean;
+  if (!negative_intervals(fit.profile).empty()) fit.profile.clip_negative = true;
+  return {fit.profile, mean,
+          spec + ", " + describe(fit.profile) + " fitted to " + std::to_string(t.rho.size()) +
+              " points" + (fit.profile.clip_negative ? ", clipped at 0" : ""),
+          fit.rms_residual, fit.max_residual};
+}
+
+}  // namespace contensou

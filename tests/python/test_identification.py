@@ -1,0 +1,137 @@
+"""contensou.identify against contensou-identify: the same report JSON, byte for byte, from a
+CSV path, a DataFrame and plain arrays; the result's arrays against the report; bad input."""
+
+from __future__ import annotations
+
+import json
+import subprocess
+
+import numpy as np
+import pandas as pd
+import pytest
+
+import contensou as c
+
+from conftest import DATA
+
+SOURCE = "data/seed_tire_diagrams.csv"  # the name the app is given (it runs from the root)
+PROFILE = dict(profile="seed-tire", pressure=2.1e5)
+
+
+def app_report(identify_app, tmp_path, *args: str) -> str:
+    out = tmp_path / "report.json"
+    subprocess.run([str(identify_app), SOURCE, "--radius", "0.087", *args, "--json", str(out)],
+                   check=True, capture_output=True, cwd=DATA.parents[1])
+    return out.read_text()
+
+
+@pytest.fixture(scope="module")
+def loop_app_json(identify_app, tmp_path_factory):
+    return app_report(identify_app, tmp_path_factory.mktemp("app"), "--profile", "seed-tire",
+                      "--pressure", "2.1e5")
+
+
+@pytest.fixture(scope="module")
+def loop_result():
+    return c.identify(str(DATA), radius=0.087, source=SOURCE, **PROFILE)
+
+
+def test_loop_report_is_the_apps_byte_for_byte(loop_result, loop_app_json):
+    assert loop_result.to_json() == loop_app_json
+    assert loop_result.model == "exact" and loop_result.accepted_effects == ["shape"]
+
+
+def test_fit_only_and_no_profile_reports_are_the_apps(identify_app, tmp_path):
+    assert (c.identify(DATA, radius=0.087, loop=False, source=SOURCE, **PROFILE).to_json()
+            == app_report(identify_app, tmp_path, "--profile", "seed-tire", "--pressure", "2.1e5",
+                          "--no-loop"))
+    assert (c.identify(DATA, radius=0.087, loop=False, fix={"a": 1.03}, loss="huber",
+                       normal_load=4500.0, source=SOURCE).to_json()
+            == app_report(identify_app, tmp_path, "--no-loop", "--fix", "a=1.03", "--loss", "huber",
+                          "--normal-load", "4500"))
+
+
+def test_dataframe_and_arrays_give_the_same_report(loop_app_json):
+    df = pd.read_csv(DATA, comment="#")
+    # pandas' parser and the library's agree to the last bit on this file: equal reports.
+    from_df = c.identify(df, radius=0.087, source=SOURCE, **PROFILE)
+    assert from_df.to_json() == loop_app_json
+    arrays = {name: df[name].to_numpy() for name in df.columns}
+    assert c.identify(arrays, radius=0.087, source=SOURCE, **PROFILE).to_json() == loop_app_json
+    plain = df[["vx_mps", "vy_mps", "omega_radps", "Fx_N", "Fy_N", "Mz_Nm"]].to_numpy()
+    assert c.identify(plain, radius=0.087, source=SOURCE, **PROFILE).to_json() == loop_app_json
+    assert json.loads(c.identify(df, radius=0.087, **PROFILE).to_json())["input"]["file"] == "<DataFrame>"
+
+
+def test_missing_values_are_not_measured():
+    df = pd.read_csv(DATA, comment="#")
+    df.loc[::2, "Mz_Nm"] = np.nan
+    df = df.drop(columns=["Fy_N"])
+    r = c.identify(df, radius=0.087, loop=False, **PROFILE)
+    assert r.report["input"]["values"] == 40 + 20
+    assert np.isnan(r.residuals[::2, 2]).all() and np.isnan(r.residuals[:, 1]).all()
+    assert np.isfinite(r.residuals[1::2, 2]).all()
+
+
+def test_result_arrays_agree_with_the_report(loop_result):
+    r = loop_result
+    df = pd.read_csv(DATA, comment="#")
+    np.testing.assert_array_equal(r.measured, df[["Fx_N", "Fy_N", "Mz_Nm"]].to_numpy())
+    np.testing.assert_array_equal(r.kinematics, df[["vx_mps", "vy_mps", "omega_radps"]].to_numpy())
+    assert r.residuals.shape == r.prediction.shape == (40, 3)
+    # Channel rms of the residual arrays, computed here, against the C++ report's.
+    rms = np.sqrt(np.mean(r.residuals**2, axis=0))
+    for k, ch in enumerate(["Fx_N", "Fy_N", "Mz_Nm"]):
+        assert rms[k] == pytest.approx(r.report["final"]["rms"][ch], rel=1e-12)
+        assert np.sqrt(np.mean(r.base_residuals[:, k] ** 2)) == pytest.approx(
+            r.report["base"]["rms"][ch], rel=1e-12)
+    # The shape step's residuals: before it is the base model, after it the final one.
+    shape_step = r.steps[0]
+    assert shape_step.effect == "shape" and shape_step.accepted
+    np.testing.assert_array_equal(shape_step.prediction_before, r.base_prediction)
+    np.testing.assert_array_equal(shape_step.prediction_after, r.prediction)
+    assert [s.effect for s in r.steps] == [s["chosen"] for s in r.report["steps"]]
+    # Intervals and standard errors as in the report; covariance diagonal = std_error^2.
+    final = r.report["final"]["params"]
+    for name, p in r.parameters.items():
+        assert p.value == final[name]["value"]
+        assert p.ci95 == (None if final[name]["ci95"] is None else tuple(final[name]["ci95"]))
+    assert r.covariance_names == ["F0_N", "kx"]
+    assert r.covariance.shape == (2, 2)
+    np.testing.assert_allclose(np.sqrt(np.diag(r.covariance)),
+                               [final[n]["std_error"] for n in r.covariance_names], rtol=1e-12)
+    np.testing.assert_allclose(r.covariance, r.covariance.T, rtol=1e-12)
+    corr = np.array(r.report["final"]["correlation"]["matrix"])
+    d = np.sqrt(np.diag(r.covariance))
+    np.testing.assert_allclose(r.covariance / np.outer(d, d), corr, rtol=1e-12, atol=1e-15)
+    ci = r.ci95
+    assert ci.shape == (len(r.parameters), 2)
+    assert np.isnan(ci[r.names.index("a")]).all()  # derived from the profile: no interval
+
+
+def test_bad_input_is_a_value_error_with_the_message(tmp_path):
+    df = pd.read_csv(DATA, comment="#")
+    with pytest.raises(ValueError, match=r"^radius = -1: must be positive and finite$"):
+        c.identify(df, radius=-1.0)
+    with pytest.raises(ValueError, match="missing required column.*omega_radps"):
+        c.identify(df.drop(columns=["omega_radps"]), radius=0.087)
+    bad = df.copy()
+    bad.loc[4, "vx_mps"] = np.inf
+    with pytest.raises(ValueError, match=r"row 5: column 'vx_mps': inf is not finite"):
+        c.identify(bad, radius=0.087)
+    with pytest.raises(ValueError, match="no measured channel"):
+        c.identify(df[["vx_mps", "vy_mps", "omega_radps"]], radius=0.087)
+    with pytest.raises(ValueError, match="--profile nowhere.csv: no such file"):
+        c.identify(df, radius=0.087, profile="nowhere.csv")
+    with pytest.raises(ValueError, match="unknown"):
+        c.identify(df, radius=0.087, fix={"zeta": 1.0}, loop=False)
+    broken = tmp_path / "broken.csv"
+    broken.write_text("vx_mps,vy_mps,omega_radps,Fx_N\n0.1,0,10,-5\n0.2,0,ten,-6\n")
+    with pytest.raises(ValueError, match=r"broken\.csv:3: column 'omega_radps' \(3\): not a number"):
+        c.identify(str(broken), radius=0.087)
+    words = df.astype({"Fx_N": object})
+    words.loc[2, "Fx_N"] = "high"
+    with pytest.raises(ValueError, match="column 'Fx_N': not numbers"):
+        c.identify(words, radius=0.087)
+    with pytest.raises(ValueError, match="loss"):
+        c.identify(df, radius=0.087, loss="square")
