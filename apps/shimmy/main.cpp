@@ -56,6 +56,95 @@ nlohmann::json run_json(const LandingRun& r) {
   return j;
 }
 
+nlohmann::json report_json(const StabilityReport& r) {
+  nlohmann::json eig = nlohmann::json::array();
+  for (const auto& e : r.eigenvalues) eig.push_back({e.real(), e.imag()});
+  const auto finite_or_null = [](double v) {
+    return std::isfinite(v) ? nlohmann::json(v) : nlohmann::json(nullptr);
+  };
+  return {{"stable", r.stable()},
+          {"quasi_steady_state_converged", r.state.converged},
+          {"growth_rate_per_s", r.growth_rate_per_s},
+          {"frequency_Hz", r.frequency_hz},
+          {"max_real_part_per_s", r.max_real_part},
+          {"eigenvalues_per_s", eig},
+          {"perturbation_growth_rate_per_s", finite_or_null(r.perturbation_growth_rate_per_s)},
+          {"perturbation_frequency_Hz", finite_or_null(r.perturbation_frequency_hz)},
+          {"torsion_share", r.torsion_share},
+          {"torsion_growth_rate_per_s", r.torsion_growth_rate_per_s},
+          {"torsion_frequency_Hz", r.torsion_frequency_hz},
+          {"spin_torque_damping_nms_per_rad", r.spin_torque_damping_nms_per_rad},
+          {"drag_slope_ns_per_m", r.drag_slope_ns_per_m},
+          {"friction", r.friction},
+          {"frozen_slip_ratio",
+           r.state.frozen_spin ? nlohmann::json(r.state.touchdown_slip) : nlohmann::json(nullptr)},
+          {"energy_per_cycle_J_at_1mrad",
+           {{"spin_torque", r.energy.spin_torque},
+            {"trail_lateral_force", r.energy.trail_lateral_force},
+            {"offset_drag", r.energy.offset_drag},
+            {"torsional_damping", r.energy.torsional_damping},
+            {"lateral_friction", r.energy.lateral_friction},
+            {"lateral_damping", r.energy.lateral_damping},
+            {"total", r.energy.total()}}}};
+}
+
+// The stability verdicts of both phases (docs/shimmy.md, "Stability criterion"), by the
+// eigenvalues of the linearisation and the growth after the standard perturbation.
+void print_stability(const ShimmyConfig& config, const std::vector<LandingRun>& runs,
+                     nlohmann::json& summary) {
+  std::printf(
+      "\nstability: eigenvalues of the linearisation about the quasi-steady state, and the growth "
+      "after psi' += 0.1 rad/s\n(growth: all modes; torsion: the torsional mode; pert.: growth "
+      "fitted after the kick; spin damp. -dMz/dpsi' [N m s/rad])\n"
+      "%-13s %-13s %11s %8s %12s %11s %11s %6s  %s\n",
+      "model", "phase", "growth[1/s]", "freq[Hz]", "torsion[1/s]", "pert.[1/s]", "spin damp.", "f",
+      "verdict");
+  for (const LandingRun& run : runs) {
+    const GearModel model = make_gear_model(config.gear, run.contact);
+    const StabilityReport td = assess_touchdown(model);
+    const StabilityReport br = assess_stability(model, StabilityPhase::braked_slide);
+    for (const StabilityReport* r : {&td, &br}) {
+      std::string verdict;
+      char buf[200];
+      if (!r->state.converged) {
+        verdict = "no quasi-steady state found";
+      } else if (r == &td && run.contact == ContactModel::nonholonomic) {
+        const double crit = classical_critical_damping(model);
+        const double c = config.gear.structure.torsional_damping_nms_per_rad;
+        std::snprintf(buf, sizeof buf, "%s; classical critical damping %.1f N m s/rad, margin %.2f",
+                      r->stable() ? "stable" : "SHIMMY", crit, crit > 0 ? c / crit : INFINITY);
+        verdict = buf;
+      } else if (r == &td) {
+        const double T = run.spin_up_s.value_or(0.0);
+        const double growth = std::exp(r->growth_rate_per_s * T);
+        std::snprintf(buf, sizeof buf,
+                      "%s: x%.3g over the %.3f s spin-up (%.1f cycles), worst at slip %.1f",
+                      r->growth_rate_per_s <= 0       ? "stable"
+                      : r->growth_rate_per_s * T >= 1 ? "GROWS within spin-up"
+                                                      : "grows, too slowly to matter",
+                      growth, T, r->frequency_hz * T, r->state.touchdown_slip);
+        verdict = buf;
+      } else {
+        std::snprintf(buf, sizeof buf, "%s", r->stable() ? "stable" : "SHIMMY while braking");
+        verdict = buf;
+      }
+      std::printf("%-13s %-13s %11.3f %8.2f %12.3f %11.3f %11.4g %6.3f  %s\n",
+                  to_string(run.contact), to_string(r->state.phase), r->growth_rate_per_s,
+                  r->frequency_hz, r->torsion_growth_rate_per_s, r->perturbation_growth_rate_per_s,
+                  r->spin_torque_damping_nms_per_rad, r->friction, verdict.c_str());
+      nlohmann::json j = report_json(*r);
+      j["verdict"] = verdict;
+      summary["models"][to_string(run.contact)]["stability"][to_string(r->state.phase)] = j;
+    }
+    if (run.contact == ContactModel::decoupled)
+      std::printf(
+          "  note: the decoupled model's regularised Coulomb spin torque acts on the torsion as a "
+          "damper of %.3g N m s/rad (M0 R / eps) while braking: an artefact of the regularisation, "
+          "not a physical damper; shown for reference only\n",
+          br.spin_torque_damping_nms_per_rad);
+  }
+}
+
 // One PNG per quantity, the models side by side; the analysis window shaded.
 void draw_histories(const std::string& dir, const std::vector<LandingRun>& runs) {
   struct Panel {
@@ -107,7 +196,8 @@ std::string short_name(const std::string& parameter) {
 // Writes the map's CSV and PNG; returns its summary.
 nlohmann::json write_map(const std::string& dir, const StabilityMap& m) {
   const std::string base = "map_" + short_name(m.x.parameter) + "_" + short_name(m.y.parameter) +
-                           "_" + to_string(m.contact);
+                           "_" + (m.linear ? to_string(m.phase) : "simulated") + "_" +
+                           to_string(m.contact);
   std::ostringstream csv, boundary;
   csv.precision(9);
   csv << m.x.parameter << ',' << m.y.parameter
@@ -137,8 +227,10 @@ nlohmann::json write_map(const std::string& dir, const StabilityMap& m) {
   std::ostringstream gp;
   gp << "set terminal pngcairo noenhanced size 760,620 font ',10'\nset output '" << base
      << ".png'\n"
-     << "set datafile separator ','\nset title '" << to_string(m.contact)
-     << ": torsional growth rate [1/s]; black: shimmy boundary'\n"
+     << "set datafile separator ','\nset title '" << to_string(m.contact) << ", "
+     << (m.linear ? std::string(to_string(m.phase)) + ": largest oscillatory eigenvalue real part"
+                  : std::string("simulated landing: torsional growth rate"))
+     << " [1/s]; black: stability boundary'\n"
      << "set xlabel '" << m.x.parameter << "'\nset ylabel '" << m.y.parameter << "'\n"
      << "set palette defined (0 '#2166ac', 0.5 '#f7f7f7', 1 '#b2182b')\n"
      << "set cbrange [" << -g_max << ":" << g_max << "]\nset cblabel 'growth rate [1/s]'\n"
@@ -149,6 +241,8 @@ nlohmann::json write_map(const std::string& dir, const StabilityMap& m) {
   run_gnuplot(dir, base, gp.str());
   return {{"x", m.x.parameter},
           {"y", m.y.parameter},
+          {"method", m.linear ? "eigenvalues" : "simulation"},
+          {"phase", m.linear ? nlohmann::json(to_string(m.phase)) : nlohmann::json(nullptr)},
           {"points", {m.x.points, m.y.points}},
           {"shimmy_cells", shimmy_cells},
           {"failed_cells", failed},
@@ -208,21 +302,25 @@ int run(const ShimmyConfig& config, const std::string& out, bool maps, int map_s
                    to_string(cm), d_growth, 100 * d_peak);
     runs.push_back(std::move(r));
   }
+  print_stability(config, runs, summary);
+  summary["gear"] = config.gear_name;
   summary["analysis_window_s"] = {runs.front().window_start_s, runs.front().window_end_s};
   summary["configuration"] = to_json(config);
   draw_histories(out, runs);
 
   if (maps) {
-    for (const auto& [x0, y0] : config.maps) {
-      MapAxis x = x0, y = y0;
+    for (const MapSpec& spec : config.maps) {
+      MapAxis x = spec.x, y = spec.y;
       if (map_size > 0) x.points = y.points = map_size;
       for (ContactModel cm : config.models) {
         const GearModel model = make_gear_model(config.gear, cm);
         const std::string label = std::string(to_string(cm)) + " " + short_name(x.parameter) +
                                   " x " + short_name(y.parameter);
+        const auto bar = [&](int done, int total) { progress_bar(label, done, total); };
         const StabilityMap m =
-            stability_map(model, x, y, config.solver, config.criterion, threads,
-                          [&](int done, int total) { progress_bar(label, done, total); });
+            spec.method == "simulation"
+                ? stability_map(model, x, y, config.solver, config.criterion, threads, bar)
+                : linear_stability_map(model, x, y, spec.phase, threads, bar);
         summary["maps"].push_back(write_map(out, m));
         summary["maps"].back()["model"] = to_string(cm);
       }
@@ -240,12 +338,17 @@ int main(int argc, char** argv) {
       "A one-wheel main landing gear through touchdown, sliding and spin-up: shimmy "
       "with coupled, decoupled and nonholonomic tire contact (docs/shimmy.md)",
       kName};
-  std::string config_path, out = "out/shimmy";
+  std::string config_path, out = "out/shimmy", gear = "default";
   bool maps = false, print_config = false;
   int map_size = 0;
   unsigned threads = 0;
   app.add_option("--config", config_path, "JSON configuration (defaults: docs/shimmy.md)")
       ->check(CLI::ExistingFile);
+  app.add_option("--gear", gear,
+                 "named gear the configuration starts from: default (classically stable with a "
+                 "margin of 1.4) or legacy (the gear of issue 5)")
+      ->check(CLI::IsMember({"default", "legacy"}))
+      ->capture_default_str();
   app.add_option("--out", out, "output directory")->capture_default_str();
   app.add_flag("--map", maps, "also draw the stability maps of the configuration");
   app.add_option("--map-size", map_size, "points per map axis (overrides the configuration)")
@@ -256,7 +359,9 @@ int main(int argc, char** argv) {
   CLI11_PARSE(app, argc, argv);
   try {
     ShimmyConfig config;
-    if (!config_path.empty()) config = read_shimmy_config(config_path);
+    config.gear_name = gear;
+    config.gear = gear_config_by_name(gear);
+    if (!config_path.empty()) config = read_shimmy_config(config_path, gear);
     if (print_config) {
       std::cout << to_json(config).dump(2) << '\n';
       return 0;

@@ -234,14 +234,21 @@ ContactState contact_state(const GearModel& model, const GearMode& mode, double 
 
   const double N = cs.load_n, R = cs.patch_radius_m;
   if (mode.rolling) {
+    // Stretched string with combined slip on a friction circle (landing_gear.hpp, RollingTire).
     const RollingTire& rt = c.rolling;
-    const double mu = c.tire.friction.static_coefficient;
     const double alpha = x[kLambda] / rt.relaxation_length_m;
-    const double lateral_use = std::tanh(rt.cornering_coefficient * alpha / mu);
+    const double w = std::sqrt(cs.slip.vx * cs.slip.vx + V * V * alpha * alpha);
+    const double mu = friction_at(c.tire.friction, w);
+    const double dx = -rt.longitudinal_slip_coefficient * cs.slip_ratio * N;
+    const double dy = rt.cornering_coefficient * alpha * N;
+    const double demand = std::hypot(dx, dy), cap = mu * N;
+    // cap tanh(D / cap) / D -> 1 - (D / cap)^2 / 3 for small D.
+    const double z = demand / cap;
+    const double use = z > 1e-4 ? std::tanh(z) / z : 1.0 - z * z / 3.0;
     cs.friction = mu;
-    cs.force.Fx = -mu * N * std::tanh(rt.longitudinal_slip_coefficient * cs.slip_ratio / mu);
-    cs.force.Fy = mu * N * lateral_use;
-    cs.force.Mz = -rt.aligning_coefficient_m * N * (mu / rt.cornering_coefficient) * lateral_use -
+    cs.force.Fx = dx * use;
+    cs.force.Fy = dy * use;
+    cs.force.Mz = -rt.aligning_coefficient_m / rt.cornering_coefficient * cs.force.Fy -
                   rt.tread_moment_nm2_per_rad * (N / s.static_load_n) * x[kPsiDot] / V;
     return cs;
   }
@@ -351,12 +358,37 @@ std::vector<std::string> gear_parameter_names() {
   return names;
 }
 
-double string_deflection_for_force(const GearModel& model, double lateral_force_n, double load_n) {
-  if (load_n <= 0.0) return 0.0;
-  const RollingTire& rt = model.config.rolling;
-  const double mu = model.config.tire.friction.static_coefficient;
-  const double use = std::clamp(lateral_force_n / (mu * load_n), -0.99, 0.99);
-  return rt.relaxation_length_m * mu * std::atanh(use) / rt.cornering_coefficient;
+double string_deflection_for_force(const GearModel& model, double t, const GearState& x,
+                                   double lateral_force_n) {
+  const GearMode rolling{true, true, false};
+  GearState probe = x;
+  const auto force = [&](double lambda) {
+    probe[kLambda] = lambda;
+    return contact_state(model, rolling, t, probe).force.Fy;
+  };
+  if (contact_state(model, rolling, t, x).load_n <= 0.0) return 0.0;
+  // Fy(lambda) rises from 0 to its peak within a slip angle of a few mu / C_Fa; search up to
+  // alpha = 1 rad, and stop at the bracket's end if the force is out of reach.
+  const double sigma = model.config.rolling.relaxation_length_m;
+  double lo = 0.0, hi = std::copysign(sigma, lateral_force_n);
+  if (std::abs(force(hi)) < std::abs(lateral_force_n)) return hi;
+  for (int i = 0; i < 60; ++i) {
+    const double mid = 0.5 * (lo + hi);
+    (std::abs(force(mid)) < std::abs(lateral_force_n) ? lo : hi) = mid;
+  }
+  return 0.5 * (lo + hi);
+}
+
+GearConfig legacy_gear_config() {
+  GearConfig c;
+  c.structure.torsional_damping_nms_per_rad = 100.0;
+  return c;
+}
+
+GearConfig gear_config_by_name(const std::string& name) {
+  if (name == "default") return GearConfig{};
+  if (name == "legacy") return legacy_gear_config();
+  throw InvalidArgument("gear", name, "must be default or legacy");
 }
 
 }  // namespace contensou

@@ -194,7 +194,7 @@ LandingRun simulate_landing(const GearModel& model, const SolverOptions& options
       // The string takes the sliding lateral force over, so Fy is continuous.
       const ContactState cs = contact_state(model, mode, t, x);
       mode.rolling = true;
-      x[kLambda] = string_deflection_for_force(model, cs.force.Fy, cs.load_n);
+      x[kLambda] = string_deflection_for_force(model, t, x, cs.force.Fy);
       if (!run.spin_up_s) run.spin_up_s = t - s.touchdown_time_s;
       run.events.push_back({t, "spin-up"});
     }

@@ -21,8 +21,23 @@ for key in ["shimmy", "frequency_Hz", "growth_rate_per_s", "peak_torsion_rad", "
 assert isinstance(run["shimmy"], bool)
 assert run["steps"] > 0 and run["peak_torsion_rad"] > 0
 assert run["convergence"]["converged"], run["convergence"]
+for phase in ["touchdown", "braked_slide"]:
+    st = run["stability"][phase]
+    assert st["quasi_steady_state_converged"], (phase, st)
+    assert isinstance(st["stable"], bool) and st["verdict"], (phase, st)
+    assert len(st["eigenvalues_per_s"]) >= 4, (phase, st)
 PY
 done
+grep -q "braked_slide" "$dir/stdout" || fail "no braked-slide verdict printed"
+grep -q "margin 1.4" "$dir/stdout" || fail "no classical margin printed: $(cat "$dir/stdout")"
+python3 -c 'import json, sys; assert json.load(open(sys.argv[1]))["gear"] == "default"' \
+  "$dir/demo/summary.json" || fail "summary gear name"
+
+# The legacy gear: classically unstable, by name.
+"$app" --gear legacy --out "$dir/legacy" > "$dir/legacy_stdout" 2>&1 || fail "legacy run"
+grep -q "nonholonomic  touchdown .*SHIMMY" "$dir/legacy_stdout" || fail "legacy gear not classically unstable"
+"$app" --gear boeing --out "$dir/nogear" > /dev/null 2> "$dir/err" && fail "--gear boeing accepted"
+grep -q -- "--gear" "$dir/err" || fail "--gear error does not name the option: $(cat "$dir/err")"
 
 # A configuration file: the printed default, with a 3 x 3 map, read back.
 "$app" --print-config > "$dir/config.json" || fail "print-config"
@@ -35,7 +50,8 @@ json.dump(c, open(sys.argv[1], "w"), indent=2)
 PY
 "$app" --config "$dir/config.json" --out "$dir/map" --map --map-size 3 > /dev/null 2>&1 \
   || fail "map run"
-[ -s "$dir/map/map_forward_speed_mps_torsional_damping_nms_per_rad_coupled.csv" ] || fail "no map CSV"
+[ -s "$dir/map/map_forward_speed_mps_torsional_damping_nms_per_rad_touchdown_coupled.csv" ] \
+  || fail "no map CSV: $(ls "$dir/map")"
 
 # expect NAME FRAGMENT CONFIG_TEXT
 expect() {
@@ -59,6 +75,9 @@ expect "bad value" "structure.torsional_inertia_kgm2 = -25: must be positive" \
 expect "bad model" "must be coupled, decoupled or nonholonomic" '{"models": ["rolling"]}'
 expect "bad map parameter" "unknown parameter 'scenario.speed'" \
   '{"maps": [{"x": {"parameter": "scenario.speed"}, "y": {"parameter": "structure.offset_m"}}]}'
+expect "bad map phase" "maps.phase: expected touchdown or braked_slide" \
+  '{"maps": [{"x": {"parameter": "structure.offset_m"}, "y": {"parameter": "structure.offset_m"}, "phase": "cruise"}]}'
+expect "bad gear name" "gear = boeing: must be default or legacy" '{"gear": "boeing"}'
 # Found by fuzz_shimmy_config: a number beyond double range escaped as a JSON library error
 # without a position, and a map axis without a parameter was accepted.
 expect "number overflow" "bad.json:2:30: invalid JSON: number overflow parsing '1e2111'" \

@@ -46,11 +46,14 @@ struct GearStructure {
   double lateral_damping_ns_per_m = 1000.0;       // c_y
   double torsional_inertia_kgm2 = 25.0;           // I_psi
   double torsional_stiffness_nm_per_rad = 1.0e6;  // k_psi
-  double torsional_damping_nms_per_rad = 100.0;   // c_psi (1 % of critical)
-  double trail_m = 0.05;                          // e, patch centre behind the strut axis
-  double offset_m = 0.25;                         // l, patch centre left of the strut axis
-  double wheel_radius_m = 0.57;                   // r, rolling radius
-  double wheel_inertia_kgm2 = 10.0;               // I_w
+  // c_psi, strut damping and shimmy damper together: 1.4 times the largest damping the
+  // classical (rolling, unbraked) model needs over 30-90 m/s (docs/shimmy.md, "Default gear");
+  // the legacy gear (legacy_gear_config) has 100 (1 % of critical).
+  double torsional_damping_nms_per_rad = 245.0;
+  double trail_m = 0.05;             // e, patch centre behind the strut axis
+  double offset_m = 0.25;            // l, patch centre left of the strut axis
+  double wheel_radius_m = 0.57;      // r, rolling radius
+  double wheel_inertia_kgm2 = 10.0;  // I_w
 };
 
 // The sliding tire: the seed tire's pressure profile (theory.md section 5) at the inflation
@@ -67,11 +70,14 @@ struct SlidingTire {
   bool exact_integrals = false;  // coupled model: exact integrals instead of the law
 };
 
-// The rolling tire (von Schlippe / Somieski stretched string; Pacejka 2012, ch. 5):
-//   lambda' = -(vy + a psi') - (V / sigma) lambda,   alpha = lambda / sigma,
-//   Fy = mu N tanh(C_Fa alpha / mu),  Mz = -C_Ma N (mu / C_Fa) tanh(C_Fa alpha / mu) - kappa_t psi'
-//   / V, Fx = -mu N tanh(C_x s / mu),      s = vx / V (longitudinal slip ratio),
-// with a = R the half contact length and mu the friction at zero slip speed.
+// The rolling tire (von Schlippe / Somieski stretched string; Pacejka 2012, ch. 5) with combined
+// slip on a friction circle (docs/shimmy.md, "nonholonomic"):
+//   lambda' = -(vy + a psi') - (V / sigma) lambda,   alpha = lambda / sigma,  s = vx / V,
+//   demanded forces Dx = -C_x s N, Dy = C_Fa alpha N, D = |(Dx, Dy)|, cap = mu N,
+//   (Fx, Fy) = (Dx, Dy) cap tanh(D / cap) / D    (|F| <= mu N: braking and cornering share it),
+//   Mz = -(C_Ma / C_Fa) Fy - kappa_t (N / N_s) psi' / V,
+// with a = R the half contact length and mu = f(w) the sliding tire's friction law at the slip
+// speed w = (vx^2 + (V alpha)^2)^(1/2), so that both tires brake at the same friction level.
 struct RollingTire {
   double relaxation_length_m = 0.6;             // sigma
   double cornering_coefficient = 8.0;           // C_Fa [1/rad], cornering stiffness / N
@@ -113,6 +119,12 @@ struct GearConfig {
 
 // Throws InvalidArgument naming the first bad field.
 void validate(const GearConfig& config);
+
+// Named gears (docs/shimmy.md, "Parameters"): "default" (GearConfig{}: classically stable with a
+// margin of 1.4 over 30-90 m/s) and "legacy" (the gear of issue 5, torsional damping
+// 100 N m s/rad, classically unstable). Throws InvalidArgument for another name.
+GearConfig gear_config_by_name(const std::string& name);
+GearConfig legacy_gear_config();
 
 // The numeric parameters of a GearConfig by dotted name ("structure.offset_m",
 // "scenario.forward_speed_mps", "tire.friction.static_coefficient", ...); nullptr if unknown.
@@ -169,8 +181,10 @@ ContactState contact_state(const GearModel& model, const GearMode& mode, double 
 // dx/dt.
 GearState gear_rhs(const GearModel& model, const GearMode& mode, double t, const GearState& x);
 
-// Stretched-string deflection that carries the sliding lateral force over unchanged when
-// the tire starts to roll (inverse of the rolling Fy law).
-double string_deflection_for_force(const GearModel& model, double lateral_force_n, double load_n);
+// Stretched-string deflection that carries the sliding lateral force over unchanged when the
+// tire starts to roll in state x (inverse of the rolling Fy law at the state's longitudinal slip,
+// by bisection; the largest reachable force if |Fy| exceeds it).
+double string_deflection_for_force(const GearModel& model, double t, const GearState& x,
+                                   double lateral_force_n);
 
 }  // namespace contensou

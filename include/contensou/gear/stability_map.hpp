@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "contensou/gear/landing_simulation.hpp"
+#include "contensou/gear/linear_stability.hpp"
 
 namespace contensou {
 
@@ -31,6 +32,8 @@ struct MapCell {
 struct StabilityMap {
   MapAxis x, y;
   ContactModel contact = ContactModel::coupled;
+  bool linear = false;  // eigenvalue map (linear_stability_map), else simulated landings
+  StabilityPhase phase = StabilityPhase::braked_slide;  // of an eigenvalue map
   std::vector<MapCell> cells;  // row-major: cells[j * x.points + i] at (x.value(i), y.value(j))
 };
 
@@ -41,5 +44,13 @@ StabilityMap stability_map(const GearModel& base, const MapAxis& x, const MapAxi
                            const SolverOptions& solver, const ShimmyCriterion& criterion,
                            unsigned threads = 0,
                            const std::function<void(int, int)>& progress = {});
+
+// The same grid judged by eigenvalues (linear_stability.hpp): each cell's growth rate is
+// linear_growth_rate(model, phase), the largest real part of an oscillatory eigenvalue of the
+// linearisation about the phase's quasi-steady state; shimmy = growth rate > 0; valid = the
+// quasi-steady state was found. Much cheaper than simulating (no amplitude threshold).
+StabilityMap linear_stability_map(const GearModel& base, const MapAxis& x, const MapAxis& y,
+                                  StabilityPhase phase, unsigned threads = 0,
+                                  const std::function<void(int, int)>& progress = {});
 
 }  // namespace contensou
