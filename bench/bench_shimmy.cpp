@@ -1,5 +1,6 @@
 // The shimmy demo's speed: a one-second landing of each contact model (wall time and the
-// real-time factor: simulated seconds per wall second), and a 50 x 50 stability map on 2 threads
+// real-time factor: simulated seconds per second), with the structured Jacobian and with
+// CVODE's difference quotients, and a 50 x 50 stability map on 2 threads
 // against the same map on 1 thread as the in-process baseline (the ratio is the speed-up).
 #include <benchmark/benchmark.h>
 
@@ -12,15 +13,18 @@ using namespace contensou;
 
 namespace {
 
-void BM_Landing(benchmark::State& state, ContactModel contact, bool exact) {
+void BM_Landing(benchmark::State& state, ContactModel contact, bool exact, bool analytic) {
   GearConfig c;
   c.tire.exact_integrals = exact;
   const GearModel m = make_gear_model(c, contact);
   SolverOptions o;
   o.record = false;
-  long steps = 0;
-  for (auto _ : state) steps = simulate_landing(m, o).steps;
-  state.counters["steps"] = static_cast<double>(steps);
+  o.analytic_jacobian = analytic;
+  LandingRun run;
+  for (auto _ : state) run = simulate_landing(m, o);
+  state.counters["steps"] = static_cast<double>(run.steps);
+  state.counters["rhs"] = static_cast<double>(run.rhs_evaluations);
+  state.counters["jacobians"] = static_cast<double>(run.jacobian_evaluations);
   state.counters["realtime_factor"] = benchmark::Counter(
       c.scenario.end_time_s * static_cast<double>(state.iterations()), benchmark::Counter::kIsRate);
 }
@@ -38,12 +42,23 @@ void BM_Map(benchmark::State& state) {
 
 }  // namespace
 
-BENCHMARK_CAPTURE(BM_Landing, coupled, ContactModel::coupled, false)->Unit(benchmark::kMillisecond);
-BENCHMARK_CAPTURE(BM_Landing, decoupled, ContactModel::decoupled, false)
+// Each landing with the structured Jacobian (gear_jacobian) and with CVODE's difference
+// quotients ("_dq"), in the same binary.
+BENCHMARK_CAPTURE(BM_Landing, coupled, ContactModel::coupled, false, true)
     ->Unit(benchmark::kMillisecond);
-BENCHMARK_CAPTURE(BM_Landing, nonholonomic, ContactModel::nonholonomic, false)
+BENCHMARK_CAPTURE(BM_Landing, coupled_dq, ContactModel::coupled, false, false)
     ->Unit(benchmark::kMillisecond);
-BENCHMARK_CAPTURE(BM_Landing, coupled_exact_integrals, ContactModel::coupled, true)
+BENCHMARK_CAPTURE(BM_Landing, decoupled, ContactModel::decoupled, false, true)
+    ->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(BM_Landing, decoupled_dq, ContactModel::decoupled, false, false)
+    ->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(BM_Landing, nonholonomic, ContactModel::nonholonomic, false, true)
+    ->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(BM_Landing, nonholonomic_dq, ContactModel::nonholonomic, false, false)
+    ->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(BM_Landing, coupled_exact_integrals, ContactModel::coupled, true, true)
+    ->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(BM_Landing, coupled_exact_integrals_dq, ContactModel::coupled, true, false)
     ->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_Map)
     ->Args({2, 50})

@@ -164,8 +164,27 @@ GearMode initial_mode(const GearModel& model) {
 
 namespace {
 
-// Sliding friction on the tire from the chosen law. N, R and f fix the law's scales:
+// The vector fractional law of the coupled model at load N, patch radius R and friction f:
 // F0 = f N, M0 = f N R A^2/A^1, Mk = f N R A^3 / (2 A^1) (theory.md section 4).
+FractionalLaw<double> coupled_law(const GearModel& model, double N, double R, double f) {
+  const SlidingTire& tire = model.config.tire;
+  FractionalLaw<double> law;
+  law.F0 = f * N;
+  law.M0 = f * N * R * model.moment_ratio_2;
+  law.Mk = 0.5 * f * N * R * model.moment_ratio_3;
+  law.a = model.law_a;
+  law.m = model.law_m;
+  law.c = model.law_c;
+  law.a_k = model.law_a_k;
+  law.kx = tire.rolling_shift;
+  law.ky = 0.0;
+  law.kappa = 1.0;
+  law.radius = R;
+  law.regularization_speed = tire.regularization_speed;
+  return law;
+}
+
+// Sliding friction on the tire from the chosen law at load N, patch radius R and friction f.
 Resultants<double> sliding_friction(const GearModel& model, const Kinematics<double>& k, double N,
                                     double R, double f) {
   const SlidingTire& tire = model.config.tire;
@@ -186,20 +205,52 @@ Resultants<double> sliding_friction(const GearModel& model, const Kinematics<dou
             .resultants;
     return {scale * r.Fx, scale * r.Fy, scale * R * r.Mz};
   }
-  FractionalLaw<double> law;
-  law.F0 = f * N;
-  law.M0 = f * N * R * model.moment_ratio_2;
-  law.Mk = 0.5 * f * N * R * model.moment_ratio_3;
-  law.a = model.law_a;
-  law.m = model.law_m;
-  law.c = model.law_c;
-  law.a_k = model.law_a_k;
-  law.kx = tire.rolling_shift;
-  law.ky = 0.0;
-  law.kappa = 1.0;
-  law.radius = R;
-  law.regularization_speed = eps;
-  return fractional_resultants(law, k);
+  return fractional_resultants(coupled_law(model, N, R, f), k);
+}
+
+// Effective slip speed of the sliding patch, (v^2 + (2 u / 3)^2)^(1/2): the mean local slip
+// speed's two limits (docs/shimmy.md); f(w) of SlipSpeedFriction.
+double sliding_slip_speed(const Kinematics<double>& k, double R) {
+  const double u = k.omega * R;
+  return std::sqrt(k.vx * k.vx + k.vy * k.vy + 4.0 / 9.0 * u * u);
+}
+
+// df/dw of f(w) = f_k + (f_s - f_k) exp(-(w / w_s)^delta).
+double friction_slope(const SlipSpeedFriction<double>& law, double w) {
+  if (!(w > 0.0)) return 0.0;
+  const double z = w / law.reference_speed;
+  const double zd = std::pow(z, law.exponent);
+  return -(law.static_coefficient - law.kinetic_coefficient) * std::exp(-zd) * law.exponent * zd /
+         w;
+}
+
+// The friction on the tire from the patch kinematics cs.slip (and slip_ratio), the string's
+// deflection lambda, at cs.load_n > 0 and cs.patch_radius_m; fills cs.force and cs.friction.
+void contact_forces(const GearModel& model, bool rolling, double lambda, ContactState& cs) {
+  const GearConfig& c = model.config;
+  const double V = c.scenario.forward_speed_mps;
+  const double N = cs.load_n, R = cs.patch_radius_m;
+  if (rolling) {
+    // Stretched string with combined slip on a friction circle (landing_gear.hpp, RollingTire).
+    const RollingTire& rt = c.rolling;
+    const double alpha = lambda / rt.relaxation_length_m;
+    const double w = std::sqrt(cs.slip.vx * cs.slip.vx + V * V * alpha * alpha);
+    const double mu = friction_at(c.tire.friction, w);
+    const double dx = -rt.longitudinal_slip_coefficient * cs.slip_ratio * N;
+    const double dy = rt.cornering_coefficient * alpha * N;
+    const double demand = std::hypot(dx, dy), cap = mu * N;
+    // cap tanh(D / cap) / D -> 1 - (D / cap)^2 / 3 for small D.
+    const double z = demand / cap;
+    const double use = z > 1e-4 ? std::tanh(z) / z : 1.0 - z * z / 3.0;
+    cs.friction = mu;
+    cs.force.Fx = dx * use;
+    cs.force.Fy = dy * use;
+    cs.force.Mz = -rt.aligning_coefficient_m / rt.cornering_coefficient * cs.force.Fy -
+                  rt.tread_moment_nm2_per_rad * (N / c.scenario.static_load_n) * cs.slip.omega / V;
+    return;
+  }
+  cs.friction = friction_at(c.tire.friction, sliding_slip_speed(cs.slip, R));
+  cs.force = sliding_friction(model, cs.slip, N, R, cs.friction);
 }
 
 }  // namespace
@@ -230,35 +281,97 @@ ContactState contact_state(const GearModel& model, const GearMode& mode, double 
     const double z = (wheel_slip - s.brake_target_slip) / s.brake_slip_band;
     cs.brake_torque_nm = s.brake_max_torque_nm / (1.0 + std::exp(std::clamp(z, -50.0, 50.0)));
   }
-  if (cs.load_n <= 0.0) return cs;
-
-  const double N = cs.load_n, R = cs.patch_radius_m;
-  if (mode.rolling) {
-    // Stretched string with combined slip on a friction circle (landing_gear.hpp, RollingTire).
-    const RollingTire& rt = c.rolling;
-    const double alpha = x[kLambda] / rt.relaxation_length_m;
-    const double w = std::sqrt(cs.slip.vx * cs.slip.vx + V * V * alpha * alpha);
-    const double mu = friction_at(c.tire.friction, w);
-    const double dx = -rt.longitudinal_slip_coefficient * cs.slip_ratio * N;
-    const double dy = rt.cornering_coefficient * alpha * N;
-    const double demand = std::hypot(dx, dy), cap = mu * N;
-    // cap tanh(D / cap) / D -> 1 - (D / cap)^2 / 3 for small D.
-    const double z = demand / cap;
-    const double use = z > 1e-4 ? std::tanh(z) / z : 1.0 - z * z / 3.0;
-    cs.friction = mu;
-    cs.force.Fx = dx * use;
-    cs.force.Fy = dy * use;
-    cs.force.Mz = -rt.aligning_coefficient_m / rt.cornering_coefficient * cs.force.Fy -
-                  rt.tread_moment_nm2_per_rad * (N / s.static_load_n) * x[kPsiDot] / V;
-    return cs;
-  }
-  // Effective slip speed of the patch, (v^2 + (2 u / 3)^2)^(1/2): the mean local slip speed's
-  // two limits (docs/shimmy.md); f(w) of SlipSpeedFriction.
-  const double u = x[kPsiDot] * R;
-  const double w = std::sqrt(cs.slip.vx * cs.slip.vx + cs.slip.vy * cs.slip.vy + 4.0 / 9.0 * u * u);
-  cs.friction = friction_at(c.tire.friction, w);
-  cs.force = sliding_friction(model, cs.slip, N, R, cs.friction);
+  if (cs.load_n > 0.0) contact_forces(model, mode.rolling, x[kLambda], cs);
   return cs;
+}
+
+GearJacobian gear_jacobian(const GearModel& model, const GearMode& mode, double t,
+                           const GearState& x) {
+  const GearConfig& c = model.config;
+  const GearStructure& g = c.structure;
+  const LandingScenario& s = c.scenario;
+  const double V = s.forward_speed_mps, r = g.wheel_radius_m;
+  const ContactState cs = contact_state(model, mode, t, x);
+  const double cp = std::cos(x[kPsi]), sp = std::sin(x[kPsi]);
+  const double lateral = x[kYDot] + s.drift_speed_mps;
+
+  // K = d(Fx, Fy, Mz)/d(vx, vy, omega, lambda) of the contact law at fixed load and patch.
+  Eigen::Matrix<double, 3, 4> K = Eigen::Matrix<double, 3, 4>::Zero();
+  if (cs.load_n > 0.0) {
+    if (!mode.rolling && model.contact == ContactModel::coupled && !model.exact) {
+      // F = f(w) G(v, omega): the law's analytic Jacobian at fixed f, plus G f'(w) grad w.
+      const double R = cs.patch_radius_m;
+      const FractionalWithJacobian law = fractional_resultants_with_jacobian(
+          coupled_law(model, cs.load_n, R, cs.friction), cs.slip);
+      K.leftCols<3>() = law.jacobian;
+      const double w = sliding_slip_speed(cs.slip, R);
+      if (w > 0.0) {
+        const double slope = friction_slope(c.tire.friction, w) / cs.friction;
+        const Eigen::Vector3d grad_w(cs.slip.vx / w, cs.slip.vy / w,
+                                     4.0 / 9.0 * cs.slip.omega * R * R / w);
+        const Eigen::Vector3d F(law.resultants.Fx, law.resultants.Fy, law.resultants.Mz);
+        K.leftCols<3>() += slope * F * grad_w.transpose();
+      }
+    } else {
+      // Forward differences of the law in its four inputs (one evaluation each).
+      const Eigen::Vector3d F0(cs.force.Fx, cs.force.Fy, cs.force.Mz);
+      const int inputs = mode.rolling ? 4 : 3;
+      for (int j = 0; j < inputs; ++j) {
+        ContactState p = cs;
+        double lambda = x[kLambda];
+        double* v = j == 0 ? &p.slip.vx : j == 1 ? &p.slip.vy : j == 2 ? &p.slip.omega : &lambda;
+        const double h =
+            j == 3 ? 1e-7 * std::max(std::abs(lambda), 1e-3) : 1e-7 * std::max(std::abs(*v), 1.0);
+        *v += h;
+        p.slip_ratio = p.slip.vx / V;
+        contact_forces(model, mode.rolling, lambda, p);
+        K.col(j) = (Eigen::Vector3d(p.force.Fx, p.force.Fy, p.force.Mz) - F0) / h;
+      }
+    }
+  }
+  // d(vx, vy, omega, lambda)/dx (kinematics of landing_gear.hpp).
+  Eigen::Matrix<double, 4, kStateSize> D = Eigen::Matrix<double, 4, kStateSize>::Zero();
+  D(0, kYDot) = sp;
+  D(0, kPsi) = -V * sp + lateral * cp;
+  D(0, kPsiDot) = -g.offset_m;
+  D(0, kSpin) = -r;
+  D(1, kYDot) = cp;
+  D(1, kPsi) = -V * cp - lateral * sp;
+  D(1, kPsiDot) = -g.trail_m;
+  D(2, kPsiDot) = 1.0;
+  D(3, kLambda) = 1.0;
+  const Eigen::Matrix<double, 3, kStateSize> dF = K * D;  // rows Fx, Fy, Mz
+
+  GearJacobian J = GearJacobian::Zero();
+  const Resultants<double>& F = cs.force;
+  J(kY, kYDot) = 1.0;
+  J.row(kYDot) = (dF.row(0) * sp + dF.row(1) * cp) / g.lateral_mass_kg;
+  J(kYDot, kPsi) += (F.Fx * cp - F.Fy * sp) / g.lateral_mass_kg;
+  J(kYDot, kY) -= g.lateral_stiffness_n_per_m / g.lateral_mass_kg;
+  J(kYDot, kYDot) -= g.lateral_damping_ns_per_m / g.lateral_mass_kg;
+  J(kPsi, kPsiDot) = 1.0;
+  J.row(kPsiDot) =
+      (dF.row(2) - g.trail_m * dF.row(1) - g.offset_m * dF.row(0)) / g.torsional_inertia_kgm2;
+  J(kPsiDot, kPsi) -= g.torsional_stiffness_nm_per_rad / g.torsional_inertia_kgm2;
+  J(kPsiDot, kPsiDot) -= g.torsional_damping_nms_per_rad / g.torsional_inertia_kgm2;
+  J.row(kSpin) = -r * dF.row(0) / g.wheel_inertia_kgm2;
+  // d/dOmega of T(Omega) tanh(Omega), T = T_max / (1 + e^z), z = (1 - Omega r / V - s*) / ds.
+  const double th = std::tanh(x[kSpin]);
+  double dT = 0.0;
+  if (mode.brake_command) {
+    const double z = (1.0 - x[kSpin] * r / V - s.brake_target_slip) / s.brake_slip_band;
+    if (std::abs(z) < 50.0) {
+      const double ez = std::exp(z);
+      dT = s.brake_max_torque_nm * ez / ((1.0 + ez) * (1.0 + ez)) * r / (V * s.brake_slip_band);
+    }
+  }
+  J(kSpin, kSpin) -= (dT * th + cs.brake_torque_nm * (1.0 - th * th)) / g.wheel_inertia_kgm2;
+  if (mode.rolling && mode.loaded) {
+    J.row(kLambda) = -D.row(1);
+    J(kLambda, kPsiDot) -= cs.patch_radius_m;
+    J(kLambda, kLambda) -= V / c.rolling.relaxation_length_m;
+  }
+  return J;
 }
 
 GearState gear_rhs(const GearModel& model, const GearMode& mode, double t, const GearState& x) {

@@ -304,3 +304,51 @@ TEST(StabilityMap, CellsMatchSingleRunsAndCoverTheGrid) {
     EXPECT_LT(map.cells[static_cast<std::size_t>(3 + i)].growth_rate_per_s,
               map.cells[static_cast<std::size_t>(i)].growth_rate_per_s);
 }
+
+// The structured Jacobian against central differences of the right-hand side (brute force) for
+// every contact model, in the sliding, rolling and braked modes, at states off equilibrium.
+TEST(LandingGear, StructuredJacobianMatchesDifferencesOfTheRightHandSide) {
+  for (bool exact : {false, true}) {
+    for (ContactModel cm :
+         {ContactModel::coupled, ContactModel::decoupled, ContactModel::nonholonomic}) {
+      if (exact && cm != ContactModel::coupled) continue;
+      GearConfig c;
+      c.tire.exact_integrals = exact;
+      const GearModel m = make_gear_model(c, cm);
+      const double V = c.scenario.forward_speed_mps, r = c.structure.wheel_radius_m;
+      for (bool brake : {false, true}) {
+        for (bool rolling : {false, true}) {
+          const GearMode mode{true, rolling, brake};
+          GearState x;
+          x << 1e-3, 0.02, 4e-3, 0.3, V * (rolling ? 0.97 : 0.6) / r, 2e-3;
+          const double t = c.scenario.touchdown_time_s + 0.6 * c.scenario.load_ramp_s;
+          const GearJacobian J = gear_jacobian(m, mode, t, x);
+          for (int j = 0; j < kStateSize; ++j) {
+            const double h = 1e-6 * std::max(std::abs(x[j]), 1e-2);
+            GearState xp = x, xm = x;
+            xp[j] += h;
+            xm[j] -= h;
+            const GearState d = (gear_rhs(m, mode, t, xp) - gear_rhs(m, mode, t, xm)) / (2 * h);
+            const double tol = (exact ? 1e-3 : 1e-5) * std::max(d.norm(), 1.0);
+            EXPECT_LT((J.col(j) - d).norm(), tol)
+                << to_string(cm) << (exact ? " exact" : "") << " brake " << brake << " rolling "
+                << rolling << " column " << j << "\n"
+                << J.col(j).transpose() << "\n"
+                << d.transpose();
+          }
+        }
+      }
+    }
+  }
+}
+
+TEST(LandingGear, StructuredAndDifferenceQuotientJacobiansGiveTheSameLanding) {
+  const GearModel m = make_gear_model(GearConfig{}, ContactModel::coupled);
+  SolverOptions analytic{1e-9}, dq{1e-9};
+  dq.analytic_jacobian = false;
+  const LandingRun a = simulate_landing(m, analytic), b = simulate_landing(m, dq);
+  EXPECT_NEAR(a.metrics.peak_torsion_rad, b.metrics.peak_torsion_rad,
+              1e-5 * b.metrics.peak_torsion_rad);
+  EXPECT_NEAR(a.metrics.torsion.growth_rate_per_s, b.metrics.torsion.growth_rate_per_s, 1e-3);
+  EXPECT_LT(a.rhs_evaluations, b.rhs_evaluations);  // no difference quotients
+}

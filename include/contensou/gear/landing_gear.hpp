@@ -181,6 +181,14 @@ ContactState contact_state(const GearModel& model, const GearMode& mode, double 
 // dx/dt.
 GearState gear_rhs(const GearModel& model, const GearMode& mode, double t, const GearState& x);
 
+// d(dx/dt)/dx, structured: the gear's equations and kinematics differentiated by hand, the
+// contact law's partials d(Fx, Fy, Mz)/d(vx, vy, omega, lambda) analytic for the coupled
+// fractional law (fractional_resultants_with_jacobian and f'(w)), by forward differences of the
+// law alone (one evaluation per input) for the others (docs/shimmy.md, "Numerics").
+using GearJacobian = Eigen::Matrix<double, kStateSize, kStateSize>;
+GearJacobian gear_jacobian(const GearModel& model, const GearMode& mode, double t,
+                           const GearState& x);
+
 // Stretched-string deflection that carries the sliding lateral force over unchanged when the
 // tire starts to roll in state x (inverse of the rolling Fy law at the state's longitudinal slip,
 // by bisection; the largest reachable force if |Fy| exceeds it).
