@@ -40,6 +40,16 @@ void BM_Map(benchmark::State& state) {
   state.counters["threads"] = threads;
 }
 
+// The same 50 x 50 grid judged by eigenvalues (braked slide), one thread.
+void BM_LinearMap(benchmark::State& state) {
+  const GearModel m = make_gear_model(GearConfig{}, ContactModel::coupled);
+  const MapAxis x{"scenario.forward_speed_mps", 30.0, 90.0, 50};
+  const MapAxis y{"structure.offset_m", 0.0, 0.5, 50};
+  for (auto _ : state)
+    benchmark::DoNotOptimize(linear_stability_map(m, x, y, StabilityPhase::braked_slide, 1));
+  state.counters["cells"] = 2500;
+}
+
 }  // namespace
 
 // Each landing with the structured Jacobian (gear_jacobian) and with CVODE's difference
@@ -60,6 +70,7 @@ BENCHMARK_CAPTURE(BM_Landing, coupled_exact_integrals, ContactModel::coupled, tr
     ->Unit(benchmark::kMillisecond);
 BENCHMARK_CAPTURE(BM_Landing, coupled_exact_integrals_dq, ContactModel::coupled, true, false)
     ->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_LinearMap)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_Map)
     ->Args({2, 50})
     ->Args({1, 50})

@@ -43,6 +43,9 @@ void validate(const GearConfig& c) {
   require_finite("structure.offset_m", g.offset_m);
   require_positive("structure.wheel_radius_m", g.wheel_radius_m);
   require_positive("structure.wheel_inertia_kgm2", g.wheel_inertia_kgm2);
+  if (!(g.gyroscopic_length_m >= 0.0 && g.gyroscopic_length_m < 1e6))
+    throw InvalidArgument("structure.gyroscopic_length_m", format_value(g.gyroscopic_length_m),
+                          "must be >= 0 and finite (0: no gyroscopic coupling)");
 
   const SlidingTire& t = c.tire;
   require_positive("tire.inflation_pressure_pa", t.inflation_pressure_pa);
@@ -208,6 +211,11 @@ Resultants<double> sliding_friction(const GearModel& model, const Kinematics<dou
   return fractional_resultants(coupled_law(model, N, R, f), k);
 }
 
+// g = I_w Omega / L, zero without a gyroscopic length.
+double gyroscopic_coefficient(const GearStructure& g, double spin) {
+  return g.gyroscopic_length_m > 0.0 ? g.wheel_inertia_kgm2 * spin / g.gyroscopic_length_m : 0.0;
+}
+
 // Effective slip speed of the sliding patch, (v^2 + (2 u / 3)^2)^(1/2): the mean local slip
 // speed's two limits (docs/shimmy.md); f(w) of SlipSpeedFriction.
 double sliding_slip_speed(const Kinematics<double>& k, double R) {
@@ -366,6 +374,14 @@ GearJacobian gear_jacobian(const GearModel& model, const GearMode& mode, double 
     }
   }
   J(kSpin, kSpin) -= (dT * th + cs.brake_torque_nm * (1.0 - th * th)) / g.wheel_inertia_kgm2;
+  if (g.gyroscopic_length_m > 0.0) {
+    const double gyro = gyroscopic_coefficient(g, x[kSpin]);
+    const double dgyro = g.wheel_inertia_kgm2 / g.gyroscopic_length_m;  // d g / d Omega
+    J(kYDot, kPsiDot) += gyro / g.lateral_mass_kg;
+    J(kYDot, kSpin) += dgyro * x[kPsiDot] / g.lateral_mass_kg;
+    J(kPsiDot, kYDot) -= gyro / g.torsional_inertia_kgm2;
+    J(kPsiDot, kSpin) -= dgyro * x[kYDot] / g.torsional_inertia_kgm2;
+  }
   if (mode.rolling && mode.loaded) {
     J.row(kLambda) = -D.row(1);
     J(kLambda, kPsiDot) -= cs.patch_radius_m;
@@ -381,14 +397,16 @@ GearState gear_rhs(const GearModel& model, const GearMode& mode, double t, const
   const Resultants<double>& F = cs.force;
   const double cp = std::cos(x[kPsi]), sp = std::sin(x[kPsi]);
   GearState dx;
+  // Gyroscopic coupling g = I_w Omega / L (landing_gear.hpp, GearStructure).
+  const double gyro = gyroscopic_coefficient(g, x[kSpin]);
   dx[kY] = x[kYDot];
   dx[kYDot] = (-g.lateral_stiffness_n_per_m * x[kY] - g.lateral_damping_ns_per_m * x[kYDot] +
-               F.Fx * sp + F.Fy * cp) /
+               F.Fx * sp + F.Fy * cp + gyro * x[kPsiDot]) /
               g.lateral_mass_kg;
   dx[kPsi] = x[kPsiDot];
   dx[kPsiDot] =
       (-g.torsional_stiffness_nm_per_rad * x[kPsi] - g.torsional_damping_nms_per_rad * x[kPsiDot] +
-       F.Mz - g.trail_m * F.Fy - g.offset_m * F.Fx) /
+       F.Mz - g.trail_m * F.Fy - g.offset_m * F.Fx - gyro * x[kYDot]) /
       g.torsional_inertia_kgm2;
   // The brake torque opposes the spin; tanh(Omega / 1 rad/s) keeps it smooth through zero.
   dx[kSpin] =
@@ -420,6 +438,7 @@ void for_each_parameter(GearConfig& c, F&& f) {
   f("structure.offset_m", g.offset_m);
   f("structure.wheel_radius_m", g.wheel_radius_m);
   f("structure.wheel_inertia_kgm2", g.wheel_inertia_kgm2);
+  f("structure.gyroscopic_length_m", g.gyroscopic_length_m);
   SlidingTire& t = c.tire;
   f("tire.inflation_pressure_pa", t.inflation_pressure_pa);
   f("tire.rolling_shift", t.rolling_shift);

@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include <Eigen/Eigenvalues>
+#include <algorithm>
 #include <cmath>
 #include <numbers>
 #include <vector>
@@ -314,6 +315,7 @@ TEST(LandingGear, StructuredJacobianMatchesDifferencesOfTheRightHandSide) {
       if (exact && cm != ContactModel::coupled) continue;
       GearConfig c;
       c.tire.exact_integrals = exact;
+      c.structure.gyroscopic_length_m = 2.0;
       const GearModel m = make_gear_model(c, cm);
       const double V = c.scenario.forward_speed_mps, r = c.structure.wheel_radius_m;
       for (bool brake : {false, true}) {
@@ -351,4 +353,42 @@ TEST(LandingGear, StructuredAndDifferenceQuotientJacobiansGiveTheSameLanding) {
               1e-5 * b.metrics.peak_torsion_rad);
   EXPECT_NEAR(a.metrics.torsion.growth_rate_per_s, b.metrics.torsion.growth_rate_per_s, 1e-3);
   EXPECT_LT(a.rhs_evaluations, b.rhs_evaluations);  // no difference quotients
+}
+
+// Gyroscopic coupling (g = I_w Omega / L): the airborne, undamped gear with the wheel spinning
+// has the frequencies of two gyroscopically coupled oscillators,
+//   (k_psi - I w^2)(k_y - m w^2) = g^2 w^2   (a quadratic in w^2),
+// and no growth or decay (the coupling does no work).
+TEST(LandingGear, GyroscopicCouplingGivesTheCoupledOscillatorFrequencies) {
+  GearConfig c;
+  c.structure.gyroscopic_length_m = 1.5;
+  c.structure.torsional_damping_nms_per_rad = 0.0;
+  c.structure.lateral_damping_ns_per_m = 0.0;
+  const GearModel m = make_gear_model(c, ContactModel::nonholonomic);
+  const GearStructure& g = c.structure;
+  GearState x = GearState::Zero();
+  x[kSpin] = c.scenario.forward_speed_mps / g.wheel_radius_m;
+  const GearJacobian J = gear_jacobian(m, GearMode{false, true, false}, 0.0, x);
+  const int idx[4] = {kY, kYDot, kPsi, kPsiDot};
+  Eigen::Matrix4d A;
+  for (int i = 0; i < 4; ++i)
+    for (int j = 0; j < 4; ++j) A(i, j) = J(idx[i], idx[j]);
+  const Eigen::Vector4cd ev = Eigen::EigenSolver<Eigen::Matrix4d>(A).eigenvalues();
+  const double gy = g.wheel_inertia_kgm2 * x[kSpin] / g.gyroscopic_length_m;
+  const double I = g.torsional_inertia_kgm2, k1 = g.torsional_stiffness_nm_per_rad;
+  const double M = g.lateral_mass_kg, k2 = g.lateral_stiffness_n_per_m;
+  // I M W^2 - (I k2 + M k1 + gy^2) W + k1 k2 = 0, W = w^2.
+  const double b = I * k2 + M * k1 + gy * gy, disc = std::sqrt(b * b - 4 * I * M * k1 * k2);
+  std::vector<double> expected{std::sqrt((b - disc) / (2 * I * M)),
+                               std::sqrt((b + disc) / (2 * I * M))};
+  std::vector<double> found;
+  for (int i = 0; i < 4; ++i) {
+    EXPECT_NEAR(ev[i].real(), 0.0, 1e-9 * std::abs(ev[i]));
+    if (ev[i].imag() > 0) found.push_back(ev[i].imag());
+  }
+  std::sort(found.begin(), found.end());
+  ASSERT_EQ(found.size(), 2u);
+  for (int i = 0; i < 2; ++i) EXPECT_NEAR(found[i], expected[i], 1e-9 * expected[i]);
+  // The coupling is not negligible: the frequencies move from the uncoupled ones.
+  EXPECT_GT(std::abs(found[1] - std::sqrt(k1 / I)), 1e-3 * std::sqrt(k1 / I));
 }

@@ -10,9 +10,10 @@
 // section 1, with spin omega = psi'):
 //   vx = V cos psi + (y' + Vd) sin psi - l psi' - Omega r
 //   vy = -V sin psi + (y' + Vd) cos psi - e psi'
-// Equations of motion (friction F = (Fx, Fy), Mz acting on the tire, wheel frame):
-//   m_y y''   = -k_y y - c_y y' + Fx sin psi + Fy cos psi
-//   I_psi psi'' = -k_psi psi - c_psi psi' + Mz - e Fy - l Fx
+// Equations of motion (friction F = (Fx, Fy), Mz acting on the tire, wheel frame; g = I_w Omega / L
+// the gyroscopic coupling, zero unless structure.gyroscopic_length_m is set):
+//   m_y y''   = -k_y y - c_y y' + Fx sin psi + Fy cos psi + g psi'
+//   I_psi psi'' = -k_psi psi - c_psi psi' + Mz - e Fy - l Fx - g y'
 //   I_w Omega'  = -r Fx - T_brake
 #pragma once
 
@@ -54,6 +55,12 @@ struct GearStructure {
   double offset_m = 0.25;            // l, patch centre left of the strut axis
   double wheel_radius_m = 0.57;      // r, rolling radius
   double wheel_inertia_kgm2 = 10.0;  // I_w
+  // Gyroscopic coupling of the wheel spin with lateral bending and torsion (issue 12, item 3):
+  // the strut bends as a pendulum of length L about the aircraft's X axis, so the wheel rolls by
+  // phi = y / L; its angular momentum I_w Omega along the axle then gives the strut the torque
+  // -I_w Omega y' / L about its axis and the lateral force I_w Omega psi' / L at the wheel
+  // (d/dt of the tilting momentum; they do no work together). 0 switches it off (the default).
+  double gyroscopic_length_m = 0.0;  // L
 };
 
 // The sliding tire: the seed tire's pressure profile (theory.md section 5) at the inflation
