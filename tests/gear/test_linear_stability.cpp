@@ -220,3 +220,46 @@ TEST(LinearStability, BadNamesAndSlipsAreRejected) {
                                   StabilityPhase::touchdown, 1.5),
                InvalidArgument);
 }
+
+// Somieski's own parameter table (Aerospace Sci. Technol. 1997; read in a secondary
+// reproduction, docs/gear-sources.md section 6.1): F_z = 9 kN, I_z = 1 kg m^2,
+// c = 1e5 N m/rad, e = a = 0.1 m, sigma = 0.3 m, c_Fa = 20 /rad, c_Ma = -2 m/rad (2 in this
+// project's sign), kappa = 270 N m^2/rad. docs/gear-sources.md section 6.3 solved his equations'
+// Routh-Hurwitz boundary with an independent script: without damping the gear loses stability at
+// V = 15.3 m/s, and at 70 m/s it needs k = 46.67 N m s/rad. Not a published figure (his chart
+// could not be read), but his parameters in this project's model, by its eigenvalues.
+TEST(LinearStability, SomieskiParameterTableGivesTheDerivedBoundary) {
+  GearConfig c;
+  c.scenario.static_load_n = 9000.0;
+  c.scenario.drift_speed_mps = 0.0;
+  c.scenario.braking = false;
+  c.structure.torsional_inertia_kgm2 = 1.0;
+  c.structure.torsional_stiffness_nm_per_rad = 1e5;
+  c.structure.trail_m = 0.1;
+  c.structure.offset_m = 0.0;
+  c.structure.lateral_stiffness_n_per_m = 1e11;  // his model has no lateral bending
+  c.structure.lateral_damping_ns_per_m = 1e6;
+  c.rolling.relaxation_length_m = 0.3;
+  c.rolling.cornering_coefficient = 20.0;
+  c.rolling.aligning_coefficient_m = 2.0;
+  c.rolling.tread_moment_nm2_per_rad = 270.0;
+  // Half contact length a = 0.1 m: the patch radius R = sqrt(N / (2 pi p* A^1)) sets p*.
+  GearModel probe = make_gear_model(c, ContactModel::nonholonomic);
+  c.tire.inflation_pressure_pa = 9000.0 / (2 * kPi * 0.01 * probe.moment_1);
+  probe = make_gear_model(c, ContactModel::nonholonomic);
+  ASSERT_NEAR(patch_radius(probe), 0.1, 1e-12);
+  const auto critical = [&](double V) {
+    GearConfig v = c;
+    v.scenario.forward_speed_mps = V;
+    return classical_critical_damping(make_gear_model(v, ContactModel::nonholonomic));
+  };
+  EXPECT_NEAR(critical(70.0), 46.67, 0.05);
+  EXPECT_NEAR(critical(30.0), 22.81, 0.05);
+  // Onset without damping: bisection on the speed where the critical damping leaves zero.
+  double lo = 10.0, hi = 20.0;
+  for (int i = 0; i < 40; ++i) {
+    const double mid = 0.5 * (lo + hi);
+    (critical(mid) > 0.0 ? hi : lo) = mid;
+  }
+  EXPECT_NEAR(0.5 * (lo + hi), 15.3, 0.05);
+}
