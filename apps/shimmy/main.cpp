@@ -9,11 +9,13 @@
 #include <filesystem>
 #include <fstream>
 #include <iostream>
+#include <optional>
 #include <sstream>
 
 #include "config.hpp"
 #include "contensou/friction/error.hpp"
 #include "gnuplot.hpp"
+#include "tire_report.hpp"
 
 using namespace contensou;
 using namespace contensou::app;
@@ -88,10 +90,24 @@ nlohmann::json report_json(const StabilityReport& r) {
             {"total", r.energy.total()}}}};
 }
 
+// The tire from a contensou-identify report (--tire), if any: its mean law and the draws.
+struct TireInput {
+  std::string path;
+  TireLawDistribution distribution;
+  TireLawCoefficients mean;
+  TireLawDraws draws;
+};
+
+// The gear model of a contact model, with the report's mean tire law when given.
+GearModel gear_model(const ShimmyConfig& config, ContactModel cm, const TireInput* tire) {
+  const GearModel m = make_gear_model(config.gear, cm);
+  return tire ? with_tire_law(m, tire->mean) : m;
+}
+
 // The stability verdicts of both phases (docs/shimmy.md, "Stability criterion"), by the
 // eigenvalues of the linearisation and the growth after the standard perturbation.
 void print_stability(const ShimmyConfig& config, const std::vector<LandingRun>& runs,
-                     nlohmann::json& summary) {
+                     const TireInput* tire, nlohmann::json& summary) {
   std::printf(
       "\nstability: eigenvalues of the linearisation about the quasi-steady state, and the growth "
       "after psi' += 0.1 rad/s\n(growth: all modes; torsion: the torsional mode; pert.: growth "
@@ -100,7 +116,7 @@ void print_stability(const ShimmyConfig& config, const std::vector<LandingRun>& 
       "model", "phase", "growth[1/s]", "freq[Hz]", "torsion[1/s]", "pert.[1/s]", "spin damp.", "f",
       "verdict");
   for (const LandingRun& run : runs) {
-    const GearModel model = make_gear_model(config.gear, run.contact);
+    const GearModel model = gear_model(config, run.contact, tire);
     const StabilityReport td = assess_touchdown(model);
     const StabilityReport br = assess_stability(model, StabilityPhase::braked_slide);
     for (const StabilityReport* r : {&td, &br}) {
@@ -250,15 +266,91 @@ nlohmann::json write_map(const std::string& dir, const StabilityMap& m) {
           {"png", base + ".png"}};
 }
 
+// Writes a probability map's CSV and PNG (colour: the probability of shimmy over the draws).
+nlohmann::json write_probability_map(const std::string& dir, const StabilityMap& m) {
+  const std::string base = "prob_" + short_name(m.x.parameter) + "_" + short_name(m.y.parameter) +
+                           "_" + to_string(m.phase) + "_" + to_string(m.contact);
+  std::ostringstream csv;
+  csv.precision(9);
+  csv << m.x.parameter << ',' << m.y.parameter
+      << ",shimmy_probability,median_growth_rate_per_s,valid,error\n";
+  for (int j = 0; j < m.y.points; ++j) {
+    for (int i = 0; i < m.x.points; ++i) {
+      const MapCell& c = m.cells[static_cast<std::size_t>(j * m.x.points + i)];
+      csv << c.x << ',' << c.y << ',' << c.shimmy_probability << ',' << c.growth_rate_per_s << ','
+          << c.valid << ",\"" << c.error << "\"\n";
+    }
+    csv << '\n';
+  }
+  write_file_atomically(dir + "/" + base + ".csv", csv.str());
+  std::ostringstream gp;
+  gp << "set terminal pngcairo noenhanced size 760,620 font ',10'\nset output '" << base
+     << ".png'\nset datafile separator ','\nset title '" << to_string(m.contact) << ", "
+     << to_string(m.phase) << ": probability of shimmy over the tire report draws'\n"
+     << "set xlabel '" << m.x.parameter << "'\nset ylabel '" << m.y.parameter << "'\n"
+     << "set palette defined (0 '#f7f7f7', 0.5 '#f4a582', 1 '#b2182b')\nset cbrange [0:1]\n"
+     << "set xrange [" << m.x.from << ":" << m.x.to << "]\nset yrange [" << m.y.from << ":"
+     << m.y.to << "]\n"
+     << "plot '" << base << ".csv' skip 1 using 1:2:($5 > 0 ? $3 : NaN) with image notitle\n";
+  run_gnuplot(dir, base, gp.str());
+  return {{"x", m.x.parameter},          {"y", m.y.parameter},
+          {"phase", to_string(m.phase)}, {"model", to_string(m.contact)},
+          {"csv", base + ".csv"},        {"png", base + ".png"}};
+}
+
+// The Monte Carlo over the report's covariance: growth band and P(shimmy) of both phases for
+// the coupled model at the configuration.
+void print_tire_uncertainty(const ShimmyConfig& config, const TireInput& tire, unsigned threads,
+                            nlohmann::json& summary) {
+  const auto sd = [&](auto get) {
+    double m = 0, q = 0;
+    for (const TireLawCoefficients& d : tire.draws.draws) m += get(d);
+    m /= static_cast<double>(tire.draws.draws.size());
+    for (const TireLawCoefficients& d : tire.draws.draws) q += (get(d) - m) * (get(d) - m);
+    return std::sqrt(q /
+                     static_cast<double>(std::max<std::size_t>(tire.draws.draws.size() - 1, 1)));
+  };
+  const TireLawCoefficients& t = tire.mean;
+  std::printf(
+      "\ntire law from %s: a = %.4g +- %.2g, m = %.4g +- %.2g, kx = %.4g +- %.2g, M0/(F0 R) = "
+      "%.4g +- %.2g (%zu draws, %d redrawn)\n",
+      tire.path.c_str(), t.a, sd([](const TireLawCoefficients& d) { return d.a; }), t.m,
+      sd([](const TireLawCoefficients& d) { return d.m; }), t.kx,
+      sd([](const TireLawCoefficients& d) { return d.kx; }), t.spin_ratio,
+      sd([](const TireLawCoefficients& d) { return d.spin_ratio; }), tire.draws.draws.size(),
+      tire.draws.rejected);
+  std::printf("%-13s %-13s %14s %22s %10s\n", "model", "phase", "median[1/s]", "95 % band [1/s]",
+              "P(shimmy)");
+  const GearModel base = make_gear_model(config.gear, ContactModel::coupled);
+  nlohmann::json j;
+  for (StabilityPhase phase : {StabilityPhase::touchdown, StabilityPhase::braked_slide}) {
+    const std::string label = std::string("monte carlo ") + to_string(phase);
+    const GrowthBand b =
+        growth_band(base, tire.draws.draws, phase, threads,
+                    [&](int done, int total) { progress_bar(label, done, total); });
+    std::printf("%-13s %-13s %14.3f      [%7.3f, %7.3f] %10.3f\n", "coupled", to_string(phase),
+                b.median, b.low, b.high, b.shimmy_probability);
+    j[to_string(phase)] = {{"median_growth_rate_per_s", b.median},
+                           {"band95_per_s", {b.low, b.high}},
+                           {"shimmy_probability", b.shimmy_probability},
+                           {"draws", b.draws}};
+  }
+  j["report"] = tire.path;
+  j["draws"] = tire.draws.draws.size();
+  j["redrawn"] = tire.draws.rejected;
+  j["mean_law"] = {{"a", t.a}, {"m", t.m}, {"kx", t.kx}, {"spin_ratio", t.spin_ratio}};
+  summary["tire_uncertainty"] = j;
+}
+
 int run(const ShimmyConfig& config, const std::string& out, bool maps, int map_size,
-        unsigned threads) {
+        unsigned threads, const TireInput* tire) {
   std::filesystem::create_directories(out);
   nlohmann::json summary;
   std::vector<LandingRun> runs;
   std::printf("%-13s %6s %9s %10s %11s %11s %9s %7s %9s %8s\n", "model", "shimmy", "freq[Hz]",
               "growth[1/s]", "peak psi", "peak y[m]", "spinup[s]", "steps", "wall[ms]", "conv");
   for (ContactModel cm : config.models) {
-    const GearModel model = make_gear_model(config.gear, cm);
+    const GearModel model = gear_model(config, cm, tire);
     LandingRun r = simulate_landing(model, config.solver, config.criterion);
     // Convergence: the same landing at a 100 times tighter tolerance.
     SolverOptions tight = config.solver;
@@ -302,7 +394,8 @@ int run(const ShimmyConfig& config, const std::string& out, bool maps, int map_s
                    to_string(cm), d_growth, 100 * d_peak);
     runs.push_back(std::move(r));
   }
-  print_stability(config, runs, summary);
+  print_stability(config, runs, tire, summary);
+  if (tire) print_tire_uncertainty(config, *tire, threads, summary);
   summary["gear"] = config.gear_name;
   summary["analysis_window_s"] = {runs.front().window_start_s, runs.front().window_end_s};
   summary["configuration"] = to_json(config);
@@ -313,7 +406,7 @@ int run(const ShimmyConfig& config, const std::string& out, bool maps, int map_s
       MapAxis x = spec.x, y = spec.y;
       if (map_size > 0) x.points = y.points = map_size;
       for (ContactModel cm : config.models) {
-        const GearModel model = make_gear_model(config.gear, cm);
+        const GearModel model = gear_model(config, cm, tire);
         const std::string label = std::string(to_string(cm)) + " " + short_name(x.parameter) +
                                   " x " + short_name(y.parameter);
         const auto bar = [&](int done, int total) { progress_bar(label, done, total); };
@@ -323,6 +416,18 @@ int run(const ShimmyConfig& config, const std::string& out, bool maps, int map_s
                 : linear_stability_map(model, x, y, spec.phase, threads, bar);
         summary["maps"].push_back(write_map(out, m));
         summary["maps"].back()["model"] = to_string(cm);
+        if (tire && cm == ContactModel::coupled && spec.method != "simulation") {
+          // A draw per cell costs a linearisation: at most 25 x 25 cells unless --map-size.
+          MapAxis px = x, py = y;
+          if (map_size <= 0) {
+            px.points = std::min(px.points, 25);
+            py.points = std::min(py.points, 25);
+          }
+          const StabilityMap p = probability_map(
+              make_gear_model(config.gear, cm), px, py, spec.phase, tire->draws.draws, threads,
+              [&](int done, int total) { progress_bar("P(shimmy) " + label, done, total); });
+          summary["probability_maps"].push_back(write_probability_map(out, p));
+        }
       }
     }
   }
@@ -342,6 +447,9 @@ int main(int argc, char** argv) {
   bool maps = false, print_config = false;
   int map_size = 0;
   unsigned threads = 0;
+  std::string tire_path;
+  int draws = 300;
+  unsigned seed = 1;
   app.add_option("--config", config_path, "JSON configuration (defaults: docs/shimmy.md)")
       ->check(CLI::ExistingFile);
   app.add_option("--gear", gear,
@@ -356,6 +464,14 @@ int main(int argc, char** argv) {
   app.add_option("--threads", threads, "threads for the maps (0: all cores)")
       ->capture_default_str();
   app.add_flag("--print-config", print_config, "print the configuration as JSON and exit");
+  app.add_option("--tire", tire_path,
+                 "a contensou-identify report (--json): its fitted law is the tire, and a Monte "
+                 "Carlo over its covariance gives the growth rate's 95 % band and P(shimmy)")
+      ->check(CLI::ExistingFile);
+  app.add_option("--draws", draws, "Monte Carlo draws for --tire")
+      ->check(CLI::Range(10, 100000))
+      ->capture_default_str();
+  app.add_option("--seed", seed, "random seed of the draws")->capture_default_str();
   CLI11_PARSE(app, argc, argv);
   try {
     ShimmyConfig config;
@@ -366,7 +482,19 @@ int main(int argc, char** argv) {
       std::cout << to_json(config).dump(2) << '\n';
       return 0;
     }
-    return run(config, out, maps, map_size, threads);
+    std::optional<TireInput> tire;
+    if (!tire_path.empty()) {
+      tire.emplace();
+      tire->path = tire_path;
+      tire->distribution = read_tire_report(tire_path);
+      tire->mean = tire_law_coefficients(tire->distribution.mean, tire->distribution.radius_m);
+      try {
+        tire->draws = draw_tire_laws(tire->distribution, draws, seed);
+      } catch (const InvalidArgument& e) {
+        throw std::runtime_error("--tire " + tire_path + ": " + e.what());
+      }
+    }
+    return run(config, out, maps, map_size, threads, tire ? &*tire : nullptr);
   } catch (const std::exception& e) {
     std::fprintf(stderr, "%s: %s\n", kName, e.what());
     return 1;

@@ -11,12 +11,9 @@
 
 namespace contensou {
 
-namespace {
-
-// Runs `cell_fn(model, cell)` for every cell of the grid on `threads` threads.
-StabilityMap run_map(const GearModel& base, const MapAxis& x, const MapAxis& y, unsigned threads,
-                     const std::function<void(int, int)>& progress,
-                     const std::function<void(const GearModel&, MapCell&)>& cell_fn) {
+StabilityMap evaluate_map(const GearModel& base, const MapAxis& x, const MapAxis& y,
+                          unsigned threads, const std::function<void(int, int)>& progress,
+                          const std::function<void(const GearModel&, MapCell&)>& cell_fn) {
   for (const MapAxis* a : {&x, &y}) {
     GearConfig probe = base.config;
     if (!gear_parameter(probe, a->parameter))
@@ -66,14 +63,12 @@ StabilityMap run_map(const GearModel& base, const MapAxis& x, const MapAxis& y, 
   return map;
 }
 
-}  // namespace
-
 StabilityMap stability_map(const GearModel& base, const MapAxis& x, const MapAxis& y,
                            const SolverOptions& solver, const ShimmyCriterion& criterion,
                            unsigned threads, const std::function<void(int, int)>& progress) {
   SolverOptions quiet = solver;
   quiet.record = false;
-  return run_map(base, x, y, threads, progress, [&](const GearModel& model, MapCell& cell) {
+  return evaluate_map(base, x, y, threads, progress, [&](const GearModel& model, MapCell& cell) {
     const LandingRun run = simulate_landing(model, quiet, criterion);
     cell.growth_rate_per_s = run.metrics.torsion.growth_rate_per_s;
     cell.frequency_hz = run.metrics.torsion.frequency_hz;
@@ -87,7 +82,7 @@ StabilityMap linear_stability_map(const GearModel& base, const MapAxis& x, const
                                   StabilityPhase phase, unsigned threads,
                                   const std::function<void(int, int)>& progress) {
   StabilityMap map =
-      run_map(base, x, y, threads, progress, [&](const GearModel& model, MapCell& cell) {
+      evaluate_map(base, x, y, threads, progress, [&](const GearModel& model, MapCell& cell) {
         StabilityOptions o;
         o.simulate_perturbation = false;
         const StabilityReport r = phase == StabilityPhase::touchdown

@@ -39,6 +39,45 @@ grep -q "nonholonomic  touchdown .*SHIMMY" "$dir/legacy_stdout" || fail "legacy 
 "$app" --gear boeing --out "$dir/nogear" > /dev/null 2> "$dir/err" && fail "--gear boeing accepted"
 grep -q -- "--gear" "$dir/err" || fail "--gear error does not name the option: $(cat "$dir/err")"
 
+# --tire: a contensou-identify report as the tire, with a Monte Carlo over its covariance.
+cat > "$dir/report.json" <<'JSON'
+{"input": {"radius_m": 0.087},
+ "final": {"params": {
+   "F0_N": {"value": 1375.6, "std_error": 11.8}, "a": {"value": 0.62, "std_error": 0.0475},
+   "M0_Nm": {"value": 74.8, "std_error": 0.92}, "m": {"value": 6.55, "std_error": 0.31},
+   "kx": {"value": 0.135, "std_error": 0.0018}},
+  "correlation": {"names": ["F0_N", "a", "M0_Nm", "m", "kx"],
+   "matrix": [[1, 0, 0, 0, 0], [0, 1, 0, 0.6, 0], [0, 0, 1, 0, 0], [0, 0.6, 0, 1, 0], [0, 0, 0, 0, 1]]}}}
+JSON
+"$app" --out "$dir/tire" --tire "$dir/report.json" --draws 20 > "$dir/tire_stdout" 2> "$dir/err" \
+  || fail "--tire run: $(cat "$dir/err")"
+python3 - "$dir/tire/summary.json" <<'PY' || fail "tire_uncertainty in summary"
+import json, sys
+t = json.load(open(sys.argv[1]))["tire_uncertainty"]
+for phase in ["touchdown", "braked_slide"]:
+    b = t[phase]
+    assert b["draws"] == 20 and b["band95_per_s"][0] <= b["median_growth_rate_per_s"] <= b["band95_per_s"][1], b
+    assert 0 <= b["shimmy_probability"] <= 1, b
+assert abs(t["mean_law"]["a"] - 0.62) < 1e-12
+PY
+grep -q "P(shimmy)" "$dir/tire_stdout" || fail "no Monte Carlo table printed"
+# expect_tire NAME FRAGMENT REPORT_TEXT: one stderr line naming --tire and the key
+expect_tire() {
+  printf '%s' "$3" > "$dir/badreport.json"
+  "$app" --out "$dir/badtire" --tire "$dir/badreport.json" --draws 10 > /dev/null 2> "$dir/err"
+  local rc=$?
+  if [ "$rc" -eq 0 ] || ! grep -qF -- "$2" "$dir/err" || [ "$(wc -l < "$dir/err")" -ne 1 ]; then
+    fail "$1: rc=$rc, stderr: $(cat "$dir/err")"
+  else
+    echo "ok   $1: $(cat "$dir/err")"
+  fi
+}
+expect_tire "report not JSON" "badreport.json: not a JSON report" 'F0_N,a'
+expect_tire "report without a" "final.params.a.value missing" \
+  '{"input": {"radius_m": 0.087}, "final": {"params": {"F0_N": {"value": 1}}}}'
+expect_tire "report with a negative variance" "tire covariance = indefinite" \
+  '{"input": {"radius_m": 0.087}, "final": {"params": {"F0_N": {"value": 1375, "std_error": 10}, "a": {"value": 0.6, "std_error": 0.05}, "M0_Nm": {"value": 75, "std_error": 1}, "m": {"value": 6.5, "std_error": 0.3}, "kx": {"value": 0.13, "std_error": 0.002}}, "correlation": {"names": ["a", "m"], "matrix": [[1, 3], [3, 1]]}}}'
+
 # A configuration file: the printed default, with a 3 x 3 map, read back.
 "$app" --print-config > "$dir/config.json" || fail "print-config"
 python3 - "$dir/config.json" <<'PY'

@@ -25,8 +25,9 @@ struct MapCell {
   double frequency_hz = 0.0;
   double last_amplitude_rad = 0.0;
   bool shimmy = false;
-  bool valid = false;  // enough oscillation to estimate a growth rate
-  std::string error;   // set if the integration failed
+  bool valid = false;               // enough oscillation to estimate a growth rate
+  double shimmy_probability = 0.0;  // probability maps (tire_uncertainty.hpp) only
+  std::string error;                // set if the integration failed
 };
 
 struct StabilityMap {
@@ -44,6 +45,12 @@ StabilityMap stability_map(const GearModel& base, const MapAxis& x, const MapAxi
                            const SolverOptions& solver, const ShimmyCriterion& criterion,
                            unsigned threads = 0,
                            const std::function<void(int, int)>& progress = {});
+
+// The grid with `cell_fn(model, cell)` run for every cell (the model with the two parameters set
+// and validated; an exception goes into cell.error), on `threads` threads (0: all cores).
+StabilityMap evaluate_map(const GearModel& base, const MapAxis& x, const MapAxis& y,
+                          unsigned threads, const std::function<void(int, int)>& progress,
+                          const std::function<void(const GearModel&, MapCell&)>& cell_fn);
 
 // The same grid judged by eigenvalues (linear_stability.hpp): each cell's growth rate is
 // linear_growth_rate(model, phase), the largest real part of an oscillatory eigenvalue of the
