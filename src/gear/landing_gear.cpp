@@ -4,6 +4,7 @@
 #include <cmath>
 #include <numbers>
 #include <string_view>
+#include <utility>
 
 #include "contensou/friction/error.hpp"
 #include "contensou/friction/exact_resultants.hpp"
@@ -43,6 +44,9 @@ void validate(const GearConfig& c) {
   require_finite("structure.offset_m", g.offset_m);
   require_positive("structure.wheel_radius_m", g.wheel_radius_m);
   require_positive("structure.wheel_inertia_kgm2", g.wheel_inertia_kgm2);
+  if (!(g.freeplay_rad >= 0.0 && g.freeplay_rad < 1.0))
+    throw InvalidArgument("structure.freeplay_rad", format_value(g.freeplay_rad),
+                          "must lie in [0, 1) rad (0: no freeplay)");
   if (!(g.gyroscopic_length_m >= 0.0 && g.gyroscopic_length_m < 1e6))
     throw InvalidArgument("structure.gyroscopic_length_m", format_value(g.gyroscopic_length_m),
                           "must be >= 0 and finite (0: no gyroscopic coupling)");
@@ -211,6 +215,16 @@ Resultants<double> sliding_friction(const GearModel& model, const Kinematics<dou
   return fractional_resultants(coupled_law(model, N, R, f), k);
 }
 
+// The torsional spring's deflection d(psi) across the torque-link freeplay and its slope
+// (landing_gear.hpp, GearStructure::freeplay_rad).
+std::pair<double, double> freeplay_deflection(double psi, double delta) {
+  if (!(delta > 0.0)) return {psi, 1.0};
+  const double s = delta / 20.0;
+  const double a = psi - delta, b = psi + delta;
+  const double ra = std::sqrt(a * a + s * s), rb = std::sqrt(b * b + s * s);
+  return {0.5 * (a + ra) + 0.5 * (b - rb), 0.5 * (1.0 + a / ra) + 0.5 * (1.0 - b / rb)};
+}
+
 // g = I_w Omega / L, zero without a gyroscopic length.
 double gyroscopic_coefficient(const GearStructure& g, double spin) {
   return g.gyroscopic_length_m > 0.0 ? g.wheel_inertia_kgm2 * spin / g.gyroscopic_length_m : 0.0;
@@ -360,7 +374,9 @@ GearJacobian gear_jacobian(const GearModel& model, const GearMode& mode, double 
   J(kPsi, kPsiDot) = 1.0;
   J.row(kPsiDot) =
       (dF.row(2) - g.trail_m * dF.row(1) - g.offset_m * dF.row(0)) / g.torsional_inertia_kgm2;
-  J(kPsiDot, kPsi) -= g.torsional_stiffness_nm_per_rad / g.torsional_inertia_kgm2;
+  J(kPsiDot, kPsi) -= g.torsional_stiffness_nm_per_rad *
+                      freeplay_deflection(x[kPsi], g.freeplay_rad).second /
+                      g.torsional_inertia_kgm2;
   J(kPsiDot, kPsiDot) -= g.torsional_damping_nms_per_rad / g.torsional_inertia_kgm2;
   J.row(kSpin) = -r * dF.row(0) / g.wheel_inertia_kgm2;
   // d/dOmega of T(Omega) tanh(Omega), T = T_max / (1 + e^z), z = (1 - Omega r / V - s*) / ds.
@@ -405,8 +421,9 @@ GearState gear_rhs(const GearModel& model, const GearMode& mode, double t, const
               g.lateral_mass_kg;
   dx[kPsi] = x[kPsiDot];
   dx[kPsiDot] =
-      (-g.torsional_stiffness_nm_per_rad * x[kPsi] - g.torsional_damping_nms_per_rad * x[kPsiDot] +
-       F.Mz - g.trail_m * F.Fy - g.offset_m * F.Fx - gyro * x[kYDot]) /
+      (-g.torsional_stiffness_nm_per_rad * freeplay_deflection(x[kPsi], g.freeplay_rad).first -
+       g.torsional_damping_nms_per_rad * x[kPsiDot] + F.Mz - g.trail_m * F.Fy - g.offset_m * F.Fx -
+       gyro * x[kYDot]) /
       g.torsional_inertia_kgm2;
   // The brake torque opposes the spin; tanh(Omega / 1 rad/s) keeps it smooth through zero.
   dx[kSpin] =
@@ -439,6 +456,7 @@ void for_each_parameter(GearConfig& c, F&& f) {
   f("structure.wheel_radius_m", g.wheel_radius_m);
   f("structure.wheel_inertia_kgm2", g.wheel_inertia_kgm2);
   f("structure.gyroscopic_length_m", g.gyroscopic_length_m);
+  f("structure.freeplay_rad", g.freeplay_rad);
   SlidingTire& t = c.tire;
   f("tire.inflation_pressure_pa", t.inflation_pressure_pa);
   f("tire.rolling_shift", t.rolling_shift);

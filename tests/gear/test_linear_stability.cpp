@@ -263,3 +263,42 @@ TEST(LinearStability, SomieskiParameterTableGivesTheDerivedBoundary) {
   }
   EXPECT_NEAR(0.5 * (lo + hi), 15.3, 0.05);
 }
+
+// Torque-link freeplay of half-width delta: the braked slide's static twist under the drag at the
+// offset moves by delta (k_psi (psi - delta) = the same torque, to the dead zone's smoothing
+// s^2 / (psi - delta) ~ 1e-6 rad, s = delta / 20), and inside the band the spring is left with
+// the smoothing's residual slope 1 - delta / sqrt(delta^2 + s^2) ~ 1/800 of k_psi.
+TEST(LinearStability, FreeplayShiftsTheStaticTwistByItsHalfWidth) {
+  GearConfig c;
+  const GearModel plain = make_gear_model(c, ContactModel::coupled);
+  c.structure.freeplay_rad = 2e-3;
+  const GearModel loose = make_gear_model(c, ContactModel::coupled);
+  const QuasiSteadyState a = quasi_steady_state(plain, StabilityPhase::braked_slide);
+  const QuasiSteadyState b = quasi_steady_state(loose, StabilityPhase::braked_slide);
+  ASSERT_TRUE(a.converged && b.converged);
+  ASSERT_GT(a.x[kPsi], 5e-3);  // the drag twists the strut well beyond the band
+  // The torque on the strut depends on the twist through the contact only weakly; compare the
+  // spring torques, which must balance the same contact moment.
+  const ContactState ca = contact_state(plain, a.mode, a.t, a.x);
+  const ContactState cb = contact_state(loose, b.mode, b.t, b.x);
+  const GearStructure& g = c.structure;
+  const auto moment = [&](const ContactState& cs) {
+    return cs.force.Mz - g.trail_m * cs.force.Fy - g.offset_m * cs.force.Fx;
+  };
+  EXPECT_NEAR(g.torsional_stiffness_nm_per_rad * a.x[kPsi], moment(ca),
+              1e-6 * std::abs(moment(ca)));
+  EXPECT_NEAR(
+      g.torsional_stiffness_nm_per_rad * (b.x[kPsi] - 2e-3), moment(cb),
+      1e-6 * std::abs(moment(cb)) + g.torsional_stiffness_nm_per_rad * 1e-8 / (b.x[kPsi] - 2e-3));
+  EXPECT_NEAR(b.x[kPsi] - a.x[kPsi], 2e-3, 2e-4);
+  // Inside the band (straight rolling, psi = 0) the spring does not act: the classical
+  // linearisation loses the torsional stiffness, d(dpsi'/dt)/dpsi ~ 0.
+  GearConfig r = c;
+  const GearModel rolling = make_gear_model(r, ContactModel::nonholonomic);
+  GearState x0 = GearState::Zero();
+  x0[kSpin] = r.scenario.forward_speed_mps / r.structure.wheel_radius_m;
+  const GearJacobian J = gear_jacobian(rolling, GearMode{false, true, false}, 0.0, x0);
+  EXPECT_NEAR(-J(kPsiDot, kPsi) * r.structure.torsional_inertia_kgm2 /
+                  r.structure.torsional_stiffness_nm_per_rad,
+              1.0 - 20.0 / std::sqrt(401.0), 1e-9);
+}

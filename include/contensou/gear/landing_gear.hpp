@@ -13,7 +13,8 @@
 // Equations of motion (friction F = (Fx, Fy), Mz acting on the tire, wheel frame; g = I_w Omega / L
 // the gyroscopic coupling, zero unless structure.gyroscopic_length_m is set):
 //   m_y y''   = -k_y y - c_y y' + Fx sin psi + Fy cos psi + g psi'
-//   I_psi psi'' = -k_psi psi - c_psi psi' + Mz - e Fy - l Fx - g y'
+//   I_psi psi'' = -k_psi d(psi) - c_psi psi' + Mz - e Fy - l Fx - g y'
+// (d(psi) = psi without torque-link freeplay; GearStructure::freeplay_rad)
 //   I_w Omega'  = -r Fx - T_brake
 #pragma once
 
@@ -61,6 +62,13 @@ struct GearStructure {
   // -I_w Omega y' / L about its axis and the lateral force I_w Omega psi' / L at the wheel
   // (d/dt of the tilting momentum; they do no work together). 0 switches it off (the default).
   double gyroscopic_length_m = 0.0;  // L
+  // Torque-link freeplay (issue 12, item 7): the torsional spring acts on psi beyond a dead band
+  // of half-width delta, k_psi d(psi) with the smooth dead zone
+  //   d(psi) = ((psi - delta) + sqrt((psi - delta)^2 + s^2)) / 2
+  //          + ((psi + delta) - sqrt((psi + delta)^2 + s^2)) / 2,   s = delta / 20
+  // (d = psi - delta beyond, 0 inside, to O(s); slope 1 - delta / sqrt(delta^2 + s^2) = 1/800
+  // at psi = 0); the damping acts throughout. 0: no freeplay.
+  double freeplay_rad = 0.0;  // delta
 };
 
 // The sliding tire: the seed tire's pressure profile (theory.md section 5) at the inflation
