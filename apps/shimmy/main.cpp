@@ -27,7 +27,8 @@ constexpr const char* kName = "contensou-shimmy";
 std::string csv_history(const LandingRun& run) {
   std::ostringstream o;
   o.precision(9);
-  o << "t_s,y_m,ydot_mps,psi_rad,psidot_radps,wheel_spin_radps,lambda_m,load_n,patch_radius_m,"
+  o << "t_s,y_m,ydot_mps,psi_rad,psidot_radps,wheel_spin_radps,lambda_m,x_m,xdot_mps,load_n,"
+       "patch_radius_m,"
        "vx_mps,vy_mps,omega_radps,slip_ratio,friction,Fx_n,Fy_n,Mz_nm,brake_nm,rolling\n";
   for (const LandingSample& s : run.samples) {
     o << s.t;
@@ -73,6 +74,7 @@ nlohmann::json report_json(const StabilityReport& r) {
           {"perturbation_growth_rate_per_s", finite_or_null(r.perturbation_growth_rate_per_s)},
           {"perturbation_frequency_Hz", finite_or_null(r.perturbation_frequency_hz)},
           {"torsion_share", r.torsion_share},
+          {"mode", r.mode_kind},
           {"torsion_growth_rate_per_s", r.torsion_growth_rate_per_s},
           {"torsion_frequency_Hz", r.torsion_frequency_hz},
           {"spin_torque_damping_nms_per_rad", r.spin_torque_damping_nms_per_rad},
@@ -140,9 +142,13 @@ void print_stability(const ShimmyConfig& config, const std::vector<LandingRun>& 
                                                       : "grows, too slowly to matter",
                       growth, T, r->frequency_hz * T, r->state.touchdown_slip);
         verdict = buf;
+        if (r->growth_rate_per_s > 0) verdict += " (" + r->mode_kind + " mode)";
+      } else if (r->stable()) {
+        verdict = "stable";
+      } else if (r->mode_kind == "fore-aft") {
+        verdict = "UNSTABLE while braking: fore-aft mode (gear walk), not shimmy";
       } else {
-        std::snprintf(buf, sizeof buf, "%s", r->stable() ? "stable" : "SHIMMY while braking");
-        verdict = buf;
+        verdict = "SHIMMY while braking (" + r->mode_kind + " mode)";
       }
       std::printf("%-13s %-13s %11.3f %8.2f %12.3f %11.3f %11.4g %6.3f  %s\n",
                   to_string(run.contact), to_string(r->state.phase), r->growth_rate_per_s,
@@ -171,10 +177,11 @@ void draw_histories(const std::string& dir, const std::vector<LandingRun>& runs)
   const std::vector<Panel> panels{
       {"torsion", "torsion psi [rad]", {{4, "psi"}}},
       {"lateral", "lateral deflection y [m]", {{2, "y"}}},
-      {"slip", "patch sliding: slip ratio vx/V and vy [m/s]", {{13, "vx/V"}, {11, "vy [m/s]"}}},
-      {"spin", "spin of the patch omega = dpsi/dt [rad/s]", {{12, "omega"}}},
-      {"forces", "friction force on the tire [N]", {{15, "Fx"}, {16, "Fy"}}},
-      {"torque", "friction torque on the tire Mz [N m]", {{17, "Mz"}}}};
+      {"slip", "patch sliding: slip ratio vx/V and vy [m/s]", {{15, "vx/V"}, {13, "vy [m/s]"}}},
+      {"spin", "spin of the patch omega = dpsi/dt [rad/s]", {{14, "omega"}}},
+      {"forces", "friction force on the tire [N]", {{17, "Fx"}, {18, "Fy"}}},
+      {"torque", "friction torque on the tire Mz [N m]", {{19, "Mz"}}},
+      {"fore_aft", "fore-aft bending x [m] (0 when off)", {{8, "x"}}}};
   for (const Panel& p : panels) {
     std::ostringstream gp;
     gp << "set terminal pngcairo noenhanced size " << 520 * runs.size() << ",420 font ',10'\n"

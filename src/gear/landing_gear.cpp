@@ -44,6 +44,12 @@ void validate(const GearConfig& c) {
   require_finite("structure.offset_m", g.offset_m);
   require_positive("structure.wheel_radius_m", g.wheel_radius_m);
   require_positive("structure.wheel_inertia_kgm2", g.wheel_inertia_kgm2);
+  if (!(g.fore_aft_stiffness_n_per_m >= 0.0 && g.fore_aft_stiffness_n_per_m < 1e12))
+    throw InvalidArgument("structure.fore_aft_stiffness_n_per_m",
+                          format_value(g.fore_aft_stiffness_n_per_m),
+                          "must be >= 0 and finite (0: no fore-aft bending)");
+  require_positive("structure.fore_aft_mass_kg", g.fore_aft_mass_kg);
+  require_finite("structure.fore_aft_damping_ns_per_m", g.fore_aft_damping_ns_per_m);
   if (!(g.freeplay_rad >= 0.0 && g.freeplay_rad < 1.0))
     throw InvalidArgument("structure.freeplay_rad", format_value(g.freeplay_rad),
                           "must lie in [0, 1) rad (0: no freeplay)");
@@ -286,8 +292,10 @@ ContactState contact_state(const GearModel& model, const GearMode& mode, double 
   const double cp = std::cos(x[kPsi]), sp = std::sin(x[kPsi]);
   const double lateral = x[kYDot] + s.drift_speed_mps;
   ContactState cs;
-  cs.slip.vx = V * cp + lateral * sp - g.offset_m * x[kPsiDot] - x[kSpin] * g.wheel_radius_m;
-  cs.slip.vy = -V * sp + lateral * cp - g.trail_m * x[kPsiDot];
+  // The wheel's ground speed along X is V + x' (fore-aft bending; x' = 0 when it is off).
+  const double forward = V + x[kXDot];
+  cs.slip.vx = forward * cp + lateral * sp - g.offset_m * x[kPsiDot] - x[kSpin] * g.wheel_radius_m;
+  cs.slip.vy = -forward * sp + lateral * cp - g.trail_m * x[kPsiDot];
   cs.slip.omega = x[kPsiDot];
   cs.slip_ratio = cs.slip.vx / V;
   cs.load_n = mode.loaded ? vertical_load(s, t) : 0.0;
@@ -353,12 +361,15 @@ GearJacobian gear_jacobian(const GearModel& model, const GearMode& mode, double 
   }
   // d(vx, vy, omega, lambda)/dx (kinematics of landing_gear.hpp).
   Eigen::Matrix<double, 4, kStateSize> D = Eigen::Matrix<double, 4, kStateSize>::Zero();
+  const double forward = V + x[kXDot];
   D(0, kYDot) = sp;
-  D(0, kPsi) = -V * sp + lateral * cp;
+  D(0, kPsi) = -forward * sp + lateral * cp;
   D(0, kPsiDot) = -g.offset_m;
   D(0, kSpin) = -r;
+  D(0, kXDot) = cp;
   D(1, kYDot) = cp;
-  D(1, kPsi) = -V * cp - lateral * sp;
+  D(1, kPsi) = -forward * cp - lateral * sp;
+  D(1, kXDot) = -sp;
   D(1, kPsiDot) = -g.trail_m;
   D(2, kPsiDot) = 1.0;
   D(3, kLambda) = 1.0;
@@ -390,6 +401,13 @@ GearJacobian gear_jacobian(const GearModel& model, const GearMode& mode, double 
     }
   }
   J(kSpin, kSpin) -= (dT * th + cs.brake_torque_nm * (1.0 - th * th)) / g.wheel_inertia_kgm2;
+  if (g.fore_aft_stiffness_n_per_m > 0.0) {
+    J(kX, kXDot) = 1.0;
+    J.row(kXDot) = (dF.row(0) * cp - dF.row(1) * sp) / g.fore_aft_mass_kg;
+    J(kXDot, kPsi) += (-F.Fx * sp - F.Fy * cp) / g.fore_aft_mass_kg;
+    J(kXDot, kX) -= g.fore_aft_stiffness_n_per_m / g.fore_aft_mass_kg;
+    J(kXDot, kXDot) -= g.fore_aft_damping_ns_per_m / g.fore_aft_mass_kg;
+  }
   if (g.gyroscopic_length_m > 0.0) {
     const double gyro = gyroscopic_coefficient(g, x[kSpin]);
     const double dgyro = g.wheel_inertia_kgm2 / g.gyroscopic_length_m;  // d g / d Omega
@@ -437,6 +455,15 @@ GearState gear_rhs(const GearModel& model, const GearMode& mode, double t, const
   } else {
     dx[kLambda] = 0.0;
   }
+  // Fore-aft bending: the force at the patch along X, (Fx cos psi - Fy sin psi).
+  if (g.fore_aft_stiffness_n_per_m > 0.0) {
+    dx[kX] = x[kXDot];
+    dx[kXDot] = (-g.fore_aft_stiffness_n_per_m * x[kX] - g.fore_aft_damping_ns_per_m * x[kXDot] +
+                 F.Fx * cp - F.Fy * sp) /
+                g.fore_aft_mass_kg;
+  } else {
+    dx[kX] = dx[kXDot] = 0.0;
+  }
   return dx;
 }
 
@@ -457,6 +484,9 @@ void for_each_parameter(GearConfig& c, F&& f) {
   f("structure.wheel_inertia_kgm2", g.wheel_inertia_kgm2);
   f("structure.gyroscopic_length_m", g.gyroscopic_length_m);
   f("structure.freeplay_rad", g.freeplay_rad);
+  f("structure.fore_aft_mass_kg", g.fore_aft_mass_kg);
+  f("structure.fore_aft_stiffness_n_per_m", g.fore_aft_stiffness_n_per_m);
+  f("structure.fore_aft_damping_ns_per_m", g.fore_aft_damping_ns_per_m);
   SlidingTire& t = c.tire;
   f("tire.inflation_pressure_pa", t.inflation_pressure_pa);
   f("tire.rolling_shift", t.rolling_shift);

@@ -21,8 +21,9 @@ namespace contensou {
 
 namespace {
 
-// Scales of the states (the solver's absolute-tolerance scales): y, y', psi, psi', Omega, lambda.
-constexpr std::array<double, kStateSize> kScale{1e-3, 1e-1, 1e-3, 1e-1, 1e2, 1e-3};
+// Scales of the states (the solver's absolute-tolerance scales): y, y', psi, psi', Omega,
+// lambda, x, x'.
+constexpr std::array<double, kStateSize> kScale{1e-3, 1e-1, 1e-3, 1e-1, 1e2, 1e-3, 1e-3, 1e-1};
 
 double scale_of(int i) {
   return kScale[static_cast<std::size_t>(i)];
@@ -72,6 +73,10 @@ QuasiSteadyState quasi_steady_state(const GearModel& model, StabilityPhase phase
         phase == StabilityPhase::braked_slide ? V * (1.0 - s.brake_target_slip) / r : V / r;
   }
   if (!sliding) q.states.push_back(kLambda);
+  if (model.config.structure.fore_aft_stiffness_n_per_m > 0.0) {
+    q.states.push_back(kX);
+    q.states.push_back(kXDot);
+  }
 
   // Newton's method with a central-difference Jacobian and step halving.
   const int n = static_cast<int>(q.states.size());
@@ -284,6 +289,11 @@ StabilityReport assess_stability(const GearModel& model_in, StabilityPhase phase
     Eigen::VectorXcd v = es.eigenvectors().col(dominant);
     const std::complex<double> psi = v[index_of(kPsi)], y = v[index_of(kY)];
     rep.torsion_share = std::abs(psi) / (std::abs(psi) + std::abs(y) / 0.1);
+    const int ix = index_of(kX);
+    const double fore_aft = ix >= 0 ? std::abs(v[ix]) : 0.0;
+    rep.mode_kind = fore_aft > std::max(std::abs(psi) * 1.0, std::abs(y))
+                        ? "fore-aft"
+                        : (std::abs(psi) * 1.0 >= std::abs(y) ? "torsion" : "lateral");
     v *= (std::abs(psi) > 1e-300 ? 1e-3 / std::abs(psi) : 1.0);
     // Complex amplitudes of the contact forces along the mode.
     Eigen::Vector4cd F = Eigen::Vector4cd::Zero();

@@ -317,13 +317,14 @@ TEST(LandingGear, StructuredJacobianMatchesDifferencesOfTheRightHandSide) {
       c.tire.exact_integrals = exact;
       c.structure.gyroscopic_length_m = 2.0;
       c.structure.freeplay_rad = 3.9e-3;  // psi = 4e-3 sits in the dead band's smoothed corner
+      c.structure.fore_aft_stiffness_n_per_m = 2e6;
       const GearModel m = make_gear_model(c, cm);
       const double V = c.scenario.forward_speed_mps, r = c.structure.wheel_radius_m;
       for (bool brake : {false, true}) {
         for (bool rolling : {false, true}) {
           const GearMode mode{true, rolling, brake};
           GearState x;
-          x << 1e-3, 0.02, 4e-3, 0.3, V * (rolling ? 0.97 : 0.6) / r, 2e-3;
+          x << 1e-3, 0.02, 4e-3, 0.3, V * (rolling ? 0.97 : 0.6) / r, 2e-3, -4e-3, 0.05;
           const double t = c.scenario.touchdown_time_s + 0.6 * c.scenario.load_ramp_s;
           const GearJacobian J = gear_jacobian(m, mode, t, x);
           for (int j = 0; j < kStateSize; ++j) {

@@ -5,6 +5,7 @@
 // growth against the eigenvalue, and the energy balance per cycle against the growth rate.
 #include <gtest/gtest.h>
 
+#include <Eigen/Eigenvalues>
 #include <algorithm>
 #include <cmath>
 #include <complex>
@@ -301,4 +302,33 @@ TEST(LinearStability, FreeplayShiftsTheStaticTwistByItsHalfWidth) {
   EXPECT_NEAR(-J(kPsiDot, kPsi) * r.structure.torsional_inertia_kgm2 /
                   r.structure.torsional_stiffness_nm_per_rad,
               1.0 - 20.0 / std::sqrt(401.0), 1e-9);
+}
+
+// Fore-aft bending (m_x x'' = -k_x x - c_x x' + Fx cos psi - Fy sin psi): airborne, its
+// eigenvalues are those of a damped oscillator, -c/2m +- i sqrt(k/m - (c/2m)^2); braked, the
+// drag bends the strut back by (Fx cos psi - Fy sin psi) / k_x.
+TEST(LinearStability, ForeAftBendingIsAnOscillatorLoadedByTheDrag) {
+  GearConfig c;
+  c.structure.fore_aft_stiffness_n_per_m = 2e6;
+  const GearStructure& g = c.structure;
+  const GearModel m = make_gear_model(c, ContactModel::coupled);
+  const GearJacobian J = gear_jacobian(m, GearMode{false, false, false}, 0.0, GearState::Zero());
+  Eigen::Matrix2d A;
+  A << J(kX, kX), J(kX, kXDot), J(kXDot, kX), J(kXDot, kXDot);
+  const Eigen::Vector2cd ev = Eigen::EigenSolver<Eigen::Matrix2d>(A).eigenvalues();
+  const double decay = g.fore_aft_damping_ns_per_m / (2 * g.fore_aft_mass_kg);
+  const double w = std::sqrt(g.fore_aft_stiffness_n_per_m / g.fore_aft_mass_kg - decay * decay);
+  EXPECT_NEAR(ev[0].real(), -decay, 1e-9 * w);
+  EXPECT_NEAR(std::abs(ev[0].imag()), w, 1e-9 * w);
+  const QuasiSteadyState q = quasi_steady_state(m, StabilityPhase::braked_slide);
+  ASSERT_TRUE(q.converged);
+  const ContactState cs = contact_state(m, q.mode, q.t, q.x);
+  const double along_x = cs.force.Fx * std::cos(q.x[kPsi]) - cs.force.Fy * std::sin(q.x[kPsi]);
+  EXPECT_LT(along_x, -1e4);  // the brake's drag
+  EXPECT_NEAR(q.x[kX], along_x / g.fore_aft_stiffness_n_per_m, 1e-9);
+  // With the strut rigid fore-aft the state x stays inert and out of the linearisation.
+  const QuasiSteadyState rigid = quasi_steady_state(
+      make_gear_model(GearConfig{}, ContactModel::coupled), StabilityPhase::braked_slide);
+  EXPECT_EQ(std::count(rigid.states.begin(), rigid.states.end(), kX), 0);
+  EXPECT_EQ(q.states.size(), rigid.states.size() + 2);
 }

@@ -5,17 +5,19 @@
 //   psi, psi' torsion of the strut about its vertical axis [rad, rad/s]
 //   Omega     wheel spin about the axle, positive when rolling forward [rad/s]
 //   lambda    lateral deflection of the stretched-string tire's leading point [m]
+//   x, x'     fore-aft bending of the strut at the wheel [m, m/s] (optional)
 // Ground frame X forward, Y left, Z up; the wheel frame is turned by psi. The patch centre lies
 // a trail e behind the strut axis and an offset l to its left. Patch kinematics (theory.md
 // section 1, with spin omega = psi'):
-//   vx = V cos psi + (y' + Vd) sin psi - l psi' - Omega r
-//   vy = -V sin psi + (y' + Vd) cos psi - e psi'
+//   vx = (V + x') cos psi + (y' + Vd) sin psi - l psi' - Omega r
+//   vy = -(V + x') sin psi + (y' + Vd) cos psi - e psi'
 // Equations of motion (friction F = (Fx, Fy), Mz acting on the tire, wheel frame; g = I_w Omega / L
 // the gyroscopic coupling, zero unless structure.gyroscopic_length_m is set):
 //   m_y y''   = -k_y y - c_y y' + Fx sin psi + Fy cos psi + g psi'
 //   I_psi psi'' = -k_psi d(psi) - c_psi psi' + Mz - e Fy - l Fx - g y'
 // (d(psi) = psi without torque-link freeplay; GearStructure::freeplay_rad)
 //   I_w Omega'  = -r Fx - T_brake
+//   m_x x''     = -k_x x - c_x x' + Fx cos psi - Fy sin psi   (fore-aft, optional)
 #pragma once
 
 #include <Eigen/Core>
@@ -69,6 +71,12 @@ struct GearStructure {
   // (d = psi - delta beyond, 0 inside, to O(s); slope 1 - delta / sqrt(delta^2 + s^2) = 1/800
   // at psi = 0); the damping acts throughout. 0: no freeplay.
   double freeplay_rad = 0.0;  // delta
+  // Fore-aft bending of the strut (issue 12, item 3): the wheel moves along X by x against
+  // k_x, c_x with modal mass m_x, loaded by the drag (the spin-up drag bends it back, its release
+  // at the end of spin-up springs it forward). 0 stiffness: rigid fore-aft (the default).
+  double fore_aft_mass_kg = 300.0;            // m_x
+  double fore_aft_stiffness_n_per_m = 0.0;    // k_x (0: off)
+  double fore_aft_damping_ns_per_m = 1000.0;  // c_x
 };
 
 // The sliding tire: the seed tire's pressure profile (theory.md section 5) at the inflation
@@ -146,7 +154,9 @@ GearConfig legacy_gear_config();
 double* gear_parameter(GearConfig& config, std::string_view name);
 std::vector<std::string> gear_parameter_names();
 
-enum StateIndex : int { kY = 0, kYDot, kPsi, kPsiDot, kSpin, kLambda, kStateSize };
+// x, x': fore-aft bending of the strut at the wheel (structure.fore_aft_stiffness_n_per_m > 0;
+// inert otherwise).
+enum StateIndex : int { kY = 0, kYDot, kPsi, kPsiDot, kSpin, kLambda, kX, kXDot, kStateSize };
 using GearState = Eigen::Matrix<double, kStateSize, 1>;
 
 // The discrete part of the state, changed only at events.

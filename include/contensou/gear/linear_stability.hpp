@@ -73,6 +73,9 @@ struct StabilityReport {
   double growth_rate_per_s = 0.0;  // largest real part of an oscillatory eigenvalue (Im > 0.5 Hz)
   double frequency_hz = 0.0;       // of that mode
   double torsion_share = 0.0;      // |psi| / (|psi| + |y| / 0.1 m) in that mode's eigenvector
+  // What that mode moves most, comparing |psi| x 1 m, |y| and |x| in its eigenvector: "torsion",
+  // "lateral" (both shimmy) or "fore-aft" (gear walk); empty without an oscillatory mode.
+  std::string mode_kind;
   // The torsional mode: the oscillatory eigenvalue with the largest torsion share (what the
   // standard perturbation, a kick of psi', measures).
   double torsion_growth_rate_per_s = 0.0;
