@@ -1,6 +1,8 @@
 #!/usr/bin/env bash
-# contensou-shimmy: the demo writes summary.json with the three models and their CSVs, a small
-# map runs, and bad configurations give one stderr line naming file:line:column and no summary.
+# contensou-shimmy: the demo writes summary.json with the three models, their CSVs and the
+# stability verdicts of both phases; the legacy gear is classically unstable; --tire runs the
+# Monte Carlo; a small map runs; bad configurations, gear names and tire reports give one stderr
+# line naming the file:line:column or the option, and no summary.
 # Usage: shimmy_demo.sh PATH/TO/contensou-shimmy
 set -u
 app="$1"
