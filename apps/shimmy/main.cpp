@@ -27,8 +27,8 @@ constexpr const char* kName = "contensou-shimmy";
 std::string csv_history(const LandingRun& run) {
   std::ostringstream o;
   o.precision(9);
-  o << "t_s,y_m,ydot_mps,psi_rad,psidot_radps,wheel_spin_radps,lambda_m,x_m,xdot_mps,load_n,"
-       "patch_radius_m,"
+  o << "t_s,y_m,ydot_mps,psi_rad,psidot_radps,wheel_spin_radps,lambda_m,x_m,xdot_mps,"
+       "wheel_spin2_radps,load_n,patch_radius_m,"
        "vx_mps,vy_mps,omega_radps,slip_ratio,friction,Fx_n,Fy_n,Mz_nm,brake_nm,rolling\n";
   for (const LandingSample& s : run.samples) {
     o << s.t;
@@ -129,8 +129,13 @@ void print_stability(const ShimmyConfig& config, const std::vector<LandingRun>& 
       } else if (r == &td && run.contact == ContactModel::nonholonomic) {
         const double crit = classical_critical_damping(model);
         const double c = config.gear.structure.torsional_damping_nms_per_rad;
-        std::snprintf(buf, sizeof buf, "%s; classical critical damping %.1f N m s/rad, margin %.2f",
-                      r->stable() ? "stable" : "SHIMMY", crit, crit > 0 ? c / crit : INFINITY);
+        if (crit > 0)
+          std::snprintf(buf, sizeof buf,
+                        "%s; classical critical damping %.1f N m s/rad, margin %.2f",
+                        r->stable() ? "stable" : "SHIMMY", crit, c / crit);
+        else
+          std::snprintf(buf, sizeof buf, "%s; stable without torsional damping",
+                        r->stable() ? "stable" : "SHIMMY");
         verdict = buf;
       } else if (r == &td) {
         const double T = run.spin_up_s.value_or(0.0);
@@ -177,10 +182,10 @@ void draw_histories(const std::string& dir, const std::vector<LandingRun>& runs)
   const std::vector<Panel> panels{
       {"torsion", "torsion psi [rad]", {{4, "psi"}}},
       {"lateral", "lateral deflection y [m]", {{2, "y"}}},
-      {"slip", "patch sliding: slip ratio vx/V and vy [m/s]", {{15, "vx/V"}, {13, "vy [m/s]"}}},
-      {"spin", "spin of the patch omega = dpsi/dt [rad/s]", {{14, "omega"}}},
-      {"forces", "friction force on the tire [N]", {{17, "Fx"}, {18, "Fy"}}},
-      {"torque", "friction torque on the tire Mz [N m]", {{19, "Mz"}}},
+      {"slip", "patch sliding: slip ratio vx/V and vy [m/s]", {{16, "vx/V"}, {14, "vy [m/s]"}}},
+      {"spin", "spin of the patch omega = dpsi/dt [rad/s]", {{15, "omega"}}},
+      {"forces", "friction force on the tire [N]", {{18, "Fx"}, {19, "Fy"}}},
+      {"torque", "friction torque on the tire Mz [N m]", {{20, "Mz"}}},
       {"fore_aft", "fore-aft bending x [m] (0 when off)", {{8, "x"}}}};
   for (const Panel& p : panels) {
     std::ostringstream gp;

@@ -1,6 +1,7 @@
 #include "contensou/gear/landing_gear.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <numbers>
 #include <string_view>
@@ -50,6 +51,9 @@ void validate(const GearConfig& c) {
                           "must be >= 0 and finite (0: no fore-aft bending)");
   require_positive("structure.fore_aft_mass_kg", g.fore_aft_mass_kg);
   require_finite("structure.fore_aft_damping_ns_per_m", g.fore_aft_damping_ns_per_m);
+  if (!(g.wheel_spacing_m >= 0.0 && g.wheel_spacing_m < 100.0))
+    throw InvalidArgument("structure.wheel_spacing_m", format_value(g.wheel_spacing_m),
+                          "must be >= 0 and finite (0: one wheel)");
   if (!(g.freeplay_rad >= 0.0 && g.freeplay_rad < 1.0))
     throw InvalidArgument("structure.freeplay_rad", format_value(g.freeplay_rad),
                           "must lie in [0, 1) rad (0: no freeplay)");
@@ -163,6 +167,8 @@ GearState initial_state(const GearModel& model) {
   x[kY] = model.config.scenario.initial_lateral_m;
   if (model.contact == ContactModel::nonholonomic)
     x[kSpin] = model.config.scenario.forward_speed_mps / model.config.structure.wheel_radius_m;
+  if (model.contact == ContactModel::nonholonomic && model.config.structure.wheel_spacing_m > 0.0)
+    x[kSpin2] = x[kSpin];
   return x;
 }
 
@@ -283,35 +289,86 @@ void contact_forces(const GearModel& model, bool rolling, double lambda, Contact
 
 }  // namespace
 
-ContactState contact_state(const GearModel& model, const GearMode& mode, double t,
-                           const GearState& x) {
+namespace {
+
+// One wheel's contact: its patch state, its lateral offset l_i and its spin state.
+struct WheelContact {
+  ContactState cs;
+  double offset = 0.0;
+  int spin = kSpin;
+};
+
+// The wheels of the gear (landing_gear.hpp, GearStructure::wheel_spacing_m): one at the offset
+// l, or two at l + b/2 and l - b/2 that share the load; each with its patch kinematics, load,
+// patch radius, anti-skid brake torque and friction. Returns the number of wheels.
+int wheel_contacts(const GearModel& model, const GearMode& mode, double t, const GearState& x,
+                   std::array<WheelContact, 2>& wheels) {
   const GearConfig& c = model.config;
   const GearStructure& g = c.structure;
   const LandingScenario& s = c.scenario;
   const double V = s.forward_speed_mps;
   const double cp = std::cos(x[kPsi]), sp = std::sin(x[kPsi]);
   const double lateral = x[kYDot] + s.drift_speed_mps;
-  ContactState cs;
-  // The wheel's ground speed along X is V + x' (fore-aft bending; x' = 0 when it is off).
-  const double forward = V + x[kXDot];
-  cs.slip.vx = forward * cp + lateral * sp - g.offset_m * x[kPsiDot] - x[kSpin] * g.wheel_radius_m;
-  cs.slip.vy = -forward * sp + lateral * cp - g.trail_m * x[kPsiDot];
-  cs.slip.omega = x[kPsiDot];
-  cs.slip_ratio = cs.slip.vx / V;
-  cs.load_n = mode.loaded ? vertical_load(s, t) : 0.0;
+  const int n = g.wheel_spacing_m > 0.0 ? 2 : 1;
+  const double load = mode.loaded ? vertical_load(s, t) / n : 0.0;
   // R = sqrt(N / (2 pi p* A^1)), floored so that the law stays defined at zero load.
   const auto radius = [&](double N) {
     return std::sqrt(N / (2.0 * std::numbers::pi * c.tire.inflation_pressure_pa * model.moment_1));
   };
-  cs.patch_radius_m = std::max(radius(cs.load_n), 1e-3 * radius(s.static_load_n));
-  // Anti-skid: the brake sees the wheel-speed slip 1 - Omega r / V (a wheel tachometer),
-  // not the patch's sliding, which also carries -l psi' / V.
-  if (mode.brake_command) {
-    const double wheel_slip = 1.0 - x[kSpin] * g.wheel_radius_m / V;
-    const double z = (wheel_slip - s.brake_target_slip) / s.brake_slip_band;
-    cs.brake_torque_nm = s.brake_max_torque_nm / (1.0 + std::exp(std::clamp(z, -50.0, 50.0)));
+  // The wheel's ground speed along X is V + x' (fore-aft bending; x' = 0 when it is off).
+  const double forward = V + x[kXDot];
+  for (int i = 0; i < n; ++i) {
+    WheelContact& w = wheels[static_cast<std::size_t>(i)];
+    w = WheelContact{};
+    w.offset = n == 1 ? g.offset_m : g.offset_m + (i == 0 ? 0.5 : -0.5) * g.wheel_spacing_m;
+    w.spin = i == 0 ? kSpin : kSpin2;
+    ContactState& cs = w.cs;
+    cs.slip.vx = forward * cp + lateral * sp - w.offset * x[kPsiDot] - x[w.spin] * g.wheel_radius_m;
+    cs.slip.vy = -forward * sp + lateral * cp - g.trail_m * x[kPsiDot];
+    cs.slip.omega = x[kPsiDot];
+    cs.slip_ratio = cs.slip.vx / V;
+    cs.load_n = load;
+    cs.patch_radius_m = std::max(radius(load), 1e-3 * radius(s.static_load_n / n));
+    // Anti-skid: the brake sees the wheel-speed slip 1 - Omega r / V (a wheel tachometer),
+    // not the patch's sliding, which also carries -l psi' / V.
+    if (mode.brake_command) {
+      const double wheel_slip = 1.0 - x[w.spin] * g.wheel_radius_m / V;
+      const double z = (wheel_slip - s.brake_target_slip) / s.brake_slip_band;
+      cs.brake_torque_nm = s.brake_max_torque_nm / (1.0 + std::exp(std::clamp(z, -50.0, 50.0)));
+    }
+    if (load > 0.0) contact_forces(model, mode.rolling, x[kLambda], cs);
   }
-  if (cs.load_n > 0.0) contact_forces(model, mode.rolling, x[kLambda], cs);
+  return n;
+}
+
+}  // namespace
+
+ContactState contact_state(const GearModel& model, const GearMode& mode, double t,
+                           const GearState& x) {
+  std::array<WheelContact, 2> wheels;
+  const int n = wheel_contacts(model, mode, t, x, wheels);
+  if (n == 1) {
+    ContactState cs = wheels[0].cs;
+    cs.wheel_fx_n = {cs.force.Fx, 0.0};
+    cs.wheel_brake_nm = {cs.brake_torque_nm, 0.0};
+    return cs;
+  }
+  // Twin: the mean kinematics and friction, the summed load and forces, the moment about the
+  // midpoint between the patches, sum (Mz_i - (l_i - l) Fx_i); the patch radius of one wheel.
+  ContactState cs = wheels[0].cs;
+  const ContactState& b = wheels[1].cs;
+  cs.slip.vx = 0.5 * (cs.slip.vx + b.slip.vx);
+  cs.slip_ratio = 0.5 * (cs.slip_ratio + b.slip_ratio);
+  cs.friction = 0.5 * (cs.friction + b.friction);
+  cs.load_n += b.load_n;
+  const double l = model.config.structure.offset_m;
+  cs.force.Mz = cs.force.Mz - (wheels[0].offset - l) * cs.force.Fx + b.force.Mz -
+                (wheels[1].offset - l) * b.force.Fx;
+  cs.wheel_fx_n = {cs.force.Fx, b.force.Fx};
+  cs.wheel_brake_nm = {cs.brake_torque_nm, b.brake_torque_nm};
+  cs.force.Fx += b.force.Fx;
+  cs.force.Fy += b.force.Fy;
+  cs.brake_torque_nm += b.brake_torque_nm;
   return cs;
 }
 
@@ -324,48 +381,15 @@ GearJacobian gear_jacobian(const GearModel& model, const GearMode& mode, double 
   const ContactState cs = contact_state(model, mode, t, x);
   const double cp = std::cos(x[kPsi]), sp = std::sin(x[kPsi]);
   const double lateral = x[kYDot] + s.drift_speed_mps;
+  std::array<WheelContact, 2> wheels;
+  const int n = wheel_contacts(model, mode, t, x, wheels);
 
-  // K = d(Fx, Fy, Mz)/d(vx, vy, omega, lambda) of the contact law at fixed load and patch.
-  Eigen::Matrix<double, 3, 4> K = Eigen::Matrix<double, 3, 4>::Zero();
-  if (cs.load_n > 0.0) {
-    if (!mode.rolling && model.contact == ContactModel::coupled && !model.exact) {
-      // F = f(w) G(v, omega): the law's analytic Jacobian at fixed f, plus G f'(w) grad w.
-      const double R = cs.patch_radius_m;
-      const FractionalWithJacobian law = fractional_resultants_with_jacobian(
-          coupled_law(model, cs.load_n, R, cs.friction), cs.slip);
-      K.leftCols<3>() = law.jacobian;
-      const double w = sliding_slip_speed(cs.slip, R);
-      if (w > 0.0) {
-        const double slope = friction_slope(c.tire.friction, w) / cs.friction;
-        const Eigen::Vector3d grad_w(cs.slip.vx / w, cs.slip.vy / w,
-                                     4.0 / 9.0 * cs.slip.omega * R * R / w);
-        const Eigen::Vector3d F(law.resultants.Fx, law.resultants.Fy, law.resultants.Mz);
-        K.leftCols<3>() += slope * F * grad_w.transpose();
-      }
-    } else {
-      // Forward differences of the law in its four inputs (one evaluation each).
-      const Eigen::Vector3d F0(cs.force.Fx, cs.force.Fy, cs.force.Mz);
-      const int inputs = mode.rolling ? 4 : 3;
-      for (int j = 0; j < inputs; ++j) {
-        ContactState p = cs;
-        double lambda = x[kLambda];
-        double* v = j == 0 ? &p.slip.vx : j == 1 ? &p.slip.vy : j == 2 ? &p.slip.omega : &lambda;
-        const double h =
-            j == 3 ? 1e-7 * std::max(std::abs(lambda), 1e-3) : 1e-7 * std::max(std::abs(*v), 1.0);
-        *v += h;
-        p.slip_ratio = p.slip.vx / V;
-        contact_forces(model, mode.rolling, lambda, p);
-        K.col(j) = (Eigen::Vector3d(p.force.Fx, p.force.Fy, p.force.Mz) - F0) / h;
-      }
-    }
-  }
-  // d(vx, vy, omega, lambda)/dx (kinematics of landing_gear.hpp).
+  // d(vx, vy, omega, lambda)/dx (kinematics of landing_gear.hpp); the offset and spin columns
+  // are the wheel's.
   Eigen::Matrix<double, 4, kStateSize> D = Eigen::Matrix<double, 4, kStateSize>::Zero();
   const double forward = V + x[kXDot];
   D(0, kYDot) = sp;
   D(0, kPsi) = -forward * sp + lateral * cp;
-  D(0, kPsiDot) = -g.offset_m;
-  D(0, kSpin) = -r;
   D(0, kXDot) = cp;
   D(1, kYDot) = cp;
   D(1, kPsi) = -forward * cp - lateral * sp;
@@ -373,7 +397,57 @@ GearJacobian gear_jacobian(const GearModel& model, const GearMode& mode, double 
   D(1, kPsiDot) = -g.trail_m;
   D(2, kPsiDot) = 1.0;
   D(3, kLambda) = 1.0;
-  const Eigen::Matrix<double, 3, kStateSize> dF = K * D;  // rows Fx, Fy, Mz
+
+  // dF: rows Fx, Fy, Mz of the gear's resultant (moment about the midpoint for a twin);
+  // dFx_wheel: each wheel's drag.
+  Eigen::Matrix<double, 3, kStateSize> dF = Eigen::Matrix<double, 3, kStateSize>::Zero();
+  std::array<Eigen::Matrix<double, 1, kStateSize>, 2> dFx_wheel{};
+  for (int i = 0; i < n; ++i) {
+    const WheelContact& wc = wheels[static_cast<std::size_t>(i)];
+    const ContactState& w = wc.cs;
+    // K = d(Fx, Fy, Mz)/d(vx, vy, omega, lambda) of the contact law at fixed load and patch.
+    Eigen::Matrix<double, 3, 4> K = Eigen::Matrix<double, 3, 4>::Zero();
+    if (w.load_n > 0.0) {
+      if (!mode.rolling && model.contact == ContactModel::coupled && !model.exact) {
+        // F = f(w) G(v, omega): the law's analytic Jacobian at fixed f, plus G f'(w) grad w.
+        const double R = w.patch_radius_m;
+        const FractionalWithJacobian law = fractional_resultants_with_jacobian(
+            coupled_law(model, w.load_n, R, w.friction), w.slip);
+        K.leftCols<3>() = law.jacobian;
+        const double speed = sliding_slip_speed(w.slip, R);
+        if (speed > 0.0) {
+          const double slope = friction_slope(c.tire.friction, speed) / w.friction;
+          const Eigen::Vector3d grad_w(w.slip.vx / speed, w.slip.vy / speed,
+                                       4.0 / 9.0 * w.slip.omega * R * R / speed);
+          const Eigen::Vector3d F(law.resultants.Fx, law.resultants.Fy, law.resultants.Mz);
+          K.leftCols<3>() += slope * F * grad_w.transpose();
+        }
+      } else {
+        // Forward differences of the law in its four inputs (one evaluation each).
+        const Eigen::Vector3d F0(w.force.Fx, w.force.Fy, w.force.Mz);
+        const int inputs = mode.rolling ? 4 : 3;
+        for (int j = 0; j < inputs; ++j) {
+          ContactState p = w;
+          double lambda = x[kLambda];
+          double* v = j == 0 ? &p.slip.vx : j == 1 ? &p.slip.vy : j == 2 ? &p.slip.omega : &lambda;
+          const double h =
+              j == 3 ? 1e-7 * std::max(std::abs(lambda), 1e-3) : 1e-7 * std::max(std::abs(*v), 1.0);
+          *v += h;
+          p.slip_ratio = p.slip.vx / V;
+          contact_forces(model, mode.rolling, lambda, p);
+          K.col(j) = (Eigen::Vector3d(p.force.Fx, p.force.Fy, p.force.Mz) - F0) / h;
+        }
+      }
+    }
+    Eigen::Matrix<double, 4, kStateSize> Di = D;
+    Di(0, kPsiDot) = -wc.offset;
+    Di(0, wc.spin) = -r;
+    const Eigen::Matrix<double, 3, kStateSize> dFi = K * Di;
+    dFx_wheel[static_cast<std::size_t>(i)] = dFi.row(0);
+    dF.row(0) += dFi.row(0);
+    dF.row(1) += dFi.row(1);
+    dF.row(2) += dFi.row(2) - (n == 1 ? 0.0 : wc.offset - g.offset_m) * dFi.row(0);
+  }
 
   GearJacobian J = GearJacobian::Zero();
   const Resultants<double>& F = cs.force;
@@ -389,18 +463,23 @@ GearJacobian gear_jacobian(const GearModel& model, const GearMode& mode, double 
                       freeplay_deflection(x[kPsi], g.freeplay_rad).second /
                       g.torsional_inertia_kgm2;
   J(kPsiDot, kPsiDot) -= g.torsional_damping_nms_per_rad / g.torsional_inertia_kgm2;
-  J.row(kSpin) = -r * dF.row(0) / g.wheel_inertia_kgm2;
-  // d/dOmega of T(Omega) tanh(Omega), T = T_max / (1 + e^z), z = (1 - Omega r / V - s*) / ds.
-  const double th = std::tanh(x[kSpin]);
-  double dT = 0.0;
-  if (mode.brake_command) {
-    const double z = (1.0 - x[kSpin] * r / V - s.brake_target_slip) / s.brake_slip_band;
-    if (std::abs(z) < 50.0) {
-      const double ez = std::exp(z);
-      dT = s.brake_max_torque_nm * ez / ((1.0 + ez) * (1.0 + ez)) * r / (V * s.brake_slip_band);
+  // Each wheel: I_w Omega_i' = -r Fx_i - T_i(Omega_i) tanh(Omega_i), with
+  // T = T_max / (1 + e^z), z = (1 - Omega r / V - s*) / ds.
+  for (int i = 0; i < n; ++i) {
+    const WheelContact& wc = wheels[static_cast<std::size_t>(i)];
+    J.row(wc.spin) = -r * dFx_wheel[static_cast<std::size_t>(i)] / g.wheel_inertia_kgm2;
+    const double th = std::tanh(x[wc.spin]);
+    double dT = 0.0;
+    if (mode.brake_command) {
+      const double z = (1.0 - x[wc.spin] * r / V - s.brake_target_slip) / s.brake_slip_band;
+      if (std::abs(z) < 50.0) {
+        const double ez = std::exp(z);
+        dT = s.brake_max_torque_nm * ez / ((1.0 + ez) * (1.0 + ez)) * r / (V * s.brake_slip_band);
+      }
     }
+    J(wc.spin, wc.spin) -=
+        (dT * th + wc.cs.brake_torque_nm * (1.0 - th * th)) / g.wheel_inertia_kgm2;
   }
-  J(kSpin, kSpin) -= (dT * th + cs.brake_torque_nm * (1.0 - th * th)) / g.wheel_inertia_kgm2;
   if (g.fore_aft_stiffness_n_per_m > 0.0) {
     J(kX, kXDot) = 1.0;
     J.row(kXDot) = (dF.row(0) * cp - dF.row(1) * sp) / g.fore_aft_mass_kg;
@@ -409,12 +488,14 @@ GearJacobian gear_jacobian(const GearModel& model, const GearMode& mode, double 
     J(kXDot, kXDot) -= g.fore_aft_damping_ns_per_m / g.fore_aft_mass_kg;
   }
   if (g.gyroscopic_length_m > 0.0) {
-    const double gyro = gyroscopic_coefficient(g, x[kSpin]);
-    const double dgyro = g.wheel_inertia_kgm2 / g.gyroscopic_length_m;  // d g / d Omega
+    const double gyro = gyroscopic_coefficient(g, x[kSpin] + x[kSpin2]);
+    const double dgyro = g.wheel_inertia_kgm2 / g.gyroscopic_length_m;  // d g / d Omega_i
     J(kYDot, kPsiDot) += gyro / g.lateral_mass_kg;
-    J(kYDot, kSpin) += dgyro * x[kPsiDot] / g.lateral_mass_kg;
     J(kPsiDot, kYDot) -= gyro / g.torsional_inertia_kgm2;
-    J(kPsiDot, kSpin) -= dgyro * x[kYDot] / g.torsional_inertia_kgm2;
+    for (int spin : {static_cast<int>(kSpin), static_cast<int>(kSpin2)}) {
+      J(kYDot, spin) += dgyro * x[kPsiDot] / g.lateral_mass_kg;
+      J(kPsiDot, spin) -= dgyro * x[kYDot] / g.torsional_inertia_kgm2;
+    }
   }
   if (mode.rolling && mode.loaded) {
     J.row(kLambda) = -D.row(1);
@@ -432,7 +513,7 @@ GearState gear_rhs(const GearModel& model, const GearMode& mode, double t, const
   const double cp = std::cos(x[kPsi]), sp = std::sin(x[kPsi]);
   GearState dx;
   // Gyroscopic coupling g = I_w Omega / L (landing_gear.hpp, GearStructure).
-  const double gyro = gyroscopic_coefficient(g, x[kSpin]);
+  const double gyro = gyroscopic_coefficient(g, x[kSpin] + x[kSpin2]);  // both wheels' spin
   dx[kY] = x[kYDot];
   dx[kYDot] = (-g.lateral_stiffness_n_per_m * x[kY] - g.lateral_damping_ns_per_m * x[kYDot] +
                F.Fx * sp + F.Fy * cp + gyro * x[kPsiDot]) /
@@ -444,8 +525,14 @@ GearState gear_rhs(const GearModel& model, const GearMode& mode, double t, const
        gyro * x[kYDot]) /
       g.torsional_inertia_kgm2;
   // The brake torque opposes the spin; tanh(Omega / 1 rad/s) keeps it smooth through zero.
-  dx[kSpin] =
-      (-g.wheel_radius_m * F.Fx - cs.brake_torque_nm * std::tanh(x[kSpin])) / g.wheel_inertia_kgm2;
+  dx[kSpin] = (-g.wheel_radius_m * cs.wheel_fx_n[0] - cs.wheel_brake_nm[0] * std::tanh(x[kSpin])) /
+              g.wheel_inertia_kgm2;
+  // The second wheel of a twin gear (inert for one wheel).
+  dx[kSpin2] =
+      g.wheel_spacing_m > 0.0
+          ? (-g.wheel_radius_m * cs.wheel_fx_n[1] - cs.wheel_brake_nm[1] * std::tanh(x[kSpin2])) /
+                g.wheel_inertia_kgm2
+          : 0.0;
   // Stretched string (Somieski 1997): the leading point, a = R ahead of the patch centre,
   // does not slide; lambda relaxes over the relaxation length.
   if (mode.rolling && mode.loaded) {
@@ -484,6 +571,7 @@ void for_each_parameter(GearConfig& c, F&& f) {
   f("structure.wheel_inertia_kgm2", g.wheel_inertia_kgm2);
   f("structure.gyroscopic_length_m", g.gyroscopic_length_m);
   f("structure.freeplay_rad", g.freeplay_rad);
+  f("structure.wheel_spacing_m", g.wheel_spacing_m);
   f("structure.fore_aft_mass_kg", g.fore_aft_mass_kg);
   f("structure.fore_aft_stiffness_n_per_m", g.fore_aft_stiffness_n_per_m);
   f("structure.fore_aft_damping_ns_per_m", g.fore_aft_damping_ns_per_m);

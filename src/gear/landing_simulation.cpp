@@ -73,11 +73,13 @@ int roots(sunrealtype t, N_Vector y, sunrealtype* g, void* data) {
   // The patch's slip ratio vx / V from the kinematics alone (no friction law per event check).
   const GearStructure& gs = p.model->config.structure;
   const double psi = NV_Ith_S(y, kPsi), V = s.forward_speed_mps;
-  const double ratio =
-      ((V + NV_Ith_S(y, kXDot)) * std::cos(psi) +
-       (NV_Ith_S(y, kYDot) + s.drift_speed_mps) * std::sin(psi) -
-       gs.offset_m * NV_Ith_S(y, kPsiDot) - NV_Ith_S(y, kSpin) * gs.wheel_radius_m) /
-      V;
+  // A twin gear's mean wheel speed.
+  const double spin = gs.wheel_spacing_m > 0.0 ? 0.5 * (NV_Ith_S(y, kSpin) + NV_Ith_S(y, kSpin2))
+                                               : NV_Ith_S(y, kSpin);
+  const double ratio = ((V + NV_Ith_S(y, kXDot)) * std::cos(psi) +
+                        (NV_Ith_S(y, kYDot) + s.drift_speed_mps) * std::sin(psi) -
+                        gs.offset_m * NV_Ith_S(y, kPsiDot) - spin * gs.wheel_radius_m) /
+                       V;
   g[kLoadOnset] = t - s.touchdown_time_s;
   g[kFullLoad] = t - (s.touchdown_time_s + s.load_ramp_s);
   g[kSpinUp] = switching && p.mode.loaded && !p.mode.rolling ? ratio - s.rolling_slip : 1.0;
@@ -149,7 +151,7 @@ LandingRun simulate_landing(const GearModel& model, const SolverOptions& options
   check(SUNContext_Create(nullptr, &cv.ctx), "SUNContext_Create", 0.0);
   cv.y = N_VNew_Serial(kStateSize, cv.ctx);
   cv.atol = N_VNew_Serial(kStateSize, cv.ctx);
-  const std::array<double, kStateSize> scale{1e-3, 1e-1, 1e-3, 1e-1, 1e2, 1e-3, 1e-3, 1e-1};
+  const std::array<double, kStateSize> scale{1e-3, 1e-1, 1e-3, 1e-1, 1e2, 1e-3, 1e-3, 1e-1, 1e2};
   for (int i = 0; i < kStateSize; ++i) {
     NV_Ith_S(cv.y, i) = x[i];
     NV_Ith_S(cv.atol, i) = options.relative_tolerance * scale[static_cast<std::size_t>(i)];

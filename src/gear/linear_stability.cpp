@@ -22,8 +22,8 @@ namespace contensou {
 namespace {
 
 // Scales of the states (the solver's absolute-tolerance scales): y, y', psi, psi', Omega,
-// lambda, x, x'.
-constexpr std::array<double, kStateSize> kScale{1e-3, 1e-1, 1e-3, 1e-1, 1e2, 1e-3, 1e-3, 1e-1};
+// lambda, x, x', Omega2.
+constexpr std::array<double, kStateSize> kScale{1e-3, 1e-1, 1e-3, 1e-1, 1e2, 1e-3, 1e-3, 1e-1, 1e2};
 
 double scale_of(int i) {
   return kScale[static_cast<std::size_t>(i)];
@@ -45,7 +45,7 @@ double scaled_residual(const GearState& f, const std::vector<int>& states) {
 
 GearState quasi_steady_rhs(const GearModel& model, const QuasiSteadyState& q, const GearState& x) {
   GearState dx = gear_rhs(model, q.mode, q.t, x);
-  if (q.frozen_spin) dx[kSpin] = 0.0;
+  if (q.frozen_spin) dx[kSpin] = dx[kSpin2] = 0.0;
   return dx;
 }
 
@@ -54,6 +54,7 @@ QuasiSteadyState quasi_steady_state(const GearModel& model, StabilityPhase phase
   const LandingScenario& s = model.config.scenario;
   const double V = s.forward_speed_mps, r = model.config.structure.wheel_radius_m;
   const bool sliding = model.contact != ContactModel::nonholonomic;
+  const bool twin = model.config.structure.wheel_spacing_m > 0.0;
   QuasiSteadyState q;
   q.phase = phase;
   q.mode.loaded = true;
@@ -67,10 +68,15 @@ QuasiSteadyState quasi_steady_state(const GearModel& model, StabilityPhase phase
     q.frozen_spin = true;
     q.touchdown_slip = touchdown_slip;
     q.x[kSpin] = V * (1.0 - touchdown_slip) / r;
+    q.x[kSpin2] = twin ? q.x[kSpin] : 0.0;
   } else {
     q.states.push_back(kSpin);
     q.x[kSpin] =
         phase == StabilityPhase::braked_slide ? V * (1.0 - s.brake_target_slip) / r : V / r;
+    if (twin) {
+      q.states.push_back(kSpin2);
+      q.x[kSpin2] = q.x[kSpin];
+    }
   }
   if (!sliding) q.states.push_back(kLambda);
   if (model.config.structure.fore_aft_stiffness_n_per_m > 0.0) {
@@ -265,7 +271,7 @@ StabilityReport assess_stability(const GearModel& model_in, StabilityPhase phase
   };
   const Eigen::Matrix<double, 4, kStateSize> Jc = contact_jacobian(model, q);
   rep.spin_torque_damping_nms_per_rad = -Jc(2, kPsiDot);
-  rep.drag_slope_ns_per_m = Jc(0, kSpin) / model.config.structure.wheel_radius_m;
+  rep.drag_slope_ns_per_m = (Jc(0, kSpin) + Jc(0, kSpin2)) / model.config.structure.wheel_radius_m;
   rep.friction = contact_state(model, q.mode, q.t, q.x).friction;
   double best_share = -1.0;
   for (int k : order) {

@@ -332,3 +332,39 @@ TEST(LinearStability, ForeAftBendingIsAnOscillatorLoadedByTheDrag) {
   EXPECT_EQ(std::count(rigid.states.begin(), rigid.states.end(), kX), 0);
   EXPECT_EQ(q.states.size(), rigid.states.size() + 2);
 }
+
+// A twin gear: the drag difference of the two wheels acts on the torsion through half the wheel
+// spacing. Rolling straight without brakes and without trail, the torsional damping from the
+// longitudinal slip, sum_i l_i^2 C_x N_i / V, of a twin at l = 0 with spacing 2L equals that of
+// one wheel at the offset L (2 L^2 C_x (N/2) / V = L^2 C_x N / V); every other term of
+// d(psi'')/d(psi') is independent of the offset. Each wheel's spin feels its own drag.
+TEST(LinearStability, TwinGearsOffsetLeverIsHalfTheWheelSpacing) {
+  const double L = 0.3;
+  GearConfig single;
+  single.structure.trail_m = 0.0;
+  single.structure.offset_m = L;
+  GearConfig twin = single;
+  twin.structure.offset_m = 0.0;
+  twin.structure.wheel_spacing_m = 2 * L;
+  const GearModel ms = make_gear_model(single, ContactModel::nonholonomic);
+  const GearModel mt = make_gear_model(twin, ContactModel::nonholonomic);
+  GearState x = GearState::Zero();
+  x[kSpin] = x[kSpin2] = single.scenario.forward_speed_mps / single.structure.wheel_radius_m;
+  const GearMode rolling{true, true, false};
+  const GearJacobian Js = gear_jacobian(ms, rolling, 10.0, x);
+  const GearJacobian Jt = gear_jacobian(mt, rolling, 10.0, x);
+  const double I = single.structure.torsional_inertia_kgm2, V = single.scenario.forward_speed_mps;
+  const double slip_damping =
+      L * L * single.rolling.longitudinal_slip_coefficient * single.scenario.static_load_n / V;
+  ASSERT_GT(slip_damping, 1e3);  // the lever matters here
+  EXPECT_NEAR(Jt(kPsiDot, kPsiDot), Js(kPsiDot, kPsiDot), 1e-5 * slip_damping / I);
+  // The two wheels' drags respond to psi' with opposite signs, each half the single wheel's.
+  EXPECT_NEAR(Jt(kSpin, kPsiDot), 0.5 * Js(kSpin, kPsiDot), 1e-5 * std::abs(Js(kSpin, kPsiDot)));
+  EXPECT_NEAR(Jt(kSpin2, kPsiDot), -0.5 * Js(kSpin, kPsiDot), 1e-5 * std::abs(Js(kSpin, kPsiDot)));
+  // The twin's second spin is a state of its quasi-steady problems; a single wheel's is not.
+  const QuasiSteadyState qt = quasi_steady_state(make_gear_model(twin, ContactModel::coupled),
+                                                 StabilityPhase::braked_slide);
+  EXPECT_TRUE(qt.converged);
+  EXPECT_EQ(std::count(qt.states.begin(), qt.states.end(), kSpin2), 1);
+  EXPECT_NEAR(qt.x[kSpin2], qt.x[kSpin], 1e-6 * qt.x[kSpin]);  // symmetric at l = 0
+}

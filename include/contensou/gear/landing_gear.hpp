@@ -6,6 +6,7 @@
 //   Omega     wheel spin about the axle, positive when rolling forward [rad/s]
 //   lambda    lateral deflection of the stretched-string tire's leading point [m]
 //   x, x'     fore-aft bending of the strut at the wheel [m, m/s] (optional)
+//   Omega2    the second wheel's spin of a twin gear [rad/s] (optional)
 // Ground frame X forward, Y left, Z up; the wheel frame is turned by psi. The patch centre lies
 // a trail e behind the strut axis and an offset l to its left. Patch kinematics (theory.md
 // section 1, with spin omega = psi'):
@@ -16,7 +17,7 @@
 //   m_y y''   = -k_y y - c_y y' + Fx sin psi + Fy cos psi + g psi'
 //   I_psi psi'' = -k_psi d(psi) - c_psi psi' + Mz - e Fy - l Fx - g y'
 // (d(psi) = psi without torque-link freeplay; GearStructure::freeplay_rad)
-//   I_w Omega'  = -r Fx - T_brake
+//   I_w Omega'  = -r Fx - T_brake   (per wheel for a twin gear)
 //   m_x x''     = -k_x x - c_x x' + Fx cos psi - Fy sin psi   (fore-aft, optional)
 #pragma once
 
@@ -71,6 +72,11 @@ struct GearStructure {
   // (d = psi - delta beyond, 0 inside, to O(s); slope 1 - delta / sqrt(delta^2 + s^2) = 1/800
   // at psi = 0); the damping acts throughout. 0: no freeplay.
   double freeplay_rad = 0.0;  // delta
+  // Twin-wheel gear (issue 12, item 7): two wheels on the axle at l + b/2 and l - b/2, each with
+  // half the load, its own spin, anti-skid and patch, and the string's lateral deflection shared
+  // (their lateral kinematics are the same). The drag difference of the two wheels acts on the
+  // torsion through the lever b/2. 0: one wheel at the offset l.
+  double wheel_spacing_m = 0.0;  // b
   // Fore-aft bending of the strut (issue 12, item 3): the wheel moves along X by x against
   // k_x, c_x with modal mass m_x, loaded by the drag (the spin-up drag bends it back, its release
   // at the end of spin-up springs it forward). 0 stiffness: rigid fore-aft (the default).
@@ -156,7 +162,19 @@ std::vector<std::string> gear_parameter_names();
 
 // x, x': fore-aft bending of the strut at the wheel (structure.fore_aft_stiffness_n_per_m > 0;
 // inert otherwise).
-enum StateIndex : int { kY = 0, kYDot, kPsi, kPsiDot, kSpin, kLambda, kX, kXDot, kStateSize };
+// Omega2: the second wheel's spin of a twin gear (structure.wheel_spacing_m > 0; inert otherwise).
+enum StateIndex : int {
+  kY = 0,
+  kYDot,
+  kPsi,
+  kPsiDot,
+  kSpin,
+  kLambda,
+  kX,
+  kXDot,
+  kSpin2,
+  kStateSize
+};
 using GearState = Eigen::Matrix<double, kStateSize, 1>;
 
 // The discrete part of the state, changed only at events.
@@ -166,15 +184,20 @@ struct GearMode {
   bool brake_command = false;  // between brake on and brake off
 };
 
-// What the contact sees and gives at one instant.
+// What the contact sees and gives at one instant. For a twin gear: the mean kinematics, slip
+// ratio and friction, the summed load, forces and brake torque, the moment about the midpoint
+// between the patches, and one wheel's patch radius.
 struct ContactState {
-  double load_n = 0.0;          // N
-  double patch_radius_m = 0.0;  // R
-  Kinematics<double> slip;      // vx, vy, omega = psi'
-  double slip_ratio = 0.0;      // s = vx / V
-  double friction = 0.0;        // f at the effective slip speed (sliding) or mu (rolling)
-  Resultants<double> force;     // on the tire, wheel frame
-  double brake_torque_nm = 0.0;
+  double load_n = 0.0;           // N
+  double patch_radius_m = 0.0;   // R
+  Kinematics<double> slip;       // vx, vy, omega = psi'
+  double slip_ratio = 0.0;       // s = vx / V
+  double friction = 0.0;         // f at the effective slip speed (sliding) or mu (rolling)
+  Resultants<double> force;      // on the tire, wheel frame
+  double brake_torque_nm = 0.0;  // all wheels
+  // Per wheel (a twin gear's second wheel in [1]; zero for one wheel): drag and brake torque.
+  std::array<double, 2> wheel_fx_n{};
+  std::array<double, 2> wheel_brake_nm{};
 };
 
 // Everything fixed for one run: the configuration, the contact model and the friction law's

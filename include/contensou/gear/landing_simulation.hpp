@@ -13,7 +13,8 @@
 namespace contensou {
 
 // The absolute tolerance of each state is relative_tolerance times a scale: 1 mm, 0.1 m/s,
-// 1 mrad, 0.1 rad/s, 100 rad/s, 1 mm, 1 mm, 0.1 m/s (y, y', psi, psi', Omega, lambda, x, x').
+// 1 mrad, 0.1 rad/s, 100 rad/s, 1 mm, 1 mm, 0.1 m/s, 100 rad/s (y, y', psi, psi', Omega,
+// lambda, x, x', Omega2).
 struct SolverOptions {
   double relative_tolerance = 1e-7;
   double output_interval_s = 5e-4;  // samples for the time history and the shimmy analysis
