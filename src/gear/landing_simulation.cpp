@@ -10,6 +10,7 @@
 #include <chrono>
 #include <cmath>
 #include <stdexcept>
+#include <vector>
 
 #include "contensou/friction/error.hpp"
 
@@ -34,23 +35,42 @@ namespace {
 
 enum Root : int { kLoadOnset = 0, kFullLoad, kSpinUp, kSliding, kBrakeOn, kBrakeOff, kRoots };
 
+// The states CVODE integrates: the optional ones (fore-aft x, x'; a twin's Omega2) only when
+// switched on, so that a one-wheel gear pays nothing for them.
 struct Problem {
   const GearModel* model;
   GearMode mode;
+  std::vector<int> active;
+  int size() const { return static_cast<int>(active.size()); }
 };
 
-GearState to_state(N_Vector v) {
-  GearState x;
-  for (int i = 0; i < kStateSize; ++i) x[i] = NV_Ith_S(v, i);
+std::vector<int> active_states(const GearModel& m) {
+  std::vector<int> a{kY, kYDot, kPsi, kPsiDot, kSpin, kLambda};
+  if (m.config.structure.fore_aft_stiffness_n_per_m > 0.0) {
+    a.push_back(kX);
+    a.push_back(kXDot);
+  }
+  if (m.config.structure.wheel_spacing_m > 0.0) a.push_back(kSpin2);
+  return a;
+}
+
+GearState to_state(const Problem& p, N_Vector v) {
+  GearState x = GearState::Zero();
+  for (int k = 0; k < p.size(); ++k) x[p.active[static_cast<std::size_t>(k)]] = NV_Ith_S(v, k);
   return x;
+}
+
+void from_state(const Problem& p, const GearState& x, N_Vector v) {
+  for (int k = 0; k < p.size(); ++k) NV_Ith_S(v, k) = x[p.active[static_cast<std::size_t>(k)]];
 }
 
 int rhs(sunrealtype t, N_Vector y, N_Vector ydot, void* data) {
   const Problem& p = *static_cast<const Problem*>(data);
-  const GearState dx = gear_rhs(*p.model, p.mode, t, to_state(y));
-  for (int i = 0; i < kStateSize; ++i) {
-    if (!std::isfinite(dx[i])) return 1;  // recoverable: CVODE retries with a smaller step
-    NV_Ith_S(ydot, i) = dx[i];
+  const GearState dx = gear_rhs(*p.model, p.mode, t, to_state(p, y));
+  for (int k = 0; k < p.size(); ++k) {
+    const double d = dx[p.active[static_cast<std::size_t>(k)]];
+    if (!std::isfinite(d)) return 1;  // recoverable: CVODE retries with a smaller step
+    NV_Ith_S(ydot, k) = d;
   }
   return 0;
 }
@@ -58,10 +78,12 @@ int rhs(sunrealtype t, N_Vector y, N_Vector ydot, void* data) {
 int jacobian(sunrealtype t, N_Vector y, N_Vector, SUNMatrix J, void* data, N_Vector, N_Vector,
              N_Vector) {
   const Problem& p = *static_cast<const Problem*>(data);
-  const GearJacobian A = gear_jacobian(*p.model, p.mode, t, to_state(y));
+  const GearJacobian A = gear_jacobian(*p.model, p.mode, t, to_state(p, y));
   if (!A.allFinite()) return 1;  // recoverable
-  for (int j = 0; j < kStateSize; ++j)
-    for (int i = 0; i < kStateSize; ++i) SM_ELEMENT_D(J, i, j) = A(i, j);
+  for (int j = 0; j < p.size(); ++j)
+    for (int i = 0; i < p.size(); ++i)
+      SM_ELEMENT_D(J, i, j) =
+          A(p.active[static_cast<std::size_t>(i)], p.active[static_cast<std::size_t>(j)]);
   return 0;
 }
 
@@ -72,14 +94,14 @@ int roots(sunrealtype t, N_Vector y, sunrealtype* g, void* data) {
   const bool switching = p.model->contact != ContactModel::nonholonomic;
   // The patch's slip ratio vx / V from the kinematics alone (no friction law per event check).
   const GearStructure& gs = p.model->config.structure;
-  const double psi = NV_Ith_S(y, kPsi), V = s.forward_speed_mps;
+  const GearState x = to_state(p, y);
+  const double psi = x[kPsi], V = s.forward_speed_mps;
   // A twin gear's mean wheel speed.
-  const double spin = gs.wheel_spacing_m > 0.0 ? 0.5 * (NV_Ith_S(y, kSpin) + NV_Ith_S(y, kSpin2))
-                                               : NV_Ith_S(y, kSpin);
-  const double ratio = ((V + NV_Ith_S(y, kXDot)) * std::cos(psi) +
-                        (NV_Ith_S(y, kYDot) + s.drift_speed_mps) * std::sin(psi) -
-                        gs.offset_m * NV_Ith_S(y, kPsiDot) - spin * gs.wheel_radius_m) /
-                       V;
+  const double spin = gs.wheel_spacing_m > 0.0 ? 0.5 * (x[kSpin] + x[kSpin2]) : x[kSpin];
+  const double ratio =
+      ((V + x[kXDot]) * std::cos(psi) + (x[kYDot] + s.drift_speed_mps) * std::sin(psi) -
+       gs.offset_m * x[kPsiDot] - spin * gs.wheel_radius_m) /
+      V;
   g[kLoadOnset] = t - s.touchdown_time_s;
   g[kFullLoad] = t - (s.touchdown_time_s + s.load_ramp_s);
   g[kSpinUp] = switching && p.mode.loaded && !p.mode.rolling ? ratio - s.rolling_slip : 1.0;
@@ -145,22 +167,25 @@ LandingRun simulate_landing(const GearModel& model, const SolverOptions& options
   std::tie(run.window_start_s, run.window_end_s) = analysis_window(s);
   if (model.contact == ContactModel::nonholonomic) run.spin_up_s = 0.0;
 
-  Problem problem{&model, initial_mode(model)};
+  Problem problem{&model, initial_mode(model), active_states(model)};
+  const int n = problem.size();
   GearState x = initial_state(model);
   Cvode cv;
   check(SUNContext_Create(nullptr, &cv.ctx), "SUNContext_Create", 0.0);
-  cv.y = N_VNew_Serial(kStateSize, cv.ctx);
-  cv.atol = N_VNew_Serial(kStateSize, cv.ctx);
+  cv.y = N_VNew_Serial(n, cv.ctx);
+  cv.atol = N_VNew_Serial(n, cv.ctx);
   const std::array<double, kStateSize> scale{1e-3, 1e-1, 1e-3, 1e-1, 1e2, 1e-3, 1e-3, 1e-1, 1e2};
-  for (int i = 0; i < kStateSize; ++i) {
-    NV_Ith_S(cv.y, i) = x[i];
-    NV_Ith_S(cv.atol, i) = options.relative_tolerance * scale[static_cast<std::size_t>(i)];
+  from_state(problem, x, cv.y);
+  for (int k = 0; k < n; ++k) {
+    NV_Ith_S(cv.atol, k) =
+        options.relative_tolerance *
+        scale[static_cast<std::size_t>(problem.active[static_cast<std::size_t>(k)])];
   }
   cv.mem = CVodeCreate(CV_BDF, cv.ctx);
   double t = 0.0;
   check(CVodeInit(cv.mem, rhs, t, cv.y), "CVodeInit", t);
   check(CVodeSVtolerances(cv.mem, options.relative_tolerance, cv.atol), "CVodeSVtolerances", t);
-  cv.A = SUNDenseMatrix(kStateSize, kStateSize, cv.ctx);
+  cv.A = SUNDenseMatrix(n, n, cv.ctx);
   cv.LS = SUNLinSol_Dense(cv.y, cv.A, cv.ctx);
   check(CVodeSetLinearSolver(cv.mem, cv.LS, cv.A), "CVodeSetLinearSolver", t);
   if (options.analytic_jacobian) check(CVodeSetJacFn(cv.mem, jacobian), "CVodeSetJacFn", t);
@@ -174,7 +199,7 @@ LandingRun simulate_landing(const GearModel& model, const SolverOptions& options
   std::vector<LandingSample> window;
   double peak_torsion = 0.0, peak_lateral = 0.0;
   auto record = [&](double time) {
-    LandingSample sample{time, to_state(cv.y), {}, problem.mode.rolling};
+    LandingSample sample{time, to_state(problem, cv.y), {}, problem.mode.rolling};
     // The contact is kept for the time histories only; the analysis needs the state alone.
     if (options.record) sample.contact = contact_state(model, problem.mode, time, sample.x);
     if (time >= s.touchdown_time_s) {
@@ -215,7 +240,7 @@ LandingRun simulate_landing(const GearModel& model, const SolverOptions& options
     }
     std::array<int, kRoots> found{};
     check(CVodeGetRootInfo(cv.mem, found.data()), "CVodeGetRootInfo", t);
-    x = to_state(cv.y);
+    x = to_state(problem, cv.y);
     GearMode& mode = problem.mode;
     if (found[kLoadOnset]) {
       mode.loaded = true;
@@ -243,7 +268,7 @@ LandingRun simulate_landing(const GearModel& model, const SolverOptions& options
       run.events.push_back({t, "brake off"});
     }
     count();
-    for (int i = 0; i < kStateSize; ++i) NV_Ith_S(cv.y, i) = x[i];
+    from_state(problem, x, cv.y);
     check(CVodeReInit(cv.mem, t, cv.y), "CVodeReInit", t);
   }
   count();
