@@ -1,5 +1,6 @@
 // The shimmy demo's speed: a one-second landing of each contact model (wall time and the
-// real-time factor: simulated seconds per wall second), and a 50 x 50 stability map on 2 threads
+// real-time factor: simulated seconds per second), with the structured Jacobian and with
+// CVODE's difference quotients, and a 50 x 50 stability map on 2 threads
 // against the same map on 1 thread as the in-process baseline (the ratio is the speed-up).
 #include <benchmark/benchmark.h>
 
@@ -12,15 +13,18 @@ using namespace contensou;
 
 namespace {
 
-void BM_Landing(benchmark::State& state, ContactModel contact, bool exact) {
+void BM_Landing(benchmark::State& state, ContactModel contact, bool exact, bool analytic) {
   GearConfig c;
   c.tire.exact_integrals = exact;
   const GearModel m = make_gear_model(c, contact);
   SolverOptions o;
   o.record = false;
-  long steps = 0;
-  for (auto _ : state) steps = simulate_landing(m, o).steps;
-  state.counters["steps"] = static_cast<double>(steps);
+  o.analytic_jacobian = analytic;
+  LandingRun run;
+  for (auto _ : state) run = simulate_landing(m, o);
+  state.counters["steps"] = static_cast<double>(run.steps);
+  state.counters["rhs"] = static_cast<double>(run.rhs_evaluations);
+  state.counters["jacobians"] = static_cast<double>(run.jacobian_evaluations);
   state.counters["realtime_factor"] = benchmark::Counter(
       c.scenario.end_time_s * static_cast<double>(state.iterations()), benchmark::Counter::kIsRate);
 }
@@ -36,15 +40,37 @@ void BM_Map(benchmark::State& state) {
   state.counters["threads"] = threads;
 }
 
+// The same 50 x 50 grid judged by eigenvalues (braked slide), one thread.
+void BM_LinearMap(benchmark::State& state) {
+  const GearModel m = make_gear_model(GearConfig{}, ContactModel::coupled);
+  const MapAxis x{"scenario.forward_speed_mps", 30.0, 90.0, 50};
+  const MapAxis y{"structure.offset_m", 0.0, 0.5, 50};
+  for (auto _ : state)
+    benchmark::DoNotOptimize(linear_stability_map(m, x, y, StabilityPhase::braked_slide, 1));
+  state.counters["cells"] = 2500;
+}
+
 }  // namespace
 
-BENCHMARK_CAPTURE(BM_Landing, coupled, ContactModel::coupled, false)->Unit(benchmark::kMillisecond);
-BENCHMARK_CAPTURE(BM_Landing, decoupled, ContactModel::decoupled, false)
+// Each landing with the structured Jacobian (gear_jacobian) and with CVODE's difference
+// quotients ("_dq"), in the same binary.
+BENCHMARK_CAPTURE(BM_Landing, coupled, ContactModel::coupled, false, true)
     ->Unit(benchmark::kMillisecond);
-BENCHMARK_CAPTURE(BM_Landing, nonholonomic, ContactModel::nonholonomic, false)
+BENCHMARK_CAPTURE(BM_Landing, coupled_dq, ContactModel::coupled, false, false)
     ->Unit(benchmark::kMillisecond);
-BENCHMARK_CAPTURE(BM_Landing, coupled_exact_integrals, ContactModel::coupled, true)
+BENCHMARK_CAPTURE(BM_Landing, decoupled, ContactModel::decoupled, false, true)
     ->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(BM_Landing, decoupled_dq, ContactModel::decoupled, false, false)
+    ->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(BM_Landing, nonholonomic, ContactModel::nonholonomic, false, true)
+    ->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(BM_Landing, nonholonomic_dq, ContactModel::nonholonomic, false, false)
+    ->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(BM_Landing, coupled_exact_integrals, ContactModel::coupled, true, true)
+    ->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(BM_Landing, coupled_exact_integrals_dq, ContactModel::coupled, true, false)
+    ->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_LinearMap)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_Map)
     ->Args({2, 50})
     ->Args({1, 50})

@@ -47,6 +47,7 @@ struct Reader {
 
 nlohmann::json to_json(const ShimmyConfig& c) {
   nlohmann::json j;
+  j["gear"] = c.gear_name;
   GearConfig g = c.gear;
   for (const std::string& name : gear_parameter_names()) {
     nlohmann::json* node = &j;
@@ -64,17 +65,19 @@ nlohmann::json to_json(const ShimmyConfig& c) {
   j["shimmy"]["amplitude_threshold_rad"] = c.criterion.amplitude_threshold_rad;
   j["shimmy"]["sustained_growth_rate_per_s"] = c.criterion.sustained_growth_rate_per_s;
   j["maps"] = nlohmann::json::array();  // an empty list stays empty (not the defaults)
-  for (const auto& [x, y] : c.maps) {
+  for (const MapSpec& spec : c.maps) {
     nlohmann::json m;
-    for (const auto& [key, a] : {std::pair{"x", &x}, std::pair{"y", &y}})
+    for (const auto& [key, a] : {std::pair{"x", &spec.x}, std::pair{"y", &spec.y}})
       m[key] = {
           {"parameter", a->parameter}, {"from", a->from}, {"to", a->to}, {"points", a->points}};
+    m["method"] = spec.method;
+    m["phase"] = to_string(spec.phase);
     j["maps"].push_back(m);
   }
   return j;
 }
 
-ShimmyConfig read_shimmy_config(const std::string& path) {
+ShimmyConfig read_shimmy_config(const std::string& path, const std::string& gear_name) {
   std::ifstream in(path, std::ios::binary);
   if (!in) throw std::runtime_error(path + ": cannot open the configuration file");
   std::stringstream buf;
@@ -104,13 +107,25 @@ ShimmyConfig parse_shimmy_config(const std::string& text, const std::string& pat
   if (!j.is_object()) throw ParseError(path, 1, 1, "the configuration must be a JSON object");
 
   ShimmyConfig c;
+  c.gear_name = gear_name;
+  if (j.contains("gear")) {
+    if (!j["gear"].is_string()) r.fail_at_key("gear", "expected default or legacy");
+    c.gear_name = j["gear"].get<std::string>();
+  }
+  try {
+    c.gear = gear_config_by_name(c.gear_name);
+  } catch (const InvalidArgument& e) {
+    r.fail_at_key("gear", e.what(), false);
+  }
   // Walks nested objects; leaves are looked up by their dotted name.
   const std::function<void(const nlohmann::json&, const std::string&)> walk =
       [&](const nlohmann::json& node, const std::string& prefix) {
         for (auto it = node.begin(); it != node.end(); ++it) {
           const std::string key = prefix.empty() ? it.key() : prefix + "." + it.key();
           const nlohmann::json& v = it.value();
-          if (key == "models") {
+          if (key == "gear") {
+            // read above
+          } else if (key == "models") {
             if (!v.is_array() || v.empty()) r.fail_at_key(key, "expected a non-empty array");
             c.models.clear();
             for (const auto& m : v) {
@@ -125,9 +140,29 @@ ShimmyConfig parse_shimmy_config(const std::string& text, const std::string& pat
             if (!v.is_array()) r.fail_at_key(key, "expected an array of {x, y}");
             c.maps.clear();
             for (const auto& m : v) {
-              std::pair<MapAxis, MapAxis> axes;
-              for (const auto& [name, axis] :
-                   {std::pair{"x", &axes.first}, std::pair{"y", &axes.second}}) {
+              MapSpec spec;
+              if (m.is_object()) {
+                for (auto f = m.begin(); f != m.end(); ++f) {
+                  const std::string fk = key + "." + f.key();
+                  if (f.key() == "method") {
+                    if (!f.value().is_string() ||
+                        (f.value() != "eigenvalues" && f.value() != "simulation"))
+                      r.fail_at_key(fk,
+                                    "expected eigenvalues or simulation, got " + f.value().dump());
+                    spec.method = f.value().get<std::string>();
+                  } else if (f.key() == "phase") {
+                    if (!f.value().is_string() ||
+                        (f.value() != "touchdown" && f.value() != "braked_slide"))
+                      r.fail_at_key(fk,
+                                    "expected touchdown or braked_slide, got " + f.value().dump());
+                    spec.phase = f.value() == "touchdown" ? StabilityPhase::touchdown
+                                                          : StabilityPhase::braked_slide;
+                  } else if (f.key() != "x" && f.key() != "y") {
+                    r.fail_at_key(fk, "unknown key (x, y, method, phase)");
+                  }
+                }
+              }
+              for (const auto& [name, axis] : {std::pair{"x", &spec.x}, std::pair{"y", &spec.y}}) {
                 if (!m.is_object() || !m.contains(name) || !m[name].is_object())
                   r.fail_at_key(key, std::string("each map needs an object '") + name + "'");
                 const nlohmann::json& a = m[name];
@@ -154,7 +189,7 @@ ShimmyConfig parse_shimmy_config(const std::string& text, const std::string& pat
                 if (axis->parameter.empty())
                   r.fail_at_key(key + "." + name, "each axis needs a 'parameter'");
               }
-              c.maps.push_back(axes);
+              c.maps.push_back(spec);
             }
           } else if (key == "tire.law_coefficients") {
             if (!v.is_string()) r.fail_at_key(key, "expected fitted, asymptotic or seed");

@@ -11,26 +11,43 @@
 
 namespace contensou::app {
 
+// One map: two axes; every model gets its own map. "eigenvalues" maps (the default) colour the
+// largest real part of an oscillatory eigenvalue at the phase's quasi-steady state
+// (linear_stability_map); "simulation" maps simulate a landing per cell (stability_map).
+struct MapSpec {
+  MapAxis x, y;
+  std::string method = "eigenvalues";  // or "simulation"
+  StabilityPhase phase = StabilityPhase::braked_slide;
+};
+
 struct ShimmyConfig {
+  std::string gear_name = "default";  // the named gear the file's values start from
   GearConfig gear;
   std::vector<ContactModel> models{ContactModel::coupled, ContactModel::decoupled,
                                    ContactModel::nonholonomic};
   SolverOptions solver;
   ShimmyCriterion criterion;
-  // Each map: two axes; every model gets its own map.
-  std::vector<std::pair<MapAxis, MapAxis>> maps{
+  std::vector<MapSpec> maps{
       {{"scenario.forward_speed_mps", 30.0, 90.0, 50},
-       {"structure.torsional_damping_nms_per_rad", 0.0, 400.0, 50}},
-      {{"structure.offset_m", 0.0, 0.4, 50},
-       {"structure.torsional_damping_nms_per_rad", 0.0, 400.0, 50}}};
+       {"structure.torsional_damping_nms_per_rad", 0.0, 400.0, 50},
+       "eigenvalues",
+       StabilityPhase::touchdown},
+      {{"scenario.forward_speed_mps", 30.0, 90.0, 50},
+       {"scenario.brake_target_slip", 0.03, 0.3, 50}},
+      {{"scenario.forward_speed_mps", 30.0, 90.0, 50},
+       {"tire.friction.kinetic_coefficient", 0.2, 0.8, 50}},
+      {{"scenario.forward_speed_mps", 30.0, 90.0, 50}, {"structure.offset_m", 0.0, 0.5, 50}},
+      {{"scenario.forward_speed_mps", 30.0, 90.0, 50},
+       {"scenario.static_load_n", 20.0e3, 140.0e3, 50}}};
 };
 
 // The default configuration as JSON (every key, with its value).
 nlohmann::json to_json(const ShimmyConfig& config);
 
-// Reads a configuration; keys left out keep their defaults. Errors name the file, line and
-// column (for syntax errors and unknown keys) and the bad value.
-ShimmyConfig read_shimmy_config(const std::string& path);
+// Reads a configuration; keys left out keep the values of the named gear (key "gear": default or
+// legacy; otherwise `gear_name`). Errors name the file, line and column (for syntax errors and
+// unknown keys) and the bad value.
+ShimmyConfig read_shimmy_config(const std::string& path, const std::string& gear_name = "default");
 
 // The same from text in memory; `path` stands for the file in error messages (the Python
 // package reads its configuration objects through this).

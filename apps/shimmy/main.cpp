@@ -9,11 +9,13 @@
 #include <filesystem>
 #include <fstream>
 #include <iostream>
+#include <optional>
 #include <sstream>
 
 #include "config.hpp"
 #include "contensou/friction/error.hpp"
 #include "gnuplot.hpp"
+#include "tire_report.hpp"
 
 using namespace contensou;
 using namespace contensou::app;
@@ -25,7 +27,8 @@ constexpr const char* kName = "contensou-shimmy";
 std::string csv_history(const LandingRun& run) {
   std::ostringstream o;
   o.precision(9);
-  o << "t_s,y_m,ydot_mps,psi_rad,psidot_radps,wheel_spin_radps,lambda_m,load_n,patch_radius_m,"
+  o << "t_s,y_m,ydot_mps,psi_rad,psidot_radps,wheel_spin_radps,lambda_m,x_m,xdot_mps,"
+       "wheel_spin2_radps,load_n,patch_radius_m,"
        "vx_mps,vy_mps,omega_radps,slip_ratio,friction,Fx_n,Fy_n,Mz_nm,brake_nm,rolling\n";
   for (const LandingSample& s : run.samples) {
     o << s.t;
@@ -56,6 +59,119 @@ nlohmann::json run_json(const LandingRun& r) {
   return j;
 }
 
+nlohmann::json report_json(const StabilityReport& r) {
+  nlohmann::json eig = nlohmann::json::array();
+  for (const auto& e : r.eigenvalues) eig.push_back({e.real(), e.imag()});
+  const auto finite_or_null = [](double v) {
+    return std::isfinite(v) ? nlohmann::json(v) : nlohmann::json(nullptr);
+  };
+  return {{"stable", r.stable()},
+          {"quasi_steady_state_converged", r.state.converged},
+          {"growth_rate_per_s", r.growth_rate_per_s},
+          {"frequency_Hz", r.frequency_hz},
+          {"max_real_part_per_s", r.max_real_part},
+          {"eigenvalues_per_s", eig},
+          {"perturbation_growth_rate_per_s", finite_or_null(r.perturbation_growth_rate_per_s)},
+          {"perturbation_frequency_Hz", finite_or_null(r.perturbation_frequency_hz)},
+          {"torsion_share", r.torsion_share},
+          {"mode", r.mode_kind},
+          {"torsion_growth_rate_per_s", r.torsion_growth_rate_per_s},
+          {"torsion_frequency_Hz", r.torsion_frequency_hz},
+          {"spin_torque_damping_nms_per_rad", r.spin_torque_damping_nms_per_rad},
+          {"drag_slope_ns_per_m", r.drag_slope_ns_per_m},
+          {"friction", r.friction},
+          {"frozen_slip_ratio",
+           r.state.frozen_spin ? nlohmann::json(r.state.touchdown_slip) : nlohmann::json(nullptr)},
+          {"energy_per_cycle_J_at_1mrad",
+           {{"spin_torque", r.energy.spin_torque},
+            {"trail_lateral_force", r.energy.trail_lateral_force},
+            {"offset_drag", r.energy.offset_drag},
+            {"torsional_damping", r.energy.torsional_damping},
+            {"lateral_friction", r.energy.lateral_friction},
+            {"lateral_damping", r.energy.lateral_damping},
+            {"total", r.energy.total()}}}};
+}
+
+// The tire from a contensou-identify report (--tire), if any: its mean law and the draws.
+struct TireInput {
+  std::string path;
+  TireLawDistribution distribution;
+  TireLawCoefficients mean;
+  TireLawDraws draws;
+};
+
+// The gear model of a contact model, with the report's mean tire law when given.
+GearModel gear_model(const ShimmyConfig& config, ContactModel cm, const TireInput* tire) {
+  const GearModel m = make_gear_model(config.gear, cm);
+  return tire ? with_tire_law(m, tire->mean) : m;
+}
+
+// The stability verdicts of both phases (docs/shimmy.md, "Stability criterion"), by the
+// eigenvalues of the linearisation and the growth after the standard perturbation.
+void print_stability(const ShimmyConfig& config, const std::vector<LandingRun>& runs,
+                     const TireInput* tire, nlohmann::json& summary) {
+  std::printf(
+      "\nstability: eigenvalues of the linearisation about the quasi-steady state, and the growth "
+      "after psi' += 0.1 rad/s\n(growth: all modes; torsion: the torsional mode; pert.: growth "
+      "fitted after the kick; spin damp. -dMz/dpsi' [N m s/rad])\n"
+      "%-13s %-13s %11s %8s %12s %11s %11s %6s  %s\n",
+      "model", "phase", "growth[1/s]", "freq[Hz]", "torsion[1/s]", "pert.[1/s]", "spin damp.", "f",
+      "verdict");
+  for (const LandingRun& run : runs) {
+    const GearModel model = gear_model(config, run.contact, tire);
+    const StabilityReport td = assess_touchdown(model);
+    const StabilityReport br = assess_stability(model, StabilityPhase::braked_slide);
+    for (const StabilityReport* r : {&td, &br}) {
+      std::string verdict;
+      char buf[200];
+      if (!r->state.converged) {
+        verdict = "no quasi-steady state found";
+      } else if (r == &td && run.contact == ContactModel::nonholonomic) {
+        const double crit = classical_critical_damping(model);
+        const double c = config.gear.structure.torsional_damping_nms_per_rad;
+        if (crit > 0)
+          std::snprintf(buf, sizeof buf,
+                        "%s; classical critical damping %.1f N m s/rad, margin %.2f",
+                        r->stable() ? "stable" : "SHIMMY", crit, c / crit);
+        else
+          std::snprintf(buf, sizeof buf, "%s; stable without torsional damping",
+                        r->stable() ? "stable" : "SHIMMY");
+        verdict = buf;
+      } else if (r == &td) {
+        const double T = run.spin_up_s.value_or(0.0);
+        const double growth = std::exp(r->growth_rate_per_s * T);
+        std::snprintf(buf, sizeof buf,
+                      "%s: x%.3g over the %.3f s spin-up (%.1f cycles), worst at slip %.1f",
+                      r->growth_rate_per_s <= 0       ? "stable"
+                      : r->growth_rate_per_s * T >= 1 ? "GROWS within spin-up"
+                                                      : "grows, too slowly to matter",
+                      growth, T, r->frequency_hz * T, r->state.touchdown_slip);
+        verdict = buf;
+        if (r->growth_rate_per_s > 0) verdict += " (" + r->mode_kind + " mode)";
+      } else if (r->stable()) {
+        verdict = "stable";
+      } else if (r->mode_kind == "fore-aft") {
+        verdict = "UNSTABLE while braking: fore-aft mode (gear walk), not shimmy";
+      } else {
+        verdict = "SHIMMY while braking (" + r->mode_kind + " mode)";
+      }
+      std::printf("%-13s %-13s %11.3f %8.2f %12.3f %11.3f %11.4g %6.3f  %s\n",
+                  to_string(run.contact), to_string(r->state.phase), r->growth_rate_per_s,
+                  r->frequency_hz, r->torsion_growth_rate_per_s, r->perturbation_growth_rate_per_s,
+                  r->spin_torque_damping_nms_per_rad, r->friction, verdict.c_str());
+      nlohmann::json j = report_json(*r);
+      j["verdict"] = verdict;
+      summary["models"][to_string(run.contact)]["stability"][to_string(r->state.phase)] = j;
+    }
+    if (run.contact == ContactModel::decoupled)
+      std::printf(
+          "  note: the decoupled model's regularised Coulomb spin torque acts on the torsion as a "
+          "damper of %.3g N m s/rad (M0 R / eps) while braking: an artefact of the regularisation, "
+          "not a physical damper; shown for reference only\n",
+          br.spin_torque_damping_nms_per_rad);
+  }
+}
+
 // One PNG per quantity, the models side by side; the analysis window shaded.
 void draw_histories(const std::string& dir, const std::vector<LandingRun>& runs) {
   struct Panel {
@@ -66,10 +182,11 @@ void draw_histories(const std::string& dir, const std::vector<LandingRun>& runs)
   const std::vector<Panel> panels{
       {"torsion", "torsion psi [rad]", {{4, "psi"}}},
       {"lateral", "lateral deflection y [m]", {{2, "y"}}},
-      {"slip", "patch sliding: slip ratio vx/V and vy [m/s]", {{13, "vx/V"}, {11, "vy [m/s]"}}},
-      {"spin", "spin of the patch omega = dpsi/dt [rad/s]", {{12, "omega"}}},
-      {"forces", "friction force on the tire [N]", {{15, "Fx"}, {16, "Fy"}}},
-      {"torque", "friction torque on the tire Mz [N m]", {{17, "Mz"}}}};
+      {"slip", "patch sliding: slip ratio vx/V and vy [m/s]", {{16, "vx/V"}, {14, "vy [m/s]"}}},
+      {"spin", "spin of the patch omega = dpsi/dt [rad/s]", {{15, "omega"}}},
+      {"forces", "friction force on the tire [N]", {{18, "Fx"}, {19, "Fy"}}},
+      {"torque", "friction torque on the tire Mz [N m]", {{20, "Mz"}}},
+      {"fore_aft", "fore-aft bending x [m] (0 when off)", {{8, "x"}}}};
   for (const Panel& p : panels) {
     std::ostringstream gp;
     gp << "set terminal pngcairo noenhanced size " << 520 * runs.size() << ",420 font ',10'\n"
@@ -107,7 +224,8 @@ std::string short_name(const std::string& parameter) {
 // Writes the map's CSV and PNG; returns its summary.
 nlohmann::json write_map(const std::string& dir, const StabilityMap& m) {
   const std::string base = "map_" + short_name(m.x.parameter) + "_" + short_name(m.y.parameter) +
-                           "_" + to_string(m.contact);
+                           "_" + (m.linear ? to_string(m.phase) : "simulated") + "_" +
+                           to_string(m.contact);
   std::ostringstream csv, boundary;
   csv.precision(9);
   csv << m.x.parameter << ',' << m.y.parameter
@@ -137,8 +255,10 @@ nlohmann::json write_map(const std::string& dir, const StabilityMap& m) {
   std::ostringstream gp;
   gp << "set terminal pngcairo noenhanced size 760,620 font ',10'\nset output '" << base
      << ".png'\n"
-     << "set datafile separator ','\nset title '" << to_string(m.contact)
-     << ": torsional growth rate [1/s]; black: shimmy boundary'\n"
+     << "set datafile separator ','\nset title '" << to_string(m.contact) << ", "
+     << (m.linear ? std::string(to_string(m.phase)) + ": largest oscillatory eigenvalue real part"
+                  : std::string("simulated landing: torsional growth rate"))
+     << " [1/s]; black: stability boundary'\n"
      << "set xlabel '" << m.x.parameter << "'\nset ylabel '" << m.y.parameter << "'\n"
      << "set palette defined (0 '#2166ac', 0.5 '#f7f7f7', 1 '#b2182b')\n"
      << "set cbrange [" << -g_max << ":" << g_max << "]\nset cblabel 'growth rate [1/s]'\n"
@@ -149,6 +269,8 @@ nlohmann::json write_map(const std::string& dir, const StabilityMap& m) {
   run_gnuplot(dir, base, gp.str());
   return {{"x", m.x.parameter},
           {"y", m.y.parameter},
+          {"method", m.linear ? "eigenvalues" : "simulation"},
+          {"phase", m.linear ? nlohmann::json(to_string(m.phase)) : nlohmann::json(nullptr)},
           {"points", {m.x.points, m.y.points}},
           {"shimmy_cells", shimmy_cells},
           {"failed_cells", failed},
@@ -156,15 +278,91 @@ nlohmann::json write_map(const std::string& dir, const StabilityMap& m) {
           {"png", base + ".png"}};
 }
 
+// Writes a probability map's CSV and PNG (colour: the probability of shimmy over the draws).
+nlohmann::json write_probability_map(const std::string& dir, const StabilityMap& m) {
+  const std::string base = "prob_" + short_name(m.x.parameter) + "_" + short_name(m.y.parameter) +
+                           "_" + to_string(m.phase) + "_" + to_string(m.contact);
+  std::ostringstream csv;
+  csv.precision(9);
+  csv << m.x.parameter << ',' << m.y.parameter
+      << ",shimmy_probability,median_growth_rate_per_s,valid,error\n";
+  for (int j = 0; j < m.y.points; ++j) {
+    for (int i = 0; i < m.x.points; ++i) {
+      const MapCell& c = m.cells[static_cast<std::size_t>(j * m.x.points + i)];
+      csv << c.x << ',' << c.y << ',' << c.shimmy_probability << ',' << c.growth_rate_per_s << ','
+          << c.valid << ",\"" << c.error << "\"\n";
+    }
+    csv << '\n';
+  }
+  write_file_atomically(dir + "/" + base + ".csv", csv.str());
+  std::ostringstream gp;
+  gp << "set terminal pngcairo noenhanced size 760,620 font ',10'\nset output '" << base
+     << ".png'\nset datafile separator ','\nset title '" << to_string(m.contact) << ", "
+     << to_string(m.phase) << ": probability of shimmy over the tire report draws'\n"
+     << "set xlabel '" << m.x.parameter << "'\nset ylabel '" << m.y.parameter << "'\n"
+     << "set palette defined (0 '#f7f7f7', 0.5 '#f4a582', 1 '#b2182b')\nset cbrange [0:1]\n"
+     << "set xrange [" << m.x.from << ":" << m.x.to << "]\nset yrange [" << m.y.from << ":"
+     << m.y.to << "]\n"
+     << "plot '" << base << ".csv' skip 1 using 1:2:($5 > 0 ? $3 : NaN) with image notitle\n";
+  run_gnuplot(dir, base, gp.str());
+  return {{"x", m.x.parameter},          {"y", m.y.parameter},
+          {"phase", to_string(m.phase)}, {"model", to_string(m.contact)},
+          {"csv", base + ".csv"},        {"png", base + ".png"}};
+}
+
+// The Monte Carlo over the report's covariance: growth band and P(shimmy) of both phases for
+// the coupled model at the configuration.
+void print_tire_uncertainty(const ShimmyConfig& config, const TireInput& tire, unsigned threads,
+                            nlohmann::json& summary) {
+  const auto sd = [&](auto get) {
+    double m = 0, q = 0;
+    for (const TireLawCoefficients& d : tire.draws.draws) m += get(d);
+    m /= static_cast<double>(tire.draws.draws.size());
+    for (const TireLawCoefficients& d : tire.draws.draws) q += (get(d) - m) * (get(d) - m);
+    return std::sqrt(q /
+                     static_cast<double>(std::max<std::size_t>(tire.draws.draws.size() - 1, 1)));
+  };
+  const TireLawCoefficients& t = tire.mean;
+  std::printf(
+      "\ntire law from %s: a = %.4g +- %.2g, m = %.4g +- %.2g, kx = %.4g +- %.2g, M0/(F0 R) = "
+      "%.4g +- %.2g (%zu draws, %d redrawn)\n",
+      tire.path.c_str(), t.a, sd([](const TireLawCoefficients& d) { return d.a; }), t.m,
+      sd([](const TireLawCoefficients& d) { return d.m; }), t.kx,
+      sd([](const TireLawCoefficients& d) { return d.kx; }), t.spin_ratio,
+      sd([](const TireLawCoefficients& d) { return d.spin_ratio; }), tire.draws.draws.size(),
+      tire.draws.rejected);
+  std::printf("%-13s %-13s %14s %22s %10s\n", "model", "phase", "median[1/s]", "95 % band [1/s]",
+              "P(shimmy)");
+  const GearModel base = make_gear_model(config.gear, ContactModel::coupled);
+  nlohmann::json j;
+  for (StabilityPhase phase : {StabilityPhase::touchdown, StabilityPhase::braked_slide}) {
+    const std::string label = std::string("monte carlo ") + to_string(phase);
+    const GrowthBand b =
+        growth_band(base, tire.draws.draws, phase, threads,
+                    [&](int done, int total) { progress_bar(label, done, total); });
+    std::printf("%-13s %-13s %14.3f      [%7.3f, %7.3f] %10.3f\n", "coupled", to_string(phase),
+                b.median, b.low, b.high, b.shimmy_probability);
+    j[to_string(phase)] = {{"median_growth_rate_per_s", b.median},
+                           {"band95_per_s", {b.low, b.high}},
+                           {"shimmy_probability", b.shimmy_probability},
+                           {"draws", b.draws}};
+  }
+  j["report"] = tire.path;
+  j["draws"] = tire.draws.draws.size();
+  j["redrawn"] = tire.draws.rejected;
+  j["mean_law"] = {{"a", t.a}, {"m", t.m}, {"kx", t.kx}, {"spin_ratio", t.spin_ratio}};
+  summary["tire_uncertainty"] = j;
+}
+
 int run(const ShimmyConfig& config, const std::string& out, bool maps, int map_size,
-        unsigned threads) {
+        unsigned threads, const TireInput* tire) {
   std::filesystem::create_directories(out);
   nlohmann::json summary;
   std::vector<LandingRun> runs;
   std::printf("%-13s %6s %9s %10s %11s %11s %9s %7s %9s %8s\n", "model", "shimmy", "freq[Hz]",
               "growth[1/s]", "peak psi", "peak y[m]", "spinup[s]", "steps", "wall[ms]", "conv");
   for (ContactModel cm : config.models) {
-    const GearModel model = make_gear_model(config.gear, cm);
+    const GearModel model = gear_model(config, cm, tire);
     LandingRun r = simulate_landing(model, config.solver, config.criterion);
     // Convergence: the same landing at a 100 times tighter tolerance.
     SolverOptions tight = config.solver;
@@ -208,23 +406,40 @@ int run(const ShimmyConfig& config, const std::string& out, bool maps, int map_s
                    to_string(cm), d_growth, 100 * d_peak);
     runs.push_back(std::move(r));
   }
+  print_stability(config, runs, tire, summary);
+  if (tire) print_tire_uncertainty(config, *tire, threads, summary);
+  summary["gear"] = config.gear_name;
   summary["analysis_window_s"] = {runs.front().window_start_s, runs.front().window_end_s};
   summary["configuration"] = to_json(config);
   draw_histories(out, runs);
 
   if (maps) {
-    for (const auto& [x0, y0] : config.maps) {
-      MapAxis x = x0, y = y0;
+    for (const MapSpec& spec : config.maps) {
+      MapAxis x = spec.x, y = spec.y;
       if (map_size > 0) x.points = y.points = map_size;
       for (ContactModel cm : config.models) {
-        const GearModel model = make_gear_model(config.gear, cm);
+        const GearModel model = gear_model(config, cm, tire);
         const std::string label = std::string(to_string(cm)) + " " + short_name(x.parameter) +
                                   " x " + short_name(y.parameter);
+        const auto bar = [&](int done, int total) { progress_bar(label, done, total); };
         const StabilityMap m =
-            stability_map(model, x, y, config.solver, config.criterion, threads,
-                          [&](int done, int total) { progress_bar(label, done, total); });
+            spec.method == "simulation"
+                ? stability_map(model, x, y, config.solver, config.criterion, threads, bar)
+                : linear_stability_map(model, x, y, spec.phase, threads, bar);
         summary["maps"].push_back(write_map(out, m));
         summary["maps"].back()["model"] = to_string(cm);
+        if (tire && cm == ContactModel::coupled && spec.method != "simulation") {
+          // A draw per cell costs a linearisation: at most 25 x 25 cells unless --map-size.
+          MapAxis px = x, py = y;
+          if (map_size <= 0) {
+            px.points = std::min(px.points, 25);
+            py.points = std::min(py.points, 25);
+          }
+          const StabilityMap p = probability_map(
+              make_gear_model(config.gear, cm), px, py, spec.phase, tire->draws.draws, threads,
+              [&](int done, int total) { progress_bar("P(shimmy) " + label, done, total); });
+          summary["probability_maps"].push_back(write_probability_map(out, p));
+        }
       }
     }
   }
@@ -240,12 +455,20 @@ int main(int argc, char** argv) {
       "A one-wheel main landing gear through touchdown, sliding and spin-up: shimmy "
       "with coupled, decoupled and nonholonomic tire contact (docs/shimmy.md)",
       kName};
-  std::string config_path, out = "out/shimmy";
+  std::string config_path, out = "out/shimmy", gear = "default";
   bool maps = false, print_config = false;
   int map_size = 0;
   unsigned threads = 0;
+  std::string tire_path;
+  int draws = 300;
+  unsigned seed = 1;
   app.add_option("--config", config_path, "JSON configuration (defaults: docs/shimmy.md)")
       ->check(CLI::ExistingFile);
+  app.add_option("--gear", gear,
+                 "named gear the configuration starts from: default (classically stable with a "
+                 "margin of 1.4) or legacy (the gear of issue 5)")
+      ->check(CLI::IsMember({"default", "legacy"}))
+      ->capture_default_str();
   app.add_option("--out", out, "output directory")->capture_default_str();
   app.add_flag("--map", maps, "also draw the stability maps of the configuration");
   app.add_option("--map-size", map_size, "points per map axis (overrides the configuration)")
@@ -253,15 +476,37 @@ int main(int argc, char** argv) {
   app.add_option("--threads", threads, "threads for the maps (0: all cores)")
       ->capture_default_str();
   app.add_flag("--print-config", print_config, "print the configuration as JSON and exit");
+  app.add_option("--tire", tire_path,
+                 "a contensou-identify report (--json): its fitted law is the tire, and a Monte "
+                 "Carlo over its covariance gives the growth rate's 95 % band and P(shimmy)")
+      ->check(CLI::ExistingFile);
+  app.add_option("--draws", draws, "Monte Carlo draws for --tire")
+      ->check(CLI::Range(10, 100000))
+      ->capture_default_str();
+  app.add_option("--seed", seed, "random seed of the draws")->capture_default_str();
   CLI11_PARSE(app, argc, argv);
   try {
     ShimmyConfig config;
-    if (!config_path.empty()) config = read_shimmy_config(config_path);
+    config.gear_name = gear;
+    config.gear = gear_config_by_name(gear);
+    if (!config_path.empty()) config = read_shimmy_config(config_path, gear);
     if (print_config) {
       std::cout << to_json(config).dump(2) << '\n';
       return 0;
     }
-    return run(config, out, maps, map_size, threads);
+    std::optional<TireInput> tire;
+    if (!tire_path.empty()) {
+      tire.emplace();
+      tire->path = tire_path;
+      tire->distribution = read_tire_report(tire_path);
+      tire->mean = tire_law_coefficients(tire->distribution.mean, tire->distribution.radius_m);
+      try {
+        tire->draws = draw_tire_laws(tire->distribution, draws, seed);
+      } catch (const InvalidArgument& e) {
+        throw std::runtime_error("--tire " + tire_path + ": " + e.what());
+      }
+    }
+    return run(config, out, maps, map_size, threads, tire ? &*tire : nullptr);
   } catch (const std::exception& e) {
     std::fprintf(stderr, "%s: %s\n", kName, e.what());
     return 1;

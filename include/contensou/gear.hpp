@@ -1,10 +1,13 @@
 // The gear module (target contensou::gear, SUNDIALS CVODE): the one-wheel main landing gear
-// with its contact models, the landing simulation, oscillation analysis and stability maps
-// (docs/shimmy.md). Includes the friction module.
+// with its contact models, the landing simulation, oscillation analysis, stability by eigenvalues,
+// stability maps and the tire-uncertainty Monte Carlo (docs/shimmy.md). Includes the friction
+// module.
 #pragma once
 
 #include "contensou/friction.hpp"
 #include "contensou/gear/landing_gear.hpp"
 #include "contensou/gear/landing_simulation.hpp"
+#include "contensou/gear/linear_stability.hpp"
 #include "contensou/gear/oscillation.hpp"
 #include "contensou/gear/stability_map.hpp"
+#include "contensou/gear/tire_uncertainty.hpp"

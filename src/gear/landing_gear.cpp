@@ -1,9 +1,11 @@
 #include "contensou/gear/landing_gear.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <numbers>
 #include <string_view>
+#include <utility>
 
 #include "contensou/friction/error.hpp"
 #include "contensou/friction/exact_resultants.hpp"
@@ -43,6 +45,21 @@ void validate(const GearConfig& c) {
   require_finite("structure.offset_m", g.offset_m);
   require_positive("structure.wheel_radius_m", g.wheel_radius_m);
   require_positive("structure.wheel_inertia_kgm2", g.wheel_inertia_kgm2);
+  if (!(g.fore_aft_stiffness_n_per_m >= 0.0 && g.fore_aft_stiffness_n_per_m < 1e12))
+    throw InvalidArgument("structure.fore_aft_stiffness_n_per_m",
+                          format_value(g.fore_aft_stiffness_n_per_m),
+                          "must be >= 0 and finite (0: no fore-aft bending)");
+  require_positive("structure.fore_aft_mass_kg", g.fore_aft_mass_kg);
+  require_finite("structure.fore_aft_damping_ns_per_m", g.fore_aft_damping_ns_per_m);
+  if (!(g.wheel_spacing_m >= 0.0 && g.wheel_spacing_m < 100.0))
+    throw InvalidArgument("structure.wheel_spacing_m", format_value(g.wheel_spacing_m),
+                          "must be >= 0 and finite (0: one wheel)");
+  if (!(g.freeplay_rad >= 0.0 && g.freeplay_rad < 1.0))
+    throw InvalidArgument("structure.freeplay_rad", format_value(g.freeplay_rad),
+                          "must lie in [0, 1) rad (0: no freeplay)");
+  if (!(g.gyroscopic_length_m >= 0.0 && g.gyroscopic_length_m < 1e6))
+    throw InvalidArgument("structure.gyroscopic_length_m", format_value(g.gyroscopic_length_m),
+                          "must be >= 0 and finite (0: no gyroscopic coupling)");
 
   const SlidingTire& t = c.tire;
   require_positive("tire.inflation_pressure_pa", t.inflation_pressure_pa);
@@ -150,6 +167,8 @@ GearState initial_state(const GearModel& model) {
   x[kY] = model.config.scenario.initial_lateral_m;
   if (model.contact == ContactModel::nonholonomic)
     x[kSpin] = model.config.scenario.forward_speed_mps / model.config.structure.wheel_radius_m;
+  if (model.contact == ContactModel::nonholonomic && model.config.structure.wheel_spacing_m > 0.0)
+    x[kSpin2] = x[kSpin];
   return x;
 }
 
@@ -164,8 +183,27 @@ GearMode initial_mode(const GearModel& model) {
 
 namespace {
 
-// Sliding friction on the tire from the chosen law. N, R and f fix the law's scales:
+// The vector fractional law of the coupled model at load N, patch radius R and friction f:
 // F0 = f N, M0 = f N R A^2/A^1, Mk = f N R A^3 / (2 A^1) (theory.md section 4).
+FractionalLaw<double> coupled_law(const GearModel& model, double N, double R, double f) {
+  const SlidingTire& tire = model.config.tire;
+  FractionalLaw<double> law;
+  law.F0 = f * N;
+  law.M0 = f * N * R * model.moment_ratio_2;
+  law.Mk = 0.5 * f * N * R * model.moment_ratio_3;
+  law.a = model.law_a;
+  law.m = model.law_m;
+  law.c = model.law_c;
+  law.a_k = model.law_a_k;
+  law.kx = tire.rolling_shift;
+  law.ky = 0.0;
+  law.kappa = 1.0;
+  law.radius = R;
+  law.regularization_speed = tire.regularization_speed;
+  return law;
+}
+
+// Sliding friction on the tire from the chosen law at load N, patch radius R and friction f.
 Resultants<double> sliding_friction(const GearModel& model, const Kinematics<double>& k, double N,
                                     double R, double f) {
   const SlidingTire& tire = model.config.tire;
@@ -186,72 +224,285 @@ Resultants<double> sliding_friction(const GearModel& model, const Kinematics<dou
             .resultants;
     return {scale * r.Fx, scale * r.Fy, scale * R * r.Mz};
   }
-  FractionalLaw<double> law;
-  law.F0 = f * N;
-  law.M0 = f * N * R * model.moment_ratio_2;
-  law.Mk = 0.5 * f * N * R * model.moment_ratio_3;
-  law.a = model.law_a;
-  law.m = model.law_m;
-  law.c = model.law_c;
-  law.a_k = model.law_a_k;
-  law.kx = tire.rolling_shift;
-  law.ky = 0.0;
-  law.kappa = 1.0;
-  law.radius = R;
-  law.regularization_speed = eps;
-  return fractional_resultants(law, k);
+  return fractional_resultants(coupled_law(model, N, R, f), k);
+}
+
+// The torsional spring's deflection d(psi) across the torque-link freeplay and its slope
+// (landing_gear.hpp, GearStructure::freeplay_rad).
+std::pair<double, double> freeplay_deflection(double psi, double delta) {
+  if (!(delta > 0.0)) return {psi, 1.0};
+  const double s = delta / 20.0;
+  const double a = psi - delta, b = psi + delta;
+  const double ra = std::sqrt(a * a + s * s), rb = std::sqrt(b * b + s * s);
+  return {0.5 * (a + ra) + 0.5 * (b - rb), 0.5 * (1.0 + a / ra) + 0.5 * (1.0 - b / rb)};
+}
+
+// g = I_w Omega / L, zero without a gyroscopic length.
+double gyroscopic_coefficient(const GearStructure& g, double spin) {
+  return g.gyroscopic_length_m > 0.0 ? g.wheel_inertia_kgm2 * spin / g.gyroscopic_length_m : 0.0;
+}
+
+// Effective slip speed of the sliding patch, (v^2 + (2 u / 3)^2)^(1/2): the mean local slip
+// speed's two limits (docs/shimmy.md); f(w) of SlipSpeedFriction.
+double sliding_slip_speed(const Kinematics<double>& k, double R) {
+  const double u = k.omega * R;
+  return std::sqrt(k.vx * k.vx + k.vy * k.vy + 4.0 / 9.0 * u * u);
+}
+
+// df/dw of f(w) = f_k + (f_s - f_k) exp(-(w / w_s)^delta).
+double friction_slope(const SlipSpeedFriction<double>& law, double w) {
+  if (!(w > 0.0)) return 0.0;
+  const double z = w / law.reference_speed;
+  const double zd = std::pow(z, law.exponent);
+  return -(law.static_coefficient - law.kinetic_coefficient) * std::exp(-zd) * law.exponent * zd /
+         w;
+}
+
+// The friction on the tire from the patch kinematics cs.slip (and slip_ratio), the string's
+// deflection lambda, at cs.load_n > 0 and cs.patch_radius_m; fills cs.force and cs.friction.
+void contact_forces(const GearModel& model, bool rolling, double lambda, ContactState& cs) {
+  const GearConfig& c = model.config;
+  const double V = c.scenario.forward_speed_mps;
+  const double N = cs.load_n, R = cs.patch_radius_m;
+  if (rolling) {
+    // Stretched string with combined slip on a friction circle (landing_gear.hpp, RollingTire).
+    const RollingTire& rt = c.rolling;
+    const double alpha = lambda / rt.relaxation_length_m;
+    const double w = std::sqrt(cs.slip.vx * cs.slip.vx + V * V * alpha * alpha);
+    const double mu = friction_at(c.tire.friction, w);
+    const double dx = -rt.longitudinal_slip_coefficient * cs.slip_ratio * N;
+    const double dy = rt.cornering_coefficient * alpha * N;
+    const double demand = std::hypot(dx, dy), cap = mu * N;
+    // cap tanh(D / cap) / D -> 1 - (D / cap)^2 / 3 for small D.
+    const double z = demand / cap;
+    const double use = z > 1e-4 ? std::tanh(z) / z : 1.0 - z * z / 3.0;
+    cs.friction = mu;
+    cs.force.Fx = dx * use;
+    cs.force.Fy = dy * use;
+    cs.force.Mz = -rt.aligning_coefficient_m / rt.cornering_coefficient * cs.force.Fy -
+                  rt.tread_moment_nm2_per_rad * (N / c.scenario.static_load_n) * cs.slip.omega / V;
+    return;
+  }
+  cs.friction = friction_at(c.tire.friction, sliding_slip_speed(cs.slip, R));
+  cs.force = sliding_friction(model, cs.slip, N, R, cs.friction);
 }
 
 }  // namespace
 
-ContactState contact_state(const GearModel& model, const GearMode& mode, double t,
-                           const GearState& x) {
+namespace {
+
+// One wheel's contact: its patch state, its lateral offset l_i and its spin state.
+struct WheelContact {
+  ContactState cs;
+  double offset = 0.0;
+  int spin = kSpin;
+};
+
+// The wheels of the gear (landing_gear.hpp, GearStructure::wheel_spacing_m): one at the offset
+// l, or two at l + b/2 and l - b/2 that share the load; each with its patch kinematics, load,
+// patch radius, anti-skid brake torque and friction. Returns the number of wheels.
+int wheel_contacts(const GearModel& model, const GearMode& mode, double t, const GearState& x,
+                   std::array<WheelContact, 2>& wheels) {
   const GearConfig& c = model.config;
   const GearStructure& g = c.structure;
   const LandingScenario& s = c.scenario;
   const double V = s.forward_speed_mps;
   const double cp = std::cos(x[kPsi]), sp = std::sin(x[kPsi]);
   const double lateral = x[kYDot] + s.drift_speed_mps;
-  ContactState cs;
-  cs.slip.vx = V * cp + lateral * sp - g.offset_m * x[kPsiDot] - x[kSpin] * g.wheel_radius_m;
-  cs.slip.vy = -V * sp + lateral * cp - g.trail_m * x[kPsiDot];
-  cs.slip.omega = x[kPsiDot];
-  cs.slip_ratio = cs.slip.vx / V;
-  cs.load_n = mode.loaded ? vertical_load(s, t) : 0.0;
+  const int n = g.wheel_spacing_m > 0.0 ? 2 : 1;
+  const double load = mode.loaded ? vertical_load(s, t) / n : 0.0;
   // R = sqrt(N / (2 pi p* A^1)), floored so that the law stays defined at zero load.
   const auto radius = [&](double N) {
     return std::sqrt(N / (2.0 * std::numbers::pi * c.tire.inflation_pressure_pa * model.moment_1));
   };
-  cs.patch_radius_m = std::max(radius(cs.load_n), 1e-3 * radius(s.static_load_n));
-  // Anti-skid: the brake sees the wheel-speed slip 1 - Omega r / V (a wheel tachometer),
-  // not the patch's sliding, which also carries -l psi' / V.
-  if (mode.brake_command) {
-    const double wheel_slip = 1.0 - x[kSpin] * g.wheel_radius_m / V;
-    const double z = (wheel_slip - s.brake_target_slip) / s.brake_slip_band;
-    cs.brake_torque_nm = s.brake_max_torque_nm / (1.0 + std::exp(std::clamp(z, -50.0, 50.0)));
+  // The wheel's ground speed along X is V + x' (fore-aft bending; x' = 0 when it is off).
+  const double forward = V + x[kXDot];
+  for (int i = 0; i < n; ++i) {
+    WheelContact& w = wheels[static_cast<std::size_t>(i)];
+    w = WheelContact{};
+    w.offset = n == 1 ? g.offset_m : g.offset_m + (i == 0 ? 0.5 : -0.5) * g.wheel_spacing_m;
+    w.spin = i == 0 ? kSpin : kSpin2;
+    ContactState& cs = w.cs;
+    cs.slip.vx = forward * cp + lateral * sp - w.offset * x[kPsiDot] - x[w.spin] * g.wheel_radius_m;
+    cs.slip.vy = -forward * sp + lateral * cp - g.trail_m * x[kPsiDot];
+    cs.slip.omega = x[kPsiDot];
+    cs.slip_ratio = cs.slip.vx / V;
+    cs.load_n = load;
+    cs.patch_radius_m = std::max(radius(load), 1e-3 * radius(s.static_load_n / n));
+    // Anti-skid: the brake sees the wheel-speed slip 1 - Omega r / V (a wheel tachometer),
+    // not the patch's sliding, which also carries -l psi' / V.
+    if (mode.brake_command) {
+      const double wheel_slip = 1.0 - x[w.spin] * g.wheel_radius_m / V;
+      const double z = (wheel_slip - s.brake_target_slip) / s.brake_slip_band;
+      cs.brake_torque_nm = s.brake_max_torque_nm / (1.0 + std::exp(std::clamp(z, -50.0, 50.0)));
+    }
+    if (load > 0.0) contact_forces(model, mode.rolling, x[kLambda], cs);
   }
-  if (cs.load_n <= 0.0) return cs;
+  return n;
+}
 
-  const double N = cs.load_n, R = cs.patch_radius_m;
-  if (mode.rolling) {
-    const RollingTire& rt = c.rolling;
-    const double mu = c.tire.friction.static_coefficient;
-    const double alpha = x[kLambda] / rt.relaxation_length_m;
-    const double lateral_use = std::tanh(rt.cornering_coefficient * alpha / mu);
-    cs.friction = mu;
-    cs.force.Fx = -mu * N * std::tanh(rt.longitudinal_slip_coefficient * cs.slip_ratio / mu);
-    cs.force.Fy = mu * N * lateral_use;
-    cs.force.Mz = -rt.aligning_coefficient_m * N * (mu / rt.cornering_coefficient) * lateral_use -
-                  rt.tread_moment_nm2_per_rad * (N / s.static_load_n) * x[kPsiDot] / V;
+}  // namespace
+
+ContactState contact_state(const GearModel& model, const GearMode& mode, double t,
+                           const GearState& x) {
+  std::array<WheelContact, 2> wheels;
+  const int n = wheel_contacts(model, mode, t, x, wheels);
+  if (n == 1) {
+    ContactState cs = wheels[0].cs;
+    cs.wheel_fx_n = {cs.force.Fx, 0.0};
+    cs.wheel_brake_nm = {cs.brake_torque_nm, 0.0};
     return cs;
   }
-  // Effective slip speed of the patch, (v^2 + (2 u / 3)^2)^(1/2): the mean local slip speed's
-  // two limits (docs/shimmy.md); f(w) of SlipSpeedFriction.
-  const double u = x[kPsiDot] * R;
-  const double w = std::sqrt(cs.slip.vx * cs.slip.vx + cs.slip.vy * cs.slip.vy + 4.0 / 9.0 * u * u);
-  cs.friction = friction_at(c.tire.friction, w);
-  cs.force = sliding_friction(model, cs.slip, N, R, cs.friction);
+  // Twin: the mean kinematics and friction, the summed load and forces, the moment about the
+  // midpoint between the patches, sum (Mz_i - (l_i - l) Fx_i); the patch radius of one wheel.
+  ContactState cs = wheels[0].cs;
+  const ContactState& b = wheels[1].cs;
+  cs.slip.vx = 0.5 * (cs.slip.vx + b.slip.vx);
+  cs.slip_ratio = 0.5 * (cs.slip_ratio + b.slip_ratio);
+  cs.friction = 0.5 * (cs.friction + b.friction);
+  cs.load_n += b.load_n;
+  const double l = model.config.structure.offset_m;
+  cs.force.Mz = cs.force.Mz - (wheels[0].offset - l) * cs.force.Fx + b.force.Mz -
+                (wheels[1].offset - l) * b.force.Fx;
+  cs.wheel_fx_n = {cs.force.Fx, b.force.Fx};
+  cs.wheel_brake_nm = {cs.brake_torque_nm, b.brake_torque_nm};
+  cs.force.Fx += b.force.Fx;
+  cs.force.Fy += b.force.Fy;
+  cs.brake_torque_nm += b.brake_torque_nm;
   return cs;
+}
+
+GearJacobian gear_jacobian(const GearModel& model, const GearMode& mode, double t,
+                           const GearState& x) {
+  const GearConfig& c = model.config;
+  const GearStructure& g = c.structure;
+  const LandingScenario& s = c.scenario;
+  const double V = s.forward_speed_mps, r = g.wheel_radius_m;
+  const ContactState cs = contact_state(model, mode, t, x);
+  const double cp = std::cos(x[kPsi]), sp = std::sin(x[kPsi]);
+  const double lateral = x[kYDot] + s.drift_speed_mps;
+  std::array<WheelContact, 2> wheels;
+  const int n = wheel_contacts(model, mode, t, x, wheels);
+
+  // d(vx, vy, omega, lambda)/dx (kinematics of landing_gear.hpp); the offset and spin columns
+  // are the wheel's.
+  Eigen::Matrix<double, 4, kStateSize> D = Eigen::Matrix<double, 4, kStateSize>::Zero();
+  const double forward = V + x[kXDot];
+  D(0, kYDot) = sp;
+  D(0, kPsi) = -forward * sp + lateral * cp;
+  D(0, kXDot) = cp;
+  D(1, kYDot) = cp;
+  D(1, kPsi) = -forward * cp - lateral * sp;
+  D(1, kXDot) = -sp;
+  D(1, kPsiDot) = -g.trail_m;
+  D(2, kPsiDot) = 1.0;
+  D(3, kLambda) = 1.0;
+
+  // dF: rows Fx, Fy, Mz of the gear's resultant (moment about the midpoint for a twin);
+  // dFx_wheel: each wheel's drag.
+  Eigen::Matrix<double, 3, kStateSize> dF = Eigen::Matrix<double, 3, kStateSize>::Zero();
+  std::array<Eigen::Matrix<double, 1, kStateSize>, 2> dFx_wheel{};
+  for (int i = 0; i < n; ++i) {
+    const WheelContact& wc = wheels[static_cast<std::size_t>(i)];
+    const ContactState& w = wc.cs;
+    // K = d(Fx, Fy, Mz)/d(vx, vy, omega, lambda) of the contact law at fixed load and patch.
+    Eigen::Matrix<double, 3, 4> K = Eigen::Matrix<double, 3, 4>::Zero();
+    if (w.load_n > 0.0) {
+      if (!mode.rolling && model.contact == ContactModel::coupled && !model.exact) {
+        // F = f(w) G(v, omega): the law's analytic Jacobian at fixed f, plus G f'(w) grad w.
+        const double R = w.patch_radius_m;
+        const FractionalWithJacobian law = fractional_resultants_with_jacobian(
+            coupled_law(model, w.load_n, R, w.friction), w.slip);
+        K.leftCols<3>() = law.jacobian;
+        const double speed = sliding_slip_speed(w.slip, R);
+        if (speed > 0.0) {
+          const double slope = friction_slope(c.tire.friction, speed) / w.friction;
+          const Eigen::Vector3d grad_w(w.slip.vx / speed, w.slip.vy / speed,
+                                       4.0 / 9.0 * w.slip.omega * R * R / speed);
+          const Eigen::Vector3d F(law.resultants.Fx, law.resultants.Fy, law.resultants.Mz);
+          K.leftCols<3>() += slope * F * grad_w.transpose();
+        }
+      } else {
+        // Forward differences of the law in its four inputs (one evaluation each).
+        const Eigen::Vector3d F0(w.force.Fx, w.force.Fy, w.force.Mz);
+        const int inputs = mode.rolling ? 4 : 3;
+        for (int j = 0; j < inputs; ++j) {
+          ContactState p = w;
+          double lambda = x[kLambda];
+          double* v = j == 0 ? &p.slip.vx : j == 1 ? &p.slip.vy : j == 2 ? &p.slip.omega : &lambda;
+          const double h =
+              j == 3 ? 1e-7 * std::max(std::abs(lambda), 1e-3) : 1e-7 * std::max(std::abs(*v), 1.0);
+          *v += h;
+          p.slip_ratio = p.slip.vx / V;
+          contact_forces(model, mode.rolling, lambda, p);
+          K.col(j) = (Eigen::Vector3d(p.force.Fx, p.force.Fy, p.force.Mz) - F0) / h;
+        }
+      }
+    }
+    Eigen::Matrix<double, 4, kStateSize> Di = D;
+    Di(0, kPsiDot) = -wc.offset;
+    Di(0, wc.spin) = -r;
+    const Eigen::Matrix<double, 3, kStateSize> dFi = K * Di;
+    dFx_wheel[static_cast<std::size_t>(i)] = dFi.row(0);
+    dF.row(0) += dFi.row(0);
+    dF.row(1) += dFi.row(1);
+    dF.row(2) += dFi.row(2) - (n == 1 ? 0.0 : wc.offset - g.offset_m) * dFi.row(0);
+  }
+
+  GearJacobian J = GearJacobian::Zero();
+  const Resultants<double>& F = cs.force;
+  J(kY, kYDot) = 1.0;
+  J.row(kYDot) = (dF.row(0) * sp + dF.row(1) * cp) / g.lateral_mass_kg;
+  J(kYDot, kPsi) += (F.Fx * cp - F.Fy * sp) / g.lateral_mass_kg;
+  J(kYDot, kY) -= g.lateral_stiffness_n_per_m / g.lateral_mass_kg;
+  J(kYDot, kYDot) -= g.lateral_damping_ns_per_m / g.lateral_mass_kg;
+  J(kPsi, kPsiDot) = 1.0;
+  J.row(kPsiDot) =
+      (dF.row(2) - g.trail_m * dF.row(1) - g.offset_m * dF.row(0)) / g.torsional_inertia_kgm2;
+  J(kPsiDot, kPsi) -= g.torsional_stiffness_nm_per_rad *
+                      freeplay_deflection(x[kPsi], g.freeplay_rad).second /
+                      g.torsional_inertia_kgm2;
+  J(kPsiDot, kPsiDot) -= g.torsional_damping_nms_per_rad / g.torsional_inertia_kgm2;
+  // Each wheel: I_w Omega_i' = -r Fx_i - T_i(Omega_i) tanh(Omega_i), with
+  // T = T_max / (1 + e^z), z = (1 - Omega r / V - s*) / ds.
+  for (int i = 0; i < n; ++i) {
+    const WheelContact& wc = wheels[static_cast<std::size_t>(i)];
+    J.row(wc.spin) = -r * dFx_wheel[static_cast<std::size_t>(i)] / g.wheel_inertia_kgm2;
+    const double th = std::tanh(x[wc.spin]);
+    double dT = 0.0;
+    if (mode.brake_command) {
+      const double z = (1.0 - x[wc.spin] * r / V - s.brake_target_slip) / s.brake_slip_band;
+      if (std::abs(z) < 50.0) {
+        const double ez = std::exp(z);
+        dT = s.brake_max_torque_nm * ez / ((1.0 + ez) * (1.0 + ez)) * r / (V * s.brake_slip_band);
+      }
+    }
+    J(wc.spin, wc.spin) -=
+        (dT * th + wc.cs.brake_torque_nm * (1.0 - th * th)) / g.wheel_inertia_kgm2;
+  }
+  if (g.fore_aft_stiffness_n_per_m > 0.0) {
+    J(kX, kXDot) = 1.0;
+    J.row(kXDot) = (dF.row(0) * cp - dF.row(1) * sp) / g.fore_aft_mass_kg;
+    J(kXDot, kPsi) += (-F.Fx * sp - F.Fy * cp) / g.fore_aft_mass_kg;
+    J(kXDot, kX) -= g.fore_aft_stiffness_n_per_m / g.fore_aft_mass_kg;
+    J(kXDot, kXDot) -= g.fore_aft_damping_ns_per_m / g.fore_aft_mass_kg;
+  }
+  if (g.gyroscopic_length_m > 0.0) {
+    const double gyro = gyroscopic_coefficient(g, x[kSpin] + x[kSpin2]);
+    const double dgyro = g.wheel_inertia_kgm2 / g.gyroscopic_length_m;  // d g / d Omega_i
+    J(kYDot, kPsiDot) += gyro / g.lateral_mass_kg;
+    J(kPsiDot, kYDot) -= gyro / g.torsional_inertia_kgm2;
+    for (int spin : {static_cast<int>(kSpin), static_cast<int>(kSpin2)}) {
+      J(kYDot, spin) += dgyro * x[kPsiDot] / g.lateral_mass_kg;
+      J(kPsiDot, spin) -= dgyro * x[kYDot] / g.torsional_inertia_kgm2;
+    }
+  }
+  if (mode.rolling && mode.loaded) {
+    J.row(kLambda) = -D.row(1);
+    J(kLambda, kPsiDot) -= cs.patch_radius_m;
+    J(kLambda, kLambda) -= V / c.rolling.relaxation_length_m;
+  }
+  return J;
 }
 
 GearState gear_rhs(const GearModel& model, const GearMode& mode, double t, const GearState& x) {
@@ -261,18 +512,27 @@ GearState gear_rhs(const GearModel& model, const GearMode& mode, double t, const
   const Resultants<double>& F = cs.force;
   const double cp = std::cos(x[kPsi]), sp = std::sin(x[kPsi]);
   GearState dx;
+  // Gyroscopic coupling g = I_w Omega / L (landing_gear.hpp, GearStructure).
+  const double gyro = gyroscopic_coefficient(g, x[kSpin] + x[kSpin2]);  // both wheels' spin
   dx[kY] = x[kYDot];
   dx[kYDot] = (-g.lateral_stiffness_n_per_m * x[kY] - g.lateral_damping_ns_per_m * x[kYDot] +
-               F.Fx * sp + F.Fy * cp) /
+               F.Fx * sp + F.Fy * cp + gyro * x[kPsiDot]) /
               g.lateral_mass_kg;
   dx[kPsi] = x[kPsiDot];
   dx[kPsiDot] =
-      (-g.torsional_stiffness_nm_per_rad * x[kPsi] - g.torsional_damping_nms_per_rad * x[kPsiDot] +
-       F.Mz - g.trail_m * F.Fy - g.offset_m * F.Fx) /
+      (-g.torsional_stiffness_nm_per_rad * freeplay_deflection(x[kPsi], g.freeplay_rad).first -
+       g.torsional_damping_nms_per_rad * x[kPsiDot] + F.Mz - g.trail_m * F.Fy - g.offset_m * F.Fx -
+       gyro * x[kYDot]) /
       g.torsional_inertia_kgm2;
   // The brake torque opposes the spin; tanh(Omega / 1 rad/s) keeps it smooth through zero.
-  dx[kSpin] =
-      (-g.wheel_radius_m * F.Fx - cs.brake_torque_nm * std::tanh(x[kSpin])) / g.wheel_inertia_kgm2;
+  dx[kSpin] = (-g.wheel_radius_m * cs.wheel_fx_n[0] - cs.wheel_brake_nm[0] * std::tanh(x[kSpin])) /
+              g.wheel_inertia_kgm2;
+  // The second wheel of a twin gear (inert for one wheel).
+  dx[kSpin2] =
+      g.wheel_spacing_m > 0.0
+          ? (-g.wheel_radius_m * cs.wheel_fx_n[1] - cs.wheel_brake_nm[1] * std::tanh(x[kSpin2])) /
+                g.wheel_inertia_kgm2
+          : 0.0;
   // Stretched string (Somieski 1997): the leading point, a = R ahead of the patch centre,
   // does not slide; lambda relaxes over the relaxation length.
   if (mode.rolling && mode.loaded) {
@@ -281,6 +541,15 @@ GearState gear_rhs(const GearModel& model, const GearMode& mode, double t, const
                   V / model.config.rolling.relaxation_length_m * x[kLambda];
   } else {
     dx[kLambda] = 0.0;
+  }
+  // Fore-aft bending: the force at the patch along X, (Fx cos psi - Fy sin psi).
+  if (g.fore_aft_stiffness_n_per_m > 0.0) {
+    dx[kX] = x[kXDot];
+    dx[kXDot] = (-g.fore_aft_stiffness_n_per_m * x[kX] - g.fore_aft_damping_ns_per_m * x[kXDot] +
+                 F.Fx * cp - F.Fy * sp) /
+                g.fore_aft_mass_kg;
+  } else {
+    dx[kX] = dx[kXDot] = 0.0;
   }
   return dx;
 }
@@ -300,6 +569,12 @@ void for_each_parameter(GearConfig& c, F&& f) {
   f("structure.offset_m", g.offset_m);
   f("structure.wheel_radius_m", g.wheel_radius_m);
   f("structure.wheel_inertia_kgm2", g.wheel_inertia_kgm2);
+  f("structure.gyroscopic_length_m", g.gyroscopic_length_m);
+  f("structure.freeplay_rad", g.freeplay_rad);
+  f("structure.wheel_spacing_m", g.wheel_spacing_m);
+  f("structure.fore_aft_mass_kg", g.fore_aft_mass_kg);
+  f("structure.fore_aft_stiffness_n_per_m", g.fore_aft_stiffness_n_per_m);
+  f("structure.fore_aft_damping_ns_per_m", g.fore_aft_damping_ns_per_m);
   SlidingTire& t = c.tire;
   f("tire.inflation_pressure_pa", t.inflation_pressure_pa);
   f("tire.rolling_shift", t.rolling_shift);
@@ -351,12 +626,37 @@ std::vector<std::string> gear_parameter_names() {
   return names;
 }
 
-double string_deflection_for_force(const GearModel& model, double lateral_force_n, double load_n) {
-  if (load_n <= 0.0) return 0.0;
-  const RollingTire& rt = model.config.rolling;
-  const double mu = model.config.tire.friction.static_coefficient;
-  const double use = std::clamp(lateral_force_n / (mu * load_n), -0.99, 0.99);
-  return rt.relaxation_length_m * mu * std::atanh(use) / rt.cornering_coefficient;
+double string_deflection_for_force(const GearModel& model, double t, const GearState& x,
+                                   double lateral_force_n) {
+  const GearMode rolling{true, true, false};
+  GearState probe = x;
+  const auto force = [&](double lambda) {
+    probe[kLambda] = lambda;
+    return contact_state(model, rolling, t, probe).force.Fy;
+  };
+  if (contact_state(model, rolling, t, x).load_n <= 0.0) return 0.0;
+  // Fy(lambda) rises from 0 to its peak within a slip angle of a few mu / C_Fa; search up to
+  // alpha = 1 rad, and stop at the bracket's end if the force is out of reach.
+  const double sigma = model.config.rolling.relaxation_length_m;
+  double lo = 0.0, hi = std::copysign(sigma, lateral_force_n);
+  if (std::abs(force(hi)) < std::abs(lateral_force_n)) return hi;
+  for (int i = 0; i < 60; ++i) {
+    const double mid = 0.5 * (lo + hi);
+    (std::abs(force(mid)) < std::abs(lateral_force_n) ? lo : hi) = mid;
+  }
+  return 0.5 * (lo + hi);
+}
+
+GearConfig legacy_gear_config() {
+  GearConfig c;
+  c.structure.torsional_damping_nms_per_rad = 100.0;
+  return c;
+}
+
+GearConfig gear_config_by_name(const std::string& name) {
+  if (name == "default") return GearConfig{};
+  if (name == "legacy") return legacy_gear_config();
+  throw InvalidArgument("gear", name, "must be default or legacy");
 }
 
 }  // namespace contensou

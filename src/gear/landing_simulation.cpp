@@ -10,6 +10,7 @@
 #include <chrono>
 #include <cmath>
 #include <stdexcept>
+#include <vector>
 
 #include "contensou/friction/error.hpp"
 
@@ -34,24 +35,55 @@ namespace {
 
 enum Root : int { kLoadOnset = 0, kFullLoad, kSpinUp, kSliding, kBrakeOn, kBrakeOff, kRoots };
 
+// The states CVODE integrates: the optional ones (fore-aft x, x'; a twin's Omega2) only when
+// switched on, so that a one-wheel gear pays nothing for them.
 struct Problem {
   const GearModel* model;
   GearMode mode;
+  std::vector<int> active;
+  int size() const { return static_cast<int>(active.size()); }
 };
 
-GearState to_state(N_Vector v) {
-  GearState x;
-  for (int i = 0; i < kStateSize; ++i) x[i] = NV_Ith_S(v, i);
+std::vector<int> active_states(const GearModel& m) {
+  std::vector<int> a{kY, kYDot, kPsi, kPsiDot, kSpin, kLambda};
+  if (m.config.structure.fore_aft_stiffness_n_per_m > 0.0) {
+    a.push_back(kX);
+    a.push_back(kXDot);
+  }
+  if (m.config.structure.wheel_spacing_m > 0.0) a.push_back(kSpin2);
+  return a;
+}
+
+GearState to_state(const Problem& p, N_Vector v) {
+  GearState x = GearState::Zero();
+  for (int k = 0; k < p.size(); ++k) x[p.active[static_cast<std::size_t>(k)]] = NV_Ith_S(v, k);
   return x;
+}
+
+void from_state(const Problem& p, const GearState& x, N_Vector v) {
+  for (int k = 0; k < p.size(); ++k) NV_Ith_S(v, k) = x[p.active[static_cast<std::size_t>(k)]];
 }
 
 int rhs(sunrealtype t, N_Vector y, N_Vector ydot, void* data) {
   const Problem& p = *static_cast<const Problem*>(data);
-  const GearState dx = gear_rhs(*p.model, p.mode, t, to_state(y));
-  for (int i = 0; i < kStateSize; ++i) {
-    if (!std::isfinite(dx[i])) return 1;  // recoverable: CVODE retries with a smaller step
-    NV_Ith_S(ydot, i) = dx[i];
+  const GearState dx = gear_rhs(*p.model, p.mode, t, to_state(p, y));
+  for (int k = 0; k < p.size(); ++k) {
+    const double d = dx[p.active[static_cast<std::size_t>(k)]];
+    if (!std::isfinite(d)) return 1;  // recoverable: CVODE retries with a smaller step
+    NV_Ith_S(ydot, k) = d;
   }
+  return 0;
+}
+
+int jacobian(sunrealtype t, N_Vector y, N_Vector, SUNMatrix J, void* data, N_Vector, N_Vector,
+             N_Vector) {
+  const Problem& p = *static_cast<const Problem*>(data);
+  const GearJacobian A = gear_jacobian(*p.model, p.mode, t, to_state(p, y));
+  if (!A.allFinite()) return 1;  // recoverable
+  for (int j = 0; j < p.size(); ++j)
+    for (int i = 0; i < p.size(); ++i)
+      SM_ELEMENT_D(J, i, j) =
+          A(p.active[static_cast<std::size_t>(i)], p.active[static_cast<std::size_t>(j)]);
   return 0;
 }
 
@@ -60,7 +92,16 @@ int roots(sunrealtype t, N_Vector y, sunrealtype* g, void* data) {
   const Problem& p = *static_cast<const Problem*>(data);
   const LandingScenario& s = p.model->config.scenario;
   const bool switching = p.model->contact != ContactModel::nonholonomic;
-  const double ratio = contact_state(*p.model, p.mode, t, to_state(y)).slip_ratio;
+  // The patch's slip ratio vx / V from the kinematics alone (no friction law per event check).
+  const GearStructure& gs = p.model->config.structure;
+  const GearState x = to_state(p, y);
+  const double psi = x[kPsi], V = s.forward_speed_mps;
+  // A twin gear's mean wheel speed.
+  const double spin = gs.wheel_spacing_m > 0.0 ? 0.5 * (x[kSpin] + x[kSpin2]) : x[kSpin];
+  const double ratio =
+      ((V + x[kXDot]) * std::cos(psi) + (x[kYDot] + s.drift_speed_mps) * std::sin(psi) -
+       gs.offset_m * x[kPsiDot] - spin * gs.wheel_radius_m) /
+      V;
   g[kLoadOnset] = t - s.touchdown_time_s;
   g[kFullLoad] = t - (s.touchdown_time_s + s.load_ramp_s);
   g[kSpinUp] = switching && p.mode.loaded && !p.mode.rolling ? ratio - s.rolling_slip : 1.0;
@@ -126,24 +167,28 @@ LandingRun simulate_landing(const GearModel& model, const SolverOptions& options
   std::tie(run.window_start_s, run.window_end_s) = analysis_window(s);
   if (model.contact == ContactModel::nonholonomic) run.spin_up_s = 0.0;
 
-  Problem problem{&model, initial_mode(model)};
+  Problem problem{&model, initial_mode(model), active_states(model)};
+  const int n = problem.size();
   GearState x = initial_state(model);
   Cvode cv;
   check(SUNContext_Create(nullptr, &cv.ctx), "SUNContext_Create", 0.0);
-  cv.y = N_VNew_Serial(kStateSize, cv.ctx);
-  cv.atol = N_VNew_Serial(kStateSize, cv.ctx);
-  const std::array<double, kStateSize> scale{1e-3, 1e-1, 1e-3, 1e-1, 1e2, 1e-3};
-  for (int i = 0; i < kStateSize; ++i) {
-    NV_Ith_S(cv.y, i) = x[i];
-    NV_Ith_S(cv.atol, i) = options.relative_tolerance * scale[static_cast<std::size_t>(i)];
+  cv.y = N_VNew_Serial(n, cv.ctx);
+  cv.atol = N_VNew_Serial(n, cv.ctx);
+  const std::array<double, kStateSize> scale{1e-3, 1e-1, 1e-3, 1e-1, 1e2, 1e-3, 1e-3, 1e-1, 1e2};
+  from_state(problem, x, cv.y);
+  for (int k = 0; k < n; ++k) {
+    NV_Ith_S(cv.atol, k) =
+        options.relative_tolerance *
+        scale[static_cast<std::size_t>(problem.active[static_cast<std::size_t>(k)])];
   }
   cv.mem = CVodeCreate(CV_BDF, cv.ctx);
   double t = 0.0;
   check(CVodeInit(cv.mem, rhs, t, cv.y), "CVodeInit", t);
   check(CVodeSVtolerances(cv.mem, options.relative_tolerance, cv.atol), "CVodeSVtolerances", t);
-  cv.A = SUNDenseMatrix(kStateSize, kStateSize, cv.ctx);
+  cv.A = SUNDenseMatrix(n, n, cv.ctx);
   cv.LS = SUNLinSol_Dense(cv.y, cv.A, cv.ctx);
   check(CVodeSetLinearSolver(cv.mem, cv.LS, cv.A), "CVodeSetLinearSolver", t);
+  if (options.analytic_jacobian) check(CVodeSetJacFn(cv.mem, jacobian), "CVodeSetJacFn", t);
   check(CVodeSetUserData(cv.mem, &problem), "CVodeSetUserData", t);
   check(CVodeSetMaxNumSteps(cv.mem, options.max_steps), "CVodeSetMaxNumSteps", t);
   check(CVodeRootInit(cv.mem, kRoots, roots), "CVodeRootInit", t);
@@ -154,8 +199,9 @@ LandingRun simulate_landing(const GearModel& model, const SolverOptions& options
   std::vector<LandingSample> window;
   double peak_torsion = 0.0, peak_lateral = 0.0;
   auto record = [&](double time) {
-    LandingSample sample{time, to_state(cv.y), {}, problem.mode.rolling};
-    sample.contact = contact_state(model, problem.mode, time, sample.x);
+    LandingSample sample{time, to_state(problem, cv.y), {}, problem.mode.rolling};
+    // The contact is kept for the time histories only; the analysis needs the state alone.
+    if (options.record) sample.contact = contact_state(model, problem.mode, time, sample.x);
     if (time >= s.touchdown_time_s) {
       peak_torsion = std::max(peak_torsion, std::abs(sample.x[kPsi]));
       peak_lateral = std::max(peak_lateral, std::abs(sample.x[kY]));
@@ -165,6 +211,17 @@ LandingRun simulate_landing(const GearModel& model, const SolverOptions& options
   };
   record(t);
 
+  // The integrator's counters restart at each CVodeReInit: add them up before it.
+  const auto count = [&] {
+    long steps = 0, rhs = 0, lin_rhs = 0, jac = 0;
+    CVodeGetNumSteps(cv.mem, &steps);
+    CVodeGetNumRhsEvals(cv.mem, &rhs);
+    CVodeGetNumLinRhsEvals(cv.mem, &lin_rhs);
+    CVodeGetNumJacEvals(cv.mem, &jac);
+    run.steps += steps;
+    run.rhs_evaluations += rhs + lin_rhs;
+    run.jacobian_evaluations += jac;
+  };
   const double dt = options.output_interval_s;
   long grid = 1;
   while (t < s.end_time_s) {
@@ -183,7 +240,7 @@ LandingRun simulate_landing(const GearModel& model, const SolverOptions& options
     }
     std::array<int, kRoots> found{};
     check(CVodeGetRootInfo(cv.mem, found.data()), "CVodeGetRootInfo", t);
-    x = to_state(cv.y);
+    x = to_state(problem, cv.y);
     GearMode& mode = problem.mode;
     if (found[kLoadOnset]) {
       mode.loaded = true;
@@ -194,7 +251,7 @@ LandingRun simulate_landing(const GearModel& model, const SolverOptions& options
       // The string takes the sliding lateral force over, so Fy is continuous.
       const ContactState cs = contact_state(model, mode, t, x);
       mode.rolling = true;
-      x[kLambda] = string_deflection_for_force(model, cs.force.Fy, cs.load_n);
+      x[kLambda] = string_deflection_for_force(model, t, x, cs.force.Fy);
       if (!run.spin_up_s) run.spin_up_s = t - s.touchdown_time_s;
       run.events.push_back({t, "spin-up"});
     }
@@ -210,15 +267,11 @@ LandingRun simulate_landing(const GearModel& model, const SolverOptions& options
       mode.brake_command = false;
       run.events.push_back({t, "brake off"});
     }
-    long steps = 0;
-    CVodeGetNumSteps(cv.mem, &steps);
-    run.steps += steps;
-    for (int i = 0; i < kStateSize; ++i) NV_Ith_S(cv.y, i) = x[i];
+    count();
+    from_state(problem, x, cv.y);
     check(CVodeReInit(cv.mem, t, cv.y), "CVodeReInit", t);
   }
-  long steps = 0;
-  CVodeGetNumSteps(cv.mem, &steps);
-  run.steps += steps;
+  count();
   run.metrics = assess(window, peak_torsion, peak_lateral, criterion);
   run.wall_s =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - clock_start).count();

@@ -11,9 +11,9 @@
 
 namespace contensou {
 
-StabilityMap stability_map(const GearModel& base, const MapAxis& x, const MapAxis& y,
-                           const SolverOptions& solver, const ShimmyCriterion& criterion,
-                           unsigned threads, const std::function<void(int, int)>& progress) {
+StabilityMap evaluate_map(const GearModel& base, const MapAxis& x, const MapAxis& y,
+                          unsigned threads, const std::function<void(int, int)>& progress,
+                          const std::function<void(const GearModel&, MapCell&)>& cell_fn) {
   for (const MapAxis* a : {&x, &y}) {
     GearConfig probe = base.config;
     if (!gear_parameter(probe, a->parameter))
@@ -23,13 +23,11 @@ StabilityMap stability_map(const GearModel& base, const MapAxis& x, const MapAxi
     require_finite("map from", a->from);
     require_finite("map to", a->to);
   }
-  StabilityMap map{x, y, base.contact, {}};
+  StabilityMap map{x, y, base.contact, false, StabilityPhase::braked_slide, {}};
   const int total = x.points * y.points;
   map.cells.resize(static_cast<std::size_t>(total));
   if (threads == 0) threads = std::max(1u, std::thread::hardware_concurrency());
   std::atomic<int> next{0}, done{0};
-  SolverOptions quiet = solver;
-  quiet.record = false;
   auto work = [&] {
     for (int k = next++; k < total; k = next++) {
       MapCell& cell = map.cells[static_cast<std::size_t>(k)];
@@ -40,12 +38,7 @@ StabilityMap stability_map(const GearModel& base, const MapAxis& x, const MapAxi
       *gear_parameter(model.config, y.parameter) = cell.y;
       try {
         validate(model.config);
-        const LandingRun run = simulate_landing(model, quiet, criterion);
-        cell.growth_rate_per_s = run.metrics.torsion.growth_rate_per_s;
-        cell.frequency_hz = run.metrics.torsion.frequency_hz;
-        cell.last_amplitude_rad = run.metrics.torsion.last_amplitude;
-        cell.shimmy = run.metrics.shimmy;
-        cell.valid = run.metrics.torsion.valid();
+        cell_fn(model, cell);
       } catch (const std::exception& e) {
         cell.error = e.what();
       }
@@ -67,6 +60,41 @@ StabilityMap stability_map(const GearModel& base, const MapAxis& x, const MapAxi
     work();
   }
   for (std::thread& t : pool) t.join();
+  return map;
+}
+
+StabilityMap stability_map(const GearModel& base, const MapAxis& x, const MapAxis& y,
+                           const SolverOptions& solver, const ShimmyCriterion& criterion,
+                           unsigned threads, const std::function<void(int, int)>& progress) {
+  SolverOptions quiet = solver;
+  quiet.record = false;
+  return evaluate_map(base, x, y, threads, progress, [&](const GearModel& model, MapCell& cell) {
+    const LandingRun run = simulate_landing(model, quiet, criterion);
+    cell.growth_rate_per_s = run.metrics.torsion.growth_rate_per_s;
+    cell.frequency_hz = run.metrics.torsion.frequency_hz;
+    cell.last_amplitude_rad = run.metrics.torsion.last_amplitude;
+    cell.shimmy = run.metrics.shimmy;
+    cell.valid = run.metrics.torsion.valid();
+  });
+}
+
+StabilityMap linear_stability_map(const GearModel& base, const MapAxis& x, const MapAxis& y,
+                                  StabilityPhase phase, unsigned threads,
+                                  const std::function<void(int, int)>& progress) {
+  StabilityMap map =
+      evaluate_map(base, x, y, threads, progress, [&](const GearModel& model, MapCell& cell) {
+        StabilityOptions o;
+        o.simulate_perturbation = false;
+        const StabilityReport r = phase == StabilityPhase::touchdown
+                                      ? assess_touchdown(model, o)
+                                      : assess_stability(model, phase, o);
+        cell.valid = r.state.converged;
+        cell.growth_rate_per_s = r.growth_rate_per_s;
+        cell.frequency_hz = r.frequency_hz;
+        cell.shimmy = cell.valid && r.growth_rate_per_s > 0.0;
+      });
+  map.linear = true;
+  map.phase = phase;
   return map;
 }
 

@@ -1,6 +1,8 @@
 #!/usr/bin/env bash
-# contensou-shimmy: the demo writes summary.json with the three models and their CSVs, a small
-# map runs, and bad configurations give one stderr line naming file:line:column and no summary.
+# contensou-shimmy: the demo writes summary.json with the three models, their CSVs and the
+# stability verdicts of both phases; the legacy gear is classically unstable; --tire runs the
+# Monte Carlo; a small map runs; bad configurations, gear names and tire reports give one stderr
+# line naming the file:line:column or the option, and no summary.
 # Usage: shimmy_demo.sh PATH/TO/contensou-shimmy
 set -u
 app="$1"
@@ -21,8 +23,62 @@ for key in ["shimmy", "frequency_Hz", "growth_rate_per_s", "peak_torsion_rad", "
 assert isinstance(run["shimmy"], bool)
 assert run["steps"] > 0 and run["peak_torsion_rad"] > 0
 assert run["convergence"]["converged"], run["convergence"]
+for phase in ["touchdown", "braked_slide"]:
+    st = run["stability"][phase]
+    assert st["quasi_steady_state_converged"], (phase, st)
+    assert isinstance(st["stable"], bool) and st["verdict"], (phase, st)
+    assert len(st["eigenvalues_per_s"]) >= 4, (phase, st)
 PY
 done
+grep -q "braked_slide" "$dir/stdout" || fail "no braked-slide verdict printed"
+grep -q "margin 1.4" "$dir/stdout" || fail "no classical margin printed: $(cat "$dir/stdout")"
+python3 -c 'import json, sys; assert json.load(open(sys.argv[1]))["gear"] == "default"' \
+  "$dir/demo/summary.json" || fail "summary gear name"
+
+# The legacy gear: classically unstable, by name.
+"$app" --gear legacy --out "$dir/legacy" > "$dir/legacy_stdout" 2>&1 || fail "legacy run"
+grep -q "nonholonomic  touchdown .*SHIMMY" "$dir/legacy_stdout" || fail "legacy gear not classically unstable"
+"$app" --gear boeing --out "$dir/nogear" > /dev/null 2> "$dir/err" && fail "--gear boeing accepted"
+grep -q -- "--gear" "$dir/err" || fail "--gear error does not name the option: $(cat "$dir/err")"
+
+# --tire: a contensou-identify report as the tire, with a Monte Carlo over its covariance.
+cat > "$dir/report.json" <<'JSON'
+{"input": {"radius_m": 0.087},
+ "final": {"params": {
+   "F0_N": {"value": 1375.6, "std_error": 11.8}, "a": {"value": 0.62, "std_error": 0.0475},
+   "M0_Nm": {"value": 74.8, "std_error": 0.92}, "m": {"value": 6.55, "std_error": 0.31},
+   "kx": {"value": 0.135, "std_error": 0.0018}},
+  "correlation": {"names": ["F0_N", "a", "M0_Nm", "m", "kx"],
+   "matrix": [[1, 0, 0, 0, 0], [0, 1, 0, 0.6, 0], [0, 0, 1, 0, 0], [0, 0.6, 0, 1, 0], [0, 0, 0, 0, 1]]}}}
+JSON
+"$app" --out "$dir/tire" --tire "$dir/report.json" --draws 20 > "$dir/tire_stdout" 2> "$dir/err" \
+  || fail "--tire run: $(cat "$dir/err")"
+python3 - "$dir/tire/summary.json" <<'PY' || fail "tire_uncertainty in summary"
+import json, sys
+t = json.load(open(sys.argv[1]))["tire_uncertainty"]
+for phase in ["touchdown", "braked_slide"]:
+    b = t[phase]
+    assert b["draws"] == 20 and b["band95_per_s"][0] <= b["median_growth_rate_per_s"] <= b["band95_per_s"][1], b
+    assert 0 <= b["shimmy_probability"] <= 1, b
+assert abs(t["mean_law"]["a"] - 0.62) < 1e-12
+PY
+grep -q "P(shimmy)" "$dir/tire_stdout" || fail "no Monte Carlo table printed"
+# expect_tire NAME FRAGMENT REPORT_TEXT: one stderr line naming --tire and the key
+expect_tire() {
+  printf '%s' "$3" > "$dir/badreport.json"
+  "$app" --out "$dir/badtire" --tire "$dir/badreport.json" --draws 10 > /dev/null 2> "$dir/err"
+  local rc=$?
+  if [ "$rc" -eq 0 ] || ! grep -qF -- "$2" "$dir/err" || [ "$(wc -l < "$dir/err")" -ne 1 ]; then
+    fail "$1: rc=$rc, stderr: $(cat "$dir/err")"
+  else
+    echo "ok   $1: $(cat "$dir/err")"
+  fi
+}
+expect_tire "report not JSON" "badreport.json: not a JSON report" 'F0_N,a'
+expect_tire "report without a" "final.params.a.value missing" \
+  '{"input": {"radius_m": 0.087}, "final": {"params": {"F0_N": {"value": 1}}}}'
+expect_tire "report with a negative variance" "tire covariance = indefinite" \
+  '{"input": {"radius_m": 0.087}, "final": {"params": {"F0_N": {"value": 1375, "std_error": 10}, "a": {"value": 0.6, "std_error": 0.05}, "M0_Nm": {"value": 75, "std_error": 1}, "m": {"value": 6.5, "std_error": 0.3}, "kx": {"value": 0.13, "std_error": 0.002}}, "correlation": {"names": ["a", "m"], "matrix": [[1, 3], [3, 1]]}}}'
 
 # A configuration file: the printed default, with a 3 x 3 map, read back.
 "$app" --print-config > "$dir/config.json" || fail "print-config"
@@ -35,7 +91,8 @@ json.dump(c, open(sys.argv[1], "w"), indent=2)
 PY
 "$app" --config "$dir/config.json" --out "$dir/map" --map --map-size 3 > /dev/null 2>&1 \
   || fail "map run"
-[ -s "$dir/map/map_forward_speed_mps_torsional_damping_nms_per_rad_coupled.csv" ] || fail "no map CSV"
+[ -s "$dir/map/map_forward_speed_mps_torsional_damping_nms_per_rad_touchdown_coupled.csv" ] \
+  || fail "no map CSV: $(ls "$dir/map")"
 
 # expect NAME FRAGMENT CONFIG_TEXT
 expect() {
@@ -59,6 +116,9 @@ expect "bad value" "structure.torsional_inertia_kgm2 = -25: must be positive" \
 expect "bad model" "must be coupled, decoupled or nonholonomic" '{"models": ["rolling"]}'
 expect "bad map parameter" "unknown parameter 'scenario.speed'" \
   '{"maps": [{"x": {"parameter": "scenario.speed"}, "y": {"parameter": "structure.offset_m"}}]}'
+expect "bad map phase" "maps.phase: expected touchdown or braked_slide" \
+  '{"maps": [{"x": {"parameter": "structure.offset_m"}, "y": {"parameter": "structure.offset_m"}, "phase": "cruise"}]}'
+expect "bad gear name" "gear = boeing: must be default or legacy" '{"gear": "boeing"}'
 # Found by fuzz_shimmy_config: a number beyond double range escaped as a JSON library error
 # without a position, and a map axis without a parameter was accepted.
 expect "number overflow" "bad.json:2:30: invalid JSON: number overflow parsing '1e2111'" \

@@ -19,8 +19,8 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   }
   validate(c.gear);  // an InvalidArgument here escapes: the reader let a bad value through
   fuzz::require(!c.models.empty(), "no contact model");
-  for (const auto& [x, y] : c.maps)
-    fuzz::require(x.points >= 1 && y.points >= 1, "map with fewer than 1 point");
+  for (const app::MapSpec& m : c.maps)
+    fuzz::require(m.x.points >= 1 && m.y.points >= 1, "map with fewer than 1 point");
   // The configuration written out reads back the same.
   const nlohmann::json j = app::to_json(c);
   const std::string again = path + ".again.json";

@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include <Eigen/Eigenvalues>
+#include <algorithm>
 #include <cmath>
 #include <numbers>
 #include <vector>
@@ -303,4 +304,97 @@ TEST(StabilityMap, CellsMatchSingleRunsAndCoverTheGrid) {
   for (int i = 0; i < 3; ++i)
     EXPECT_LT(map.cells[static_cast<std::size_t>(3 + i)].growth_rate_per_s,
               map.cells[static_cast<std::size_t>(i)].growth_rate_per_s);
+}
+
+// The structured Jacobian against central differences of the right-hand side (brute force) for
+// every contact model, in the sliding, rolling and braked modes, at states off equilibrium.
+TEST(LandingGear, StructuredJacobianMatchesDifferencesOfTheRightHandSide) {
+  for (bool exact : {false, true}) {
+    for (ContactModel cm :
+         {ContactModel::coupled, ContactModel::decoupled, ContactModel::nonholonomic}) {
+      if (exact && cm != ContactModel::coupled) continue;
+      for (double spacing : {0.0, 0.8}) {
+        GearConfig c;
+        c.structure.wheel_spacing_m = spacing;
+        c.tire.exact_integrals = exact;
+        c.structure.gyroscopic_length_m = 2.0;
+        c.structure.freeplay_rad = 3.9e-3;  // psi = 4e-3 sits in the dead band's smoothed corner
+        c.structure.fore_aft_stiffness_n_per_m = 2e6;
+        const GearModel m = make_gear_model(c, cm);
+        const double V = c.scenario.forward_speed_mps, r = c.structure.wheel_radius_m;
+        for (bool brake : {false, true}) {
+          for (bool rolling : {false, true}) {
+            const GearMode mode{true, rolling, brake};
+            GearState x;
+            x << 1e-3, 0.02, 4e-3, 0.3, V * (rolling ? 0.97 : 0.6) / r, 2e-3, -4e-3, 0.05,
+                V * (rolling ? 0.96 : 0.62) / r;
+            const double t = c.scenario.touchdown_time_s + 0.6 * c.scenario.load_ramp_s;
+            const GearJacobian J = gear_jacobian(m, mode, t, x);
+            for (int j = 0; j < kStateSize; ++j) {
+              const double h = 1e-6 * std::max(std::abs(x[j]), 1e-2);
+              GearState xp = x, xm = x;
+              xp[j] += h;
+              xm[j] -= h;
+              const GearState d = (gear_rhs(m, mode, t, xp) - gear_rhs(m, mode, t, xm)) / (2 * h);
+              const double tol = (exact ? 1e-3 : 1e-5) * std::max(d.norm(), 1.0);
+              EXPECT_LT((J.col(j) - d).norm(), tol)
+                  << to_string(cm) << (exact ? " exact" : "") << " brake " << brake << " rolling "
+                  << rolling << " column " << j << "\n"
+                  << J.col(j).transpose() << "\n"
+                  << d.transpose() << "\nspacing " << spacing;
+            }
+          }
+        }
+      }
+    }
+  }
+}
+
+TEST(LandingGear, StructuredAndDifferenceQuotientJacobiansGiveTheSameLanding) {
+  const GearModel m = make_gear_model(GearConfig{}, ContactModel::coupled);
+  SolverOptions analytic{1e-9}, dq{1e-9};
+  dq.analytic_jacobian = false;
+  const LandingRun a = simulate_landing(m, analytic), b = simulate_landing(m, dq);
+  EXPECT_NEAR(a.metrics.peak_torsion_rad, b.metrics.peak_torsion_rad,
+              1e-5 * b.metrics.peak_torsion_rad);
+  EXPECT_NEAR(a.metrics.torsion.growth_rate_per_s, b.metrics.torsion.growth_rate_per_s, 1e-3);
+  EXPECT_LT(a.rhs_evaluations, b.rhs_evaluations);  // no difference quotients
+}
+
+// Gyroscopic coupling (g = I_w Omega / L): the airborne, undamped gear with the wheel spinning
+// has the frequencies of two gyroscopically coupled oscillators,
+//   (k_psi - I w^2)(k_y - m w^2) = g^2 w^2   (a quadratic in w^2),
+// and no growth or decay (the coupling does no work).
+TEST(LandingGear, GyroscopicCouplingGivesTheCoupledOscillatorFrequencies) {
+  GearConfig c;
+  c.structure.gyroscopic_length_m = 1.5;
+  c.structure.torsional_damping_nms_per_rad = 0.0;
+  c.structure.lateral_damping_ns_per_m = 0.0;
+  const GearModel m = make_gear_model(c, ContactModel::nonholonomic);
+  const GearStructure& g = c.structure;
+  GearState x = GearState::Zero();
+  x[kSpin] = c.scenario.forward_speed_mps / g.wheel_radius_m;
+  const GearJacobian J = gear_jacobian(m, GearMode{false, true, false}, 0.0, x);
+  const int idx[4] = {kY, kYDot, kPsi, kPsiDot};
+  Eigen::Matrix4d A;
+  for (int i = 0; i < 4; ++i)
+    for (int j = 0; j < 4; ++j) A(i, j) = J(idx[i], idx[j]);
+  const Eigen::Vector4cd ev = Eigen::EigenSolver<Eigen::Matrix4d>(A).eigenvalues();
+  const double gy = g.wheel_inertia_kgm2 * x[kSpin] / g.gyroscopic_length_m;
+  const double I = g.torsional_inertia_kgm2, k1 = g.torsional_stiffness_nm_per_rad;
+  const double M = g.lateral_mass_kg, k2 = g.lateral_stiffness_n_per_m;
+  // I M W^2 - (I k2 + M k1 + gy^2) W + k1 k2 = 0, W = w^2.
+  const double b = I * k2 + M * k1 + gy * gy, disc = std::sqrt(b * b - 4 * I * M * k1 * k2);
+  std::vector<double> expected{std::sqrt((b - disc) / (2 * I * M)),
+                               std::sqrt((b + disc) / (2 * I * M))};
+  std::vector<double> found;
+  for (int i = 0; i < 4; ++i) {
+    EXPECT_NEAR(ev[i].real(), 0.0, 1e-9 * std::abs(ev[i]));
+    if (ev[i].imag() > 0) found.push_back(ev[i].imag());
+  }
+  std::sort(found.begin(), found.end());
+  ASSERT_EQ(found.size(), 2u);
+  for (int i = 0; i < 2; ++i) EXPECT_NEAR(found[i], expected[i], 1e-9 * expected[i]);
+  // The coupling is not negligible: the frequencies move from the uncoupled ones.
+  EXPECT_GT(std::abs(found[1] - std::sqrt(k1 / I)), 1e-3 * std::sqrt(k1 / I));
 }

@@ -5,15 +5,20 @@
 //   psi, psi' torsion of the strut about its vertical axis [rad, rad/s]
 //   Omega     wheel spin about the axle, positive when rolling forward [rad/s]
 //   lambda    lateral deflection of the stretched-string tire's leading point [m]
+//   x, x'     fore-aft bending of the strut at the wheel [m, m/s] (optional)
+//   Omega2    the second wheel's spin of a twin gear [rad/s] (optional)
 // Ground frame X forward, Y left, Z up; the wheel frame is turned by psi. The patch centre lies
 // a trail e behind the strut axis and an offset l to its left. Patch kinematics (theory.md
 // section 1, with spin omega = psi'):
-//   vx = V cos psi + (y' + Vd) sin psi - l psi' - Omega r
-//   vy = -V sin psi + (y' + Vd) cos psi - e psi'
-// Equations of motion (friction F = (Fx, Fy), Mz acting on the tire, wheel frame):
-//   m_y y''   = -k_y y - c_y y' + Fx sin psi + Fy cos psi
-//   I_psi psi'' = -k_psi psi - c_psi psi' + Mz - e Fy - l Fx
-//   I_w Omega'  = -r Fx - T_brake
+//   vx = (V + x') cos psi + (y' + Vd) sin psi - l psi' - Omega r
+//   vy = -(V + x') sin psi + (y' + Vd) cos psi - e psi'
+// Equations of motion (friction F = (Fx, Fy), Mz acting on the tire, wheel frame; g = I_w Omega / L
+// the gyroscopic coupling, zero unless structure.gyroscopic_length_m is set):
+//   m_y y''   = -k_y y - c_y y' + Fx sin psi + Fy cos psi + g psi'
+//   I_psi psi'' = -k_psi d(psi) - c_psi psi' + Mz - e Fy - l Fx - g y'
+// (d(psi) = psi without torque-link freeplay; GearStructure::freeplay_rad)
+//   I_w Omega'  = -r Fx - T_brake   (per wheel for a twin gear)
+//   m_x x''     = -k_x x - c_x x' + Fx cos psi - Fy sin psi   (fore-aft, optional)
 #pragma once
 
 #include <Eigen/Core>
@@ -46,11 +51,38 @@ struct GearStructure {
   double lateral_damping_ns_per_m = 1000.0;       // c_y
   double torsional_inertia_kgm2 = 25.0;           // I_psi
   double torsional_stiffness_nm_per_rad = 1.0e6;  // k_psi
-  double torsional_damping_nms_per_rad = 100.0;   // c_psi (1 % of critical)
-  double trail_m = 0.05;                          // e, patch centre behind the strut axis
-  double offset_m = 0.25;                         // l, patch centre left of the strut axis
-  double wheel_radius_m = 0.57;                   // r, rolling radius
-  double wheel_inertia_kgm2 = 10.0;               // I_w
+  // c_psi, strut damping and shimmy damper together: 1.4 times the largest damping the
+  // classical (rolling, unbraked) model needs over 30-90 m/s (docs/shimmy.md, "Default gear");
+  // the legacy gear (legacy_gear_config) has 100 (1 % of critical).
+  double torsional_damping_nms_per_rad = 245.0;
+  double trail_m = 0.05;             // e, patch centre behind the strut axis
+  double offset_m = 0.25;            // l, patch centre left of the strut axis
+  double wheel_radius_m = 0.57;      // r, rolling radius
+  double wheel_inertia_kgm2 = 10.0;  // I_w
+  // Gyroscopic coupling of the wheel spin with lateral bending and torsion (issue 12, item 3):
+  // the strut bends as a pendulum of length L about the aircraft's X axis, so the wheel rolls by
+  // phi = y / L; its angular momentum I_w Omega along the axle then gives the strut the torque
+  // -I_w Omega y' / L about its axis and the lateral force I_w Omega psi' / L at the wheel
+  // (d/dt of the tilting momentum; they do no work together). 0 switches it off (the default).
+  double gyroscopic_length_m = 0.0;  // L
+  // Torque-link freeplay (issue 12, item 7): the torsional spring acts on psi beyond a dead band
+  // of half-width delta, k_psi d(psi) with the smooth dead zone
+  //   d(psi) = ((psi - delta) + sqrt((psi - delta)^2 + s^2)) / 2
+  //          + ((psi + delta) - sqrt((psi + delta)^2 + s^2)) / 2,   s = delta / 20
+  // (d = psi - delta beyond, 0 inside, to O(s); slope 1 - delta / sqrt(delta^2 + s^2) = 1/800
+  // at psi = 0); the damping acts throughout. 0: no freeplay.
+  double freeplay_rad = 0.0;  // delta
+  // Twin-wheel gear (issue 12, item 7): two wheels on the axle at l + b/2 and l - b/2, each with
+  // half the load, its own spin, anti-skid and patch, and the string's lateral deflection shared
+  // (their lateral kinematics are the same). The drag difference of the two wheels acts on the
+  // torsion through the lever b/2. 0: one wheel at the offset l.
+  double wheel_spacing_m = 0.0;  // b
+  // Fore-aft bending of the strut (issue 12, item 3): the wheel moves along X by x against
+  // k_x, c_x with modal mass m_x, loaded by the drag (the spin-up drag bends it back, its release
+  // at the end of spin-up springs it forward). 0 stiffness: rigid fore-aft (the default).
+  double fore_aft_mass_kg = 300.0;            // m_x
+  double fore_aft_stiffness_n_per_m = 0.0;    // k_x (0: off)
+  double fore_aft_damping_ns_per_m = 1000.0;  // c_x
 };
 
 // The sliding tire: the seed tire's pressure profile (theory.md section 5) at the inflation
@@ -67,11 +99,14 @@ struct SlidingTire {
   bool exact_integrals = false;  // coupled model: exact integrals instead of the law
 };
 
-// The rolling tire (von Schlippe / Somieski stretched string; Pacejka 2012, ch. 5):
-//   lambda' = -(vy + a psi') - (V / sigma) lambda,   alpha = lambda / sigma,
-//   Fy = mu N tanh(C_Fa alpha / mu),  Mz = -C_Ma N (mu / C_Fa) tanh(C_Fa alpha / mu) - kappa_t psi'
-//   / V, Fx = -mu N tanh(C_x s / mu),      s = vx / V (longitudinal slip ratio),
-// with a = R the half contact length and mu the friction at zero slip speed.
+// The rolling tire (von Schlippe / Somieski stretched string; Pacejka 2012, ch. 5) with combined
+// slip on a friction circle (docs/shimmy.md, "nonholonomic"):
+//   lambda' = -(vy + a psi') - (V / sigma) lambda,   alpha = lambda / sigma,  s = vx / V,
+//   demanded forces Dx = -C_x s N, Dy = C_Fa alpha N, D = |(Dx, Dy)|, cap = mu N,
+//   (Fx, Fy) = (Dx, Dy) cap tanh(D / cap) / D    (|F| <= mu N: braking and cornering share it),
+//   Mz = -(C_Ma / C_Fa) Fy - kappa_t (N / N_s) psi' / V,
+// with a = R the half contact length and mu = f(w) the sliding tire's friction law at the slip
+// speed w = (vx^2 + (V alpha)^2)^(1/2), so that both tires brake at the same friction level.
 struct RollingTire {
   double relaxation_length_m = 0.6;             // sigma
   double cornering_coefficient = 8.0;           // C_Fa [1/rad], cornering stiffness / N
@@ -114,12 +149,32 @@ struct GearConfig {
 // Throws InvalidArgument naming the first bad field.
 void validate(const GearConfig& config);
 
+// Named gears (docs/shimmy.md, "Parameters"): "default" (GearConfig{}: classically stable with a
+// margin of 1.4 over 30-90 m/s) and "legacy" (the gear of issue 5, torsional damping
+// 100 N m s/rad, classically unstable). Throws InvalidArgument for another name.
+GearConfig gear_config_by_name(const std::string& name);
+GearConfig legacy_gear_config();
+
 // The numeric parameters of a GearConfig by dotted name ("structure.offset_m",
 // "scenario.forward_speed_mps", "tire.friction.static_coefficient", ...); nullptr if unknown.
 double* gear_parameter(GearConfig& config, std::string_view name);
 std::vector<std::string> gear_parameter_names();
 
-enum StateIndex : int { kY = 0, kYDot, kPsi, kPsiDot, kSpin, kLambda, kStateSize };
+// x, x': fore-aft bending of the strut at the wheel (structure.fore_aft_stiffness_n_per_m > 0;
+// inert otherwise).
+// Omega2: the second wheel's spin of a twin gear (structure.wheel_spacing_m > 0; inert otherwise).
+enum StateIndex : int {
+  kY = 0,
+  kYDot,
+  kPsi,
+  kPsiDot,
+  kSpin,
+  kLambda,
+  kX,
+  kXDot,
+  kSpin2,
+  kStateSize
+};
 using GearState = Eigen::Matrix<double, kStateSize, 1>;
 
 // The discrete part of the state, changed only at events.
@@ -129,15 +184,20 @@ struct GearMode {
   bool brake_command = false;  // between brake on and brake off
 };
 
-// What the contact sees and gives at one instant.
+// What the contact sees and gives at one instant. For a twin gear: the mean kinematics, slip
+// ratio and friction, the summed load, forces and brake torque, the moment about the midpoint
+// between the patches, and one wheel's patch radius.
 struct ContactState {
-  double load_n = 0.0;          // N
-  double patch_radius_m = 0.0;  // R
-  Kinematics<double> slip;      // vx, vy, omega = psi'
-  double slip_ratio = 0.0;      // s = vx / V
-  double friction = 0.0;        // f at the effective slip speed (sliding) or mu (rolling)
-  Resultants<double> force;     // on the tire, wheel frame
-  double brake_torque_nm = 0.0;
+  double load_n = 0.0;           // N
+  double patch_radius_m = 0.0;   // R
+  Kinematics<double> slip;       // vx, vy, omega = psi'
+  double slip_ratio = 0.0;       // s = vx / V
+  double friction = 0.0;         // f at the effective slip speed (sliding) or mu (rolling)
+  Resultants<double> force;      // on the tire, wheel frame
+  double brake_torque_nm = 0.0;  // all wheels
+  // Per wheel (a twin gear's second wheel in [1]; zero for one wheel): drag and brake torque.
+  std::array<double, 2> wheel_fx_n{};
+  std::array<double, 2> wheel_brake_nm{};
 };
 
 // Everything fixed for one run: the configuration, the contact model and the friction law's
@@ -169,8 +229,18 @@ ContactState contact_state(const GearModel& model, const GearMode& mode, double 
 // dx/dt.
 GearState gear_rhs(const GearModel& model, const GearMode& mode, double t, const GearState& x);
 
-// Stretched-string deflection that carries the sliding lateral force over unchanged when
-// the tire starts to roll (inverse of the rolling Fy law).
-double string_deflection_for_force(const GearModel& model, double lateral_force_n, double load_n);
+// d(dx/dt)/dx, structured: the gear's equations and kinematics differentiated by hand, the
+// contact law's partials d(Fx, Fy, Mz)/d(vx, vy, omega, lambda) analytic for the coupled
+// fractional law (fractional_resultants_with_jacobian and f'(w)), by forward differences of the
+// law alone (one evaluation per input) for the others (docs/shimmy.md, "Numerics").
+using GearJacobian = Eigen::Matrix<double, kStateSize, kStateSize>;
+GearJacobian gear_jacobian(const GearModel& model, const GearMode& mode, double t,
+                           const GearState& x);
+
+// Stretched-string deflection that carries the sliding lateral force over unchanged when the
+// tire starts to roll in state x (inverse of the rolling Fy law at the state's longitudinal slip,
+// by bisection; the largest reachable force if |Fy| exceeds it).
+double string_deflection_for_force(const GearModel& model, double t, const GearState& x,
+                                   double lateral_force_n);
 
 }  // namespace contensou

@@ -13,12 +13,16 @@
 namespace contensou {
 
 // The absolute tolerance of each state is relative_tolerance times a scale: 1 mm, 0.1 m/s,
-// 1 mrad, 0.1 rad/s, 100 rad/s, 1 mm (y, y', psi, psi', Omega, lambda).
+// 1 mrad, 0.1 rad/s, 100 rad/s, 1 mm, 1 mm, 0.1 m/s, 100 rad/s (y, y', psi, psi', Omega,
+// lambda, x, x', Omega2).
 struct SolverOptions {
   double relative_tolerance = 1e-7;
   double output_interval_s = 5e-4;  // samples for the time history and the shimmy analysis
   bool record = true;               // keep the samples (the analysis runs either way)
   long max_steps = 1000000;
+  // CVODE's Newton matrix from gear_jacobian (structured, analytic where the law allows), or
+  // from CVODE's own difference quotients (one right-hand side per state) when false.
+  bool analytic_jacobian = true;
 };
 
 struct LandingSample {
@@ -56,6 +60,8 @@ struct LandingRun {
   double window_start_s = 0.0, window_end_s = 0.0;
   ShimmyMetrics metrics;
   long steps = 0;
+  long rhs_evaluations = 0;       // by the integrator, including those of difference quotients
+  long jacobian_evaluations = 0;  // Jacobians formed (analytic or by difference quotients)
   double wall_s = 0.0;
 };
 

@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "contensou/gear/landing_simulation.hpp"
+#include "contensou/gear/linear_stability.hpp"
 
 namespace contensou {
 
@@ -24,13 +25,16 @@ struct MapCell {
   double frequency_hz = 0.0;
   double last_amplitude_rad = 0.0;
   bool shimmy = false;
-  bool valid = false;  // enough oscillation to estimate a growth rate
-  std::string error;   // set if the integration failed
+  bool valid = false;               // enough oscillation to estimate a growth rate
+  double shimmy_probability = 0.0;  // probability maps (tire_uncertainty.hpp) only
+  std::string error;                // set if the integration failed
 };
 
 struct StabilityMap {
   MapAxis x, y;
   ContactModel contact = ContactModel::coupled;
+  bool linear = false;  // eigenvalue map (linear_stability_map), else simulated landings
+  StabilityPhase phase = StabilityPhase::braked_slide;  // of an eigenvalue map
   std::vector<MapCell> cells;  // row-major: cells[j * x.points + i] at (x.value(i), y.value(j))
 };
 
@@ -41,5 +45,19 @@ StabilityMap stability_map(const GearModel& base, const MapAxis& x, const MapAxi
                            const SolverOptions& solver, const ShimmyCriterion& criterion,
                            unsigned threads = 0,
                            const std::function<void(int, int)>& progress = {});
+
+// The grid with `cell_fn(model, cell)` run for every cell (the model with the two parameters set
+// and validated; an exception goes into cell.error), on `threads` threads (0: all cores).
+StabilityMap evaluate_map(const GearModel& base, const MapAxis& x, const MapAxis& y,
+                          unsigned threads, const std::function<void(int, int)>& progress,
+                          const std::function<void(const GearModel&, MapCell&)>& cell_fn);
+
+// The same grid judged by eigenvalues (linear_stability.hpp): each cell's growth rate is
+// linear_growth_rate(model, phase), the largest real part of an oscillatory eigenvalue of the
+// linearisation about the phase's quasi-steady state; shimmy = growth rate > 0; valid = the
+// quasi-steady state was found. Much cheaper than simulating (no amplitude threshold).
+StabilityMap linear_stability_map(const GearModel& base, const MapAxis& x, const MapAxis& y,
+                                  StabilityPhase phase, unsigned threads = 0,
+                                  const std::function<void(int, int)>& progress = {});
 
 }  // namespace contensou

@@ -1,0 +1,122 @@
+// Stability of the landing gear judged by the eigenvalues of its linearisation about a
+// quasi-steady state, and by the growth rate after a fixed standard perturbation
+// (docs/shimmy.md, "Stability criterion"). Two phases:
+//   touchdown     unbraked. Sliding models: the tire slides while the wheel spins up; the wheel
+//                 speed is frozen at a slip ratio s (vx = s V) and the strut's motion is
+//                 linearised about its equilibrium under the drag at full load (a frozen-time
+//                 analysis, valid because spin-up is slow against the strut's modes only to
+//                 the extent that ~3 cycles are). The nonholonomic model rolls: straight
+//                 rolling, the classical shimmy analysis.
+//   braked_slide  the anti-skid holds the wheel-speed slip near brake_target_slip; sliding
+//                 models slide (wheel speed a state), the nonholonomic model rolls braked on its
+//                 friction circle.
+// The drift (scenario.drift_speed_mps) is set to zero: it is a transient excitation.
+#pragma once
+
+#include <Eigen/Core>
+#include <complex>
+#include <string>
+#include <vector>
+
+#include "contensou/gear/landing_gear.hpp"
+
+namespace contensou {
+
+enum class StabilityPhase { touchdown, braked_slide };
+inline const char* to_string(StabilityPhase phase) {
+  return phase == StabilityPhase::touchdown ? "touchdown" : "braked_slide";
+}
+
+struct QuasiSteadyState {
+  StabilityPhase phase = StabilityPhase::braked_slide;
+  GearMode mode;
+  double t = 0.0;  // a time after full load: the load is N_s
+  GearState x = GearState::Zero();
+  std::vector<int> states;      // the states of the linearisation (StateIndex)
+  bool frozen_spin = false;     // touchdown of a sliding model: Omega held
+  double touchdown_slip = 0.0;  // the frozen slip ratio (touchdown, sliding models)
+  double residual = 0.0;        // max |dx/dt| over `states`, scaled by the solver's scales
+  bool converged = false;
+};
+
+// Newton's method on dx/dt = 0 over the active states (central-difference Jacobian).
+QuasiSteadyState quasi_steady_state(const GearModel& model, StabilityPhase phase,
+                                    double touchdown_slip = 0.5);
+
+// dx/dt of the quasi-steady problem (Omega' = 0 when the spin is frozen).
+GearState quasi_steady_rhs(const GearModel& model, const QuasiSteadyState& q, const GearState& x);
+
+// Central-difference Jacobian of quasi_steady_rhs over q.states, about q.x.
+Eigen::MatrixXd linearise(const GearModel& model, const QuasiSteadyState& q);
+
+// Work per cycle done on the gear by each term of the linearised dynamics along the dominant
+// oscillatory mode, scaled to a torsion amplitude of 1 mrad [J per cycle]. Positive work feeds
+// the oscillation. For a mode q(t) = Re(q^ e^{i w t}) the work of a force F on a rate v over one
+// period 2 pi / w is (pi / w) Re(F^ conj(v^)) (growth within the cycle neglected).
+struct EnergyPerCycle {
+  double spin_torque = 0.0;          // Mz on psi'
+  double trail_lateral_force = 0.0;  // -e Fy on psi'
+  double offset_drag = 0.0;          // -l Fx on psi'
+  double torsional_damping = 0.0;    // -c_psi psi' on psi'
+  double lateral_friction = 0.0;     // (Fx sin psi + Fy cos psi) on y'
+  double lateral_damping = 0.0;      // -c_y y' on y'
+  double total() const {
+    return spin_torque + trail_lateral_force + offset_drag + torsional_damping + lateral_friction +
+           lateral_damping;
+  }
+};
+
+struct StabilityReport {
+  QuasiSteadyState state;
+  std::vector<std::complex<double>> eigenvalues;  // sorted by decreasing real part
+  double max_real_part = 0.0;                     // over all eigenvalues [1/s]
+  double growth_rate_per_s = 0.0;  // largest real part of an oscillatory eigenvalue (Im > 0.5 Hz)
+  double frequency_hz = 0.0;       // of that mode
+  double torsion_share = 0.0;      // |psi| / (|psi| + |y| / 0.1 m) in that mode's eigenvector
+  // What that mode moves most, comparing |psi| x 1 m, |y| and |x| in its eigenvector: "torsion",
+  // "lateral" (both shimmy) or "fore-aft" (gear walk); empty without an oscillatory mode.
+  std::string mode_kind;
+  // The torsional mode: the oscillatory eigenvalue with the largest torsion share (what the
+  // standard perturbation, a kick of psi', measures).
+  double torsion_growth_rate_per_s = 0.0;
+  double torsion_frequency_hz = 0.0;
+  // Slope of the friction torque against psi' at the state (-dMz/dpsi') [N m s/rad]: what the
+  // contact adds to the torsional damping (decoupled model: about M0 R / eps).
+  double spin_torque_damping_nms_per_rad = 0.0;
+  // Slope of the drag against the patch's sliding speed: -dFx/dvx [N s/m]; negative on the
+  // falling part of f(w).
+  double drag_slope_ns_per_m = 0.0;
+  double friction = 0.0;  // f at the state
+  EnergyPerCycle energy;  // of the dominant oscillatory mode
+  // The standard perturbation: psi' += 0.1 rad/s at the quasi-steady state, integrated with
+  // CVODE for perturbation_window_s in the same mode; the growth rate fitted to the torsion's
+  // rate peaks (analyse_oscillation), NaN if it does not oscillate.
+  double perturbation_growth_rate_per_s = 0.0;
+  double perturbation_frequency_hz = 0.0;
+  bool stable() const { return max_real_part < 0.0; }
+};
+
+struct StabilityOptions {
+  double touchdown_slip = 0.5;  // touchdown, sliding models
+  bool simulate_perturbation = true;
+  double perturbation_rate_radps = 0.1;  // psi' kick
+  double perturbation_window_s = 0.5;
+};
+
+StabilityReport assess_stability(const GearModel& model, StabilityPhase phase,
+                                 const StabilityOptions& options = {});
+
+// The touchdown phase over the spin-up: the worst report over frozen slip ratios
+// 0.9, 0.7, 0.5, 0.3, 0.1 (sliding models), or the straight-rolling report (nonholonomic).
+StabilityReport assess_touchdown(const GearModel& model, const StabilityOptions& options = {});
+
+// The largest real part of an oscillatory eigenvalue of the touchdown (worst frozen slip) or
+// braked slide linearisation, without the perturbation run: the quantity the maps show.
+double linear_growth_rate(const GearModel& model, StabilityPhase phase);
+
+// The torsional damping at which the classical (nonholonomic, unbraked) model loses stability at
+// the model's forward speed: bisection on the sign of the largest real part [N m s/rad];
+// 0 if stable without damping.
+double classical_critical_damping(const GearModel& model);
+
+}  // namespace contensou

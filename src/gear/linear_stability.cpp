@@ -1,0 +1,388 @@
+#include "contensou/gear/linear_stability.hpp"
+
+#include <cvode/cvode.h>
+#include <nvector/nvector_serial.h>
+#include <sunlinsol/sunlinsol_dense.h>
+#include <sunmatrix/sunmatrix_dense.h>
+
+#include <Eigen/Dense>
+#include <Eigen/Eigenvalues>
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <limits>
+#include <numbers>
+#include <stdexcept>
+
+#include "contensou/friction/error.hpp"
+#include "contensou/gear/oscillation.hpp"
+
+namespace contensou {
+
+namespace {
+
+// Scales of the states (the solver's absolute-tolerance scales): y, y', psi, psi', Omega,
+// lambda, x, x', Omega2.
+constexpr std::array<double, kStateSize> kScale{1e-3, 1e-1, 1e-3, 1e-1, 1e2, 1e-3, 1e-3, 1e-1, 1e2};
+
+double scale_of(int i) {
+  return kScale[static_cast<std::size_t>(i)];
+}
+
+GearModel without_drift(const GearModel& model) {
+  GearModel m = model;
+  m.config.scenario.drift_speed_mps = 0.0;
+  return m;
+}
+
+double scaled_residual(const GearState& f, const std::vector<int>& states) {
+  double r = 0.0;
+  for (int i : states) r = std::max(r, std::abs(f[i]) / scale_of(i));
+  return r;
+}
+
+}  // namespace
+
+GearState quasi_steady_rhs(const GearModel& model, const QuasiSteadyState& q, const GearState& x) {
+  GearState dx = gear_rhs(model, q.mode, q.t, x);
+  if (q.frozen_spin) dx[kSpin] = dx[kSpin2] = 0.0;
+  return dx;
+}
+
+QuasiSteadyState quasi_steady_state(const GearModel& model, StabilityPhase phase,
+                                    double touchdown_slip) {
+  const LandingScenario& s = model.config.scenario;
+  const double V = s.forward_speed_mps, r = model.config.structure.wheel_radius_m;
+  const bool sliding = model.contact != ContactModel::nonholonomic;
+  const bool twin = model.config.structure.wheel_spacing_m > 0.0;
+  QuasiSteadyState q;
+  q.phase = phase;
+  q.mode.loaded = true;
+  q.mode.rolling = !sliding;
+  q.mode.brake_command = phase == StabilityPhase::braked_slide;
+  q.t = s.touchdown_time_s + s.load_ramp_s + 1.0;
+  q.states = {kY, kYDot, kPsi, kPsiDot};
+  if (phase == StabilityPhase::touchdown && sliding) {
+    if (!(touchdown_slip > 0.0 && touchdown_slip <= 1.0))
+      throw InvalidArgument("touchdown slip", format_value(touchdown_slip), "must lie in (0, 1]");
+    q.frozen_spin = true;
+    q.touchdown_slip = touchdown_slip;
+    q.x[kSpin] = V * (1.0 - touchdown_slip) / r;
+    q.x[kSpin2] = twin ? q.x[kSpin] : 0.0;
+  } else {
+    q.states.push_back(kSpin);
+    q.x[kSpin] =
+        phase == StabilityPhase::braked_slide ? V * (1.0 - s.brake_target_slip) / r : V / r;
+    if (twin) {
+      q.states.push_back(kSpin2);
+      q.x[kSpin2] = q.x[kSpin];
+    }
+  }
+  if (!sliding) q.states.push_back(kLambda);
+  if (model.config.structure.fore_aft_stiffness_n_per_m > 0.0) {
+    q.states.push_back(kX);
+    q.states.push_back(kXDot);
+  }
+
+  // Newton's method with a central-difference Jacobian and step halving.
+  const int n = static_cast<int>(q.states.size());
+  const auto residual_vector = [&](const GearState& x) {
+    const GearState f = quasi_steady_rhs(model, q, x);
+    Eigen::VectorXd v(n);
+    for (int k = 0; k < n; ++k)
+      v[k] = f[q.states[static_cast<std::size_t>(k)]] /
+             scale_of(q.states[static_cast<std::size_t>(k)]);
+    return v;
+  };
+  Eigen::VectorXd f = residual_vector(q.x);
+  for (int iter = 0; iter < 60 && f.allFinite(); ++iter) {
+    Eigen::MatrixXd J(n, n);
+    for (int k = 0; k < n; ++k) {
+      const int i = q.states[static_cast<std::size_t>(k)];
+      const double h = 1e-6 * scale_of(i);
+      GearState xp = q.x, xm = q.x;
+      xp[i] += h;
+      xm[i] -= h;
+      J.col(k) = (residual_vector(xp) - residual_vector(xm)) / (2.0 * h);
+    }
+    const Eigen::VectorXd step = -J.colPivHouseholderQr().solve(f);
+    if (!step.allFinite()) break;
+    double lambda = 1.0;
+    GearState trial = q.x;
+    Eigen::VectorXd ft = f;
+    for (int halving = 0; halving < 30; ++halving, lambda *= 0.5) {
+      trial = q.x;
+      for (int k = 0; k < n; ++k) trial[q.states[static_cast<std::size_t>(k)]] += lambda * step[k];
+      ft = residual_vector(trial);
+      if (ft.allFinite() && ft.norm() < f.norm()) break;
+    }
+    double size = 0.0;
+    for (int k = 0; k < n; ++k)
+      size = std::max(size,
+                      std::abs(lambda * step[k]) / scale_of(q.states[static_cast<std::size_t>(k)]));
+    q.x = trial;
+    f = ft;
+    if (size < 1e-11 || f.lpNorm<Eigen::Infinity>() < 1e-12) break;
+  }
+  q.residual = scaled_residual(quasi_steady_rhs(model, q, q.x), q.states);
+  q.converged = std::isfinite(q.residual) && q.residual < 1e-6;
+  return q;
+}
+
+Eigen::MatrixXd linearise(const GearModel& model, const QuasiSteadyState& q) {
+  const int n = static_cast<int>(q.states.size());
+  Eigen::MatrixXd A(n, n);
+  for (int k = 0; k < n; ++k) {
+    const int j = q.states[static_cast<std::size_t>(k)];
+    const double h = 1e-6 * scale_of(j);
+    GearState xp = q.x, xm = q.x;
+    xp[j] += h;
+    xm[j] -= h;
+    const GearState d = (quasi_steady_rhs(model, q, xp) - quasi_steady_rhs(model, q, xm)) / (2 * h);
+    for (int l = 0; l < n; ++l) A(l, k) = d[q.states[static_cast<std::size_t>(l)]];
+  }
+  return A;
+}
+
+namespace {
+
+// Rows Fx, Fy, Mz, lateral force on the strut (Fx sin psi + Fy cos psi); one column per state.
+Eigen::Matrix<double, 4, kStateSize> contact_jacobian(const GearModel& model,
+                                                      const QuasiSteadyState& q) {
+  const auto forces = [&](const GearState& x) {
+    const ContactState c = contact_state(model, q.mode, q.t, x);
+    return Eigen::Vector4d(c.force.Fx, c.force.Fy, c.force.Mz,
+                           c.force.Fx * std::sin(x[kPsi]) + c.force.Fy * std::cos(x[kPsi]));
+  };
+  Eigen::Matrix<double, 4, kStateSize> J;
+  for (int j = 0; j < kStateSize; ++j) {
+    const double h = 1e-6 * scale_of(j);
+    GearState xp = q.x, xm = q.x;
+    xp[j] += h;
+    xm[j] -= h;
+    J.col(j) = (forces(xp) - forces(xm)) / (2 * h);
+  }
+  return J;
+}
+
+// CVODE on the quasi-steady problem in its fixed mode: the response to the standard
+// perturbation (no events: the mode does not change).
+struct FixedModeProblem {
+  const GearModel* model;
+  const QuasiSteadyState* q;
+};
+
+int fixed_rhs(sunrealtype, N_Vector y, N_Vector ydot, void* data) {
+  const FixedModeProblem& p = *static_cast<const FixedModeProblem*>(data);
+  GearState x;
+  for (int i = 0; i < kStateSize; ++i) x[i] = NV_Ith_S(y, i);
+  const GearState dx = quasi_steady_rhs(*p.model, *p.q, x);
+  for (int i = 0; i < kStateSize; ++i) {
+    if (!std::isfinite(dx[i])) return 1;
+    NV_Ith_S(ydot, i) = dx[i];
+  }
+  return 0;
+}
+
+struct Cvode {
+  SUNContext ctx = nullptr;
+  N_Vector y = nullptr, atol = nullptr;
+  SUNMatrix A = nullptr;
+  SUNLinearSolver LS = nullptr;
+  void* mem = nullptr;
+  ~Cvode() {
+    if (mem) CVodeFree(&mem);
+    if (LS) SUNLinSolFree(LS);
+    if (A) SUNMatDestroy(A);
+    if (atol) N_VDestroy(atol);
+    if (y) N_VDestroy(y);
+    if (ctx) SUNContext_Free(&ctx);
+  }
+};
+
+void check(int flag, const char* what) {
+  if (flag < 0)
+    throw std::runtime_error(std::string("CVODE ") + what + " failed with flag " +
+                             std::to_string(flag) + " (perturbation run)");
+}
+
+OscillationEstimate perturbation_response(const GearModel& model, const QuasiSteadyState& q,
+                                          const StabilityOptions& o) {
+  FixedModeProblem problem{&model, &q};
+  Cvode cv;
+  check(SUNContext_Create(nullptr, &cv.ctx), "SUNContext_Create");
+  cv.y = N_VNew_Serial(kStateSize, cv.ctx);
+  cv.atol = N_VNew_Serial(kStateSize, cv.ctx);
+  const double rtol = 1e-8;
+  for (int i = 0; i < kStateSize; ++i) {
+    NV_Ith_S(cv.y, i) = q.x[i] + (i == kPsiDot ? o.perturbation_rate_radps : 0.0);
+    NV_Ith_S(cv.atol, i) = rtol * 1e-3 * scale_of(i);
+  }
+  cv.mem = CVodeCreate(CV_BDF, cv.ctx);
+  check(CVodeInit(cv.mem, fixed_rhs, q.t, cv.y), "CVodeInit");
+  check(CVodeSVtolerances(cv.mem, rtol, cv.atol), "CVodeSVtolerances");
+  cv.A = SUNDenseMatrix(kStateSize, kStateSize, cv.ctx);
+  cv.LS = SUNLinSol_Dense(cv.y, cv.A, cv.ctx);
+  check(CVodeSetLinearSolver(cv.mem, cv.LS, cv.A), "CVodeSetLinearSolver");
+  check(CVodeSetUserData(cv.mem, &problem), "CVodeSetUserData");
+  check(CVodeSetMaxNumSteps(cv.mem, 200000), "CVodeSetMaxNumSteps");
+  const double dt = 2.5e-4;
+  const int samples = static_cast<int>(std::ceil(o.perturbation_window_s / dt));
+  std::vector<double> t{0.0}, rate{NV_Ith_S(cv.y, kPsiDot) - q.x[kPsiDot]}, psi{0.0};
+  double tc = q.t;
+  for (int k = 1; k <= samples; ++k) {
+    check(CVode(cv.mem, q.t + k * dt, cv.y, &tc, CV_NORMAL), "CVode");
+    t.push_back(tc - q.t);
+    rate.push_back(NV_Ith_S(cv.y, kPsiDot) - q.x[kPsiDot]);
+    psi.push_back(NV_Ith_S(cv.y, kPsi) - q.x[kPsi]);
+  }
+  return analyse_oscillation(t, rate, psi);
+}
+
+}  // namespace
+
+StabilityReport assess_stability(const GearModel& model_in, StabilityPhase phase,
+                                 const StabilityOptions& options) {
+  const GearModel model = without_drift(model_in);
+  StabilityReport rep;
+  rep.state = quasi_steady_state(model, phase, options.touchdown_slip);
+  const QuasiSteadyState& q = rep.state;
+  const Eigen::MatrixXd A = linearise(model, q);
+  Eigen::EigenSolver<Eigen::MatrixXd> es(A, true);
+  const int n = static_cast<int>(A.rows());
+  std::vector<int> order(static_cast<std::size_t>(n));
+  for (int k = 0; k < n; ++k) order[static_cast<std::size_t>(k)] = k;
+  std::sort(order.begin(), order.end(),
+            [&](int a, int b) { return es.eigenvalues()[a].real() > es.eigenvalues()[b].real(); });
+  for (int k : order) rep.eigenvalues.push_back(es.eigenvalues()[k]);
+  rep.max_real_part = rep.eigenvalues.front().real();
+  // The dominant oscillatory mode: above 0.5 Hz, largest real part.
+  int dominant = -1;
+  for (int k : order) {
+    if (es.eigenvalues()[k].imag() > 2 * std::numbers::pi * 0.5) {
+      dominant = k;
+      break;
+    }
+  }
+  const auto index_of = [&](int state) {
+    for (int k = 0; k < n; ++k)
+      if (q.states[static_cast<std::size_t>(k)] == state) return k;
+    return -1;
+  };
+  const Eigen::Matrix<double, 4, kStateSize> Jc = contact_jacobian(model, q);
+  rep.spin_torque_damping_nms_per_rad = -Jc(2, kPsiDot);
+  rep.drag_slope_ns_per_m = (Jc(0, kSpin) + Jc(0, kSpin2)) / model.config.structure.wheel_radius_m;
+  rep.friction = contact_state(model, q.mode, q.t, q.x).friction;
+  double best_share = -1.0;
+  for (int k : order) {
+    const std::complex<double> ev = es.eigenvalues()[k];
+    if (ev.imag() <= 2 * std::numbers::pi * 0.5) continue;
+    const Eigen::VectorXcd v = es.eigenvectors().col(k);
+    const double share = std::abs(v[index_of(kPsi)]) /
+                         (std::abs(v[index_of(kPsi)]) + std::abs(v[index_of(kY)]) / 0.1);
+    if (share > best_share) {
+      best_share = share;
+      rep.torsion_growth_rate_per_s = ev.real();
+      rep.torsion_frequency_hz = ev.imag() / (2 * std::numbers::pi);
+    }
+  }
+  if (dominant < 0) {
+    rep.growth_rate_per_s = rep.max_real_part;
+  } else {
+    const std::complex<double> ev = es.eigenvalues()[dominant];
+    rep.growth_rate_per_s = ev.real();
+    rep.frequency_hz = ev.imag() / (2 * std::numbers::pi);
+    Eigen::VectorXcd v = es.eigenvectors().col(dominant);
+    const std::complex<double> psi = v[index_of(kPsi)], y = v[index_of(kY)];
+    rep.torsion_share = std::abs(psi) / (std::abs(psi) + std::abs(y) / 0.1);
+    const int ix = index_of(kX);
+    const double fore_aft = ix >= 0 ? std::abs(v[ix]) : 0.0;
+    rep.mode_kind = fore_aft > std::max(std::abs(psi) * 1.0, std::abs(y))
+                        ? "fore-aft"
+                        : (std::abs(psi) * 1.0 >= std::abs(y) ? "torsion" : "lateral");
+    v *= (std::abs(psi) > 1e-300 ? 1e-3 / std::abs(psi) : 1.0);
+    // Complex amplitudes of the contact forces along the mode.
+    Eigen::Vector4cd F = Eigen::Vector4cd::Zero();
+    for (int k = 0; k < n; ++k)
+      F += Jc.col(q.states[static_cast<std::size_t>(k)]).cast<std::complex<double>>() * v[k];
+    const std::complex<double> psi_dot = v[index_of(kPsiDot)], y_dot = v[index_of(kYDot)];
+    const double w = ev.imag();
+    const auto work = [&](std::complex<double> force, std::complex<double> rate) {
+      return std::numbers::pi / w * (force * std::conj(rate)).real();
+    };
+    const GearStructure& g = model.config.structure;
+    rep.energy.spin_torque = work(F[2], psi_dot);
+    rep.energy.trail_lateral_force = work(-g.trail_m * F[1], psi_dot);
+    rep.energy.offset_drag = work(-g.offset_m * F[0], psi_dot);
+    rep.energy.torsional_damping = work(-g.torsional_damping_nms_per_rad * psi_dot, psi_dot);
+    rep.energy.lateral_friction = work(F[3], y_dot);
+    rep.energy.lateral_damping = work(-g.lateral_damping_ns_per_m * y_dot, y_dot);
+  }
+  rep.perturbation_growth_rate_per_s = std::numeric_limits<double>::quiet_NaN();
+  rep.perturbation_frequency_hz = std::numeric_limits<double>::quiet_NaN();
+  if (options.simulate_perturbation && q.converged) {
+    const OscillationEstimate e = perturbation_response(model, q, options);
+    if (e.valid()) {
+      rep.perturbation_growth_rate_per_s = e.growth_rate_per_s;
+      rep.perturbation_frequency_hz = e.frequency_hz;
+    }
+  }
+  return rep;
+}
+
+namespace {
+constexpr std::array<double, 5> kTouchdownSlips{0.9, 0.7, 0.5, 0.3, 0.1};
+}
+
+StabilityReport assess_touchdown(const GearModel& model, const StabilityOptions& options) {
+  if (model.contact == ContactModel::nonholonomic)
+    return assess_stability(model, StabilityPhase::touchdown, options);
+  StabilityOptions quick = options;
+  quick.simulate_perturbation = false;
+  double worst_slip = kTouchdownSlips.front(), worst = -std::numeric_limits<double>::infinity();
+  for (double s : kTouchdownSlips) {
+    quick.touchdown_slip = s;
+    const StabilityReport r = assess_stability(model, StabilityPhase::touchdown, quick);
+    if (r.state.converged && r.growth_rate_per_s > worst) {
+      worst = r.growth_rate_per_s;
+      worst_slip = s;
+    }
+  }
+  StabilityOptions o = options;
+  o.touchdown_slip = worst_slip;
+  return assess_stability(model, StabilityPhase::touchdown, o);
+}
+
+double linear_growth_rate(const GearModel& model, StabilityPhase phase) {
+  StabilityOptions o;
+  o.simulate_perturbation = false;
+  const StabilityReport r = phase == StabilityPhase::touchdown ? assess_touchdown(model, o)
+                                                               : assess_stability(model, phase, o);
+  return r.state.converged ? r.growth_rate_per_s : std::numeric_limits<double>::quiet_NaN();
+}
+
+double classical_critical_damping(const GearModel& model_in) {
+  GearModel model = without_drift(model_in);
+  model.contact = ContactModel::nonholonomic;
+  model.exact.reset();
+  const auto unstable = [&](double c) {
+    model.config.structure.torsional_damping_nms_per_rad = c;
+    const QuasiSteadyState q = quasi_steady_state(model, StabilityPhase::touchdown);
+    const Eigen::MatrixXd A = linearise(model, q);
+    return Eigen::EigenSolver<Eigen::MatrixXd>(A, false).eigenvalues().real().maxCoeff() > 0.0;
+  };
+  if (!unstable(0.0)) return 0.0;
+  double lo = 0.0, hi = 1000.0;
+  while (unstable(hi)) {
+    lo = hi;
+    hi *= 2.0;
+    if (hi > 1e8) throw std::runtime_error("classical_critical_damping: no stable damping found");
+  }
+  for (int i = 0; i < 50; ++i) {
+    const double mid = 0.5 * (lo + hi);
+    (unstable(mid) ? lo : hi) = mid;
+  }
+  return 0.5 * (lo + hi);
+}
+
+}  // namespace contensou
