@@ -41,6 +41,11 @@ struct ShimmyConfig {
        {"scenario.static_load_n", 20.0e3, 140.0e3, 50}}};
 };
 
+// The columns of a landing's CSV history: t, the state vector (kStateSize entries, in the
+// order of the gear's state indices), then the contact's load, patch, slip, friction, forces,
+// brake torque and the rolling flag. The app and the Python package both write these.
+const std::vector<std::string>& history_columns();
+
 // The default configuration as JSON (every key, with its value).
 nlohmann::json to_json(const ShimmyConfig& config);
 
@@ -51,6 +56,7 @@ ShimmyConfig read_shimmy_config(const std::string& path, const std::string& gear
 
 // The same from text in memory; `path` stands for the file in error messages (the Python
 // package reads its configuration objects through this).
-ShimmyConfig parse_shimmy_config(const std::string& text, const std::string& path);
+ShimmyConfig parse_shimmy_config(const std::string& text, const std::string& path,
+                                 const std::string& gear_name = "default");
 
 }  // namespace contensou::app

@@ -27,9 +27,9 @@ constexpr const char* kName = "contensou-shimmy";
 std::string csv_history(const LandingRun& run) {
   std::ostringstream o;
   o.precision(9);
-  o << "t_s,y_m,ydot_mps,psi_rad,psidot_radps,wheel_spin_radps,lambda_m,x_m,xdot_mps,"
-       "wheel_spin2_radps,load_n,patch_radius_m,"
-       "vx_mps,vy_mps,omega_radps,slip_ratio,friction,Fx_n,Fy_n,Mz_nm,brake_nm,rolling\n";
+  const std::vector<std::string>& columns = history_columns();
+  for (std::size_t i = 0; i < columns.size(); ++i) o << (i ? "," : "") << columns[i];
+  o << '\n';
   for (const LandingSample& s : run.samples) {
     o << s.t;
     for (int i = 0; i < kStateSize; ++i) o << ',' << s.x[i];

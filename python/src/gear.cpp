@@ -33,13 +33,6 @@ Cell cell_of(const MapCell& c) {
           c.valid, c.error};
 }
 
-// Every sample of a landing as one row: the columns of contensou-shimmy's CSV history.
-const std::vector<std::string> kHistoryColumns = {
-    "t_s",        "y_m",      "ydot_mps",       "psi_rad", "psidot_radps", "wheel_spin_radps",
-    "lambda_m",   "load_n",   "patch_radius_m", "vx_mps",  "vy_mps",       "omega_radps",
-    "slip_ratio", "friction", "Fx_n",           "Fy_n",    "Mz_nm",        "brake_nm",
-    "rolling"};
-
 nb::dict simulate(const std::string& text, const std::string& model, bool record) {
   const app::ShimmyConfig c = parse(text);
   const ContactModel cm = contact_model_from_string(model);
@@ -50,7 +43,7 @@ nb::dict simulate(const std::string& text, const std::string& model, bool record
     nb::gil_scoped_release release;
     r = simulate_landing(make_gear_model(c.gear, cm), solver, c.criterion);
   }
-  const std::size_t n = r.samples.size(), w = kHistoryColumns.size();
+  const std::size_t n = r.samples.size(), w = app::history_columns().size();
   std::vector<double> h;
   h.reserve(n * w);
   for (const LandingSample& s : r.samples) {
@@ -63,7 +56,7 @@ nb::dict simulate(const std::string& text, const std::string& model, bool record
       h.push_back(v);
   }
   nb::dict d;
-  d["columns"] = kHistoryColumns;
+  d["columns"] = app::history_columns();
   d["history"] = to_numpy(std::move(h), {n, w});
   nb::list events;
   for (const LandingEvent& e : r.events) events.append(nb::make_tuple(e.t, e.what));
