@@ -74,7 +74,7 @@ def exact_curves(profile: str, radius: float, friction: float, psi: np.ndarray):
     m0 = friction * radius * patch.profile.moment(2) / patch.profile.moment(1)
     omega = 1.0 / radius
     r = exact_resultants(ExactModel(patch), psi * radius * omega, 0.0, omega, tolerance=1e-9)
-    return -r.force[:, 0] / friction, -r.force[:, 2] / m0, m0
+    return -r.resultants[:, 0] / friction, -r.resultants[:, 2] / m0, m0
 
 
 def engine_coefficients(profile: str, radius: float, friction: float) -> list[EngineCoefficient]:
@@ -135,3 +135,29 @@ def format_table(rows: list[EngineCoefficient]) -> str:
         lines.append(f"{r.engine:34} {r.parameter:30} {r.value:12.6g}  {r.worst_force_error:11.4f} "
                      f"{r.worst_torque_error:11.4f}  {r.definition}")
     return "\n".join(lines)
+
+
+def main(argv: list[str] | None = None) -> int:
+    """``python -m contensou.engines --profile uniform --radius 0.1 --friction 0.5``"""
+    import argparse
+    import sys
+
+    ap = argparse.ArgumentParser(prog="python -m contensou.engines", description=__doc__.splitlines()[0])
+    ap.add_argument("--profile", default="uniform", help="uniform, hertz or seed-tire")
+    ap.add_argument("--radius", type=float, required=True, help="patch radius R [m]")
+    ap.add_argument("--friction", type=float, required=True, help="friction coefficient f")
+    args = ap.parse_args(argv)
+    try:
+        rows = engine_coefficients(args.profile, args.radius, args.friction)
+    except ValueError as e:
+        print(f"python -m contensou.engines: {e}", file=sys.stderr)
+        return 2
+    print(format_table(rows))
+    print("\nsnippets:")
+    for r in rows:
+        print(f"  {r.engine}: {r.snippet}")
+    return 0
+
+
+if __name__ == "__main__":
+    raise SystemExit(main())
