@@ -150,15 +150,18 @@ class Disk:
     timestep: float = 1e-4
 
 
-def disk_mjcf(disk: Disk, variant: str, regularization: float = 1e-4) -> str:
-    """variant: elliptic | pyramidal (MuJoCo's own, condim 4) | exact | fractional (plugin)."""
+def disk_mjcf(disk: Disk, variant: str, regularization: float = 1e-4, profile: str = "uniform",
+              stiffness: float | None = None) -> str:
+    """variant: elliptic | pyramidal (MuJoCo's own, condim 4) | exact | fractional (plugin, with
+    the patch radius R = disk.radius, or from the normal force if a stiffness is given)."""
     if variant in ("exact", "fractional"):
+        size = (f'<config key="stiffness" value="{stiffness}"/>' if stiffness
+                else f'<config key="radius" value="{disk.radius}"/>')
         ext = (
             '<extension><plugin plugin="contensou.friction"><instance name="patch">'
             '<config key="pairs" value="disk floor"/>'
             f'<config key="friction" value="{disk.friction}"/>'
-            f'<config key="radius" value="{disk.radius}"/>'
-            '<config key="profile" value="uniform"/>'
+            f'{size}<config key="profile" value="{profile}"/>'
             f'<config key="law" value="{variant}"/>'
             f'<config key="regularization" value="{regularization}"/>'
             "</instance></plugin></extension>"

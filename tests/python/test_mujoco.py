@@ -37,24 +37,28 @@ def plugin():
     mc.load_plugin(mujoco)
 
 
-def settled_disk(variant: str, disk: mc.Disk, regularization: float = 1e-4):
-    m = mujoco.MjModel.from_xml_string(mc.disk_mjcf(disk, variant, regularization))
+def settled_disk(variant: str, disk: mc.Disk, regularization: float = 1e-4, **patch):
+    m = mujoco.MjModel.from_xml_string(mc.disk_mjcf(disk, variant, regularization, **patch))
     d = mujoco.MjData(m)
     for _ in range(200):
         mujoco.mj_step(m, d)
     return m, d
 
 
-@pytest.mark.parametrize("variant", ["fractional", "exact"])
-def test_plugin_wrench_equals_library_at_a_frozen_state(variant):
+@pytest.mark.parametrize("variant,profile,stiffness", [
+    ("fractional", "uniform", None), ("exact", "uniform", None),
+    ("fractional", "hertz", 7.25 / 0.05**3), ("exact", "hertz", 7.25 / 0.05**3)])
+def test_plugin_wrench_equals_library_at_a_frozen_state(variant, profile, stiffness):
     disk = mc.Disk(timestep=1e-3)
-    m, d = settled_disk(variant, disk, regularization=1e-3)
+    m, d = settled_disk(variant, disk, regularization=1e-3, profile=profile, stiffness=stiffness)
     d.qvel[:] = [0.31, -0.12, 0.0, 0.0, 0.0, 4.0]  # vx, vy (world), spin about z
     N = 7.25
     d.plugin_state[0] = N  # the normal force of the "previous step"
     mujoco.mj_forward(m, d)
     s = d.plugin_state
-    assert s[1] == N and s[2] == disk.radius
+    # R given, or R = (N / k)^(1/3) from the stiffness k: 0.05 m here.
+    radius = disk.radius if stiffness is None else 0.05
+    assert s[1] == N and s[2] == pytest.approx(radius, rel=1e-12)
 
     # Independent kinematics: the patch centre is the disk's centre projected onto the contact
     # plane (through the mean of the contact points; the floor's normal is z); the disk is flat,
@@ -70,12 +74,14 @@ def test_plugin_wrench_equals_library_at_a_frozen_state(variant):
     vx, vy, omega = v @ t1, v @ ey, w[2]
     assert s[3:6] == pytest.approx([vx, vy, omega], abs=1e-9)
 
-    # The library at that state: uniform patch carrying N.
+    # The library at that state: the patch carrying N; N = 2 pi R^2 p* A^1 (theory.md section 4)
+    # with A^1 = 1/2 (uniform) or 1/3 (Hertz, integral of rho sqrt(1 - rho^2)).
     patch = contensou.ContactPatch()
-    patch.radius_m = disk.radius
+    patch.radius_m = radius
     patch.friction = disk.friction
-    patch.profile = contensou.uniform_profile()
-    patch.reference_pressure_pa = N / (math.pi * disk.radius**2)  # N = 2 pi R^2 p* A^1, A^1 = 1/2
+    patch.profile = contensou.uniform_profile() if profile == "uniform" else contensou.hertz_profile()
+    a1 = 0.5 if profile == "uniform" else 1 / 3
+    patch.reference_pressure_pa = N / (2 * math.pi * radius**2 * a1)
     if variant == "exact":
         want = contensou.exact_resultants(patch, vx, vy, omega, tolerance=1e-12).resultants
     else:
