@@ -189,9 +189,10 @@ def disk_mjcf(disk: Disk, variant: str, regularization: float = 1e-4, profile: s
 
 
 def run_disk(mujoco, disk: Disk, variant: str, v0: float, u0: float, t_end: float,
-             regularization: float = 1e-4, settle: float = 0.05) -> Trajectory:
+             regularization: float = 1e-4, settle: float = 0.05, drop: float = 0.0) -> Trajectory:
     """Settles the disk on the plane for `settle` s, then throws it along x with v0 and spin
-    omega0 = u0 / R; records v = |horizontal velocity|, u = |omega_z| R and the normal force."""
+    omega0 = u0 / R (from `drop` metres above the plane if drop > 0: a landing); records
+    v = |horizontal velocity|, u = |omega_z| R and the normal force."""
     if variant in ("exact", "fractional"):
         load_plugin(mujoco)
     m = mujoco.MjModel.from_xml_string(disk_mjcf(disk, variant, regularization))
@@ -199,6 +200,8 @@ def run_disk(mujoco, disk: Disk, variant: str, v0: float, u0: float, t_end: floa
     for _ in range(int(round(settle / disk.timestep))):
         mujoco.mj_step(m, d)
     d.qvel[:] = 0.0
+    if drop > 0:
+        d.qpos[2] += drop
     d.qvel[0] = v0
     d.qvel[5] = u0 / disk.radius
     n = int(round(t_end / disk.timestep))
