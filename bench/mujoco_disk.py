@@ -79,9 +79,20 @@ def main() -> int:
             lag.append({"case": case, "dt": dt, "max_rel": rel, "impulse_rel": imp,
                         "ratio": tr.ratio_at(0.001), "t_stop": tr.time_at(0.001)})
 
+    # Pure spin (v0 = 0): the spin torque from the deceleration, I domega/dt = Mz, I = M R^2/2,
+    # between 0.02 s and 0.08 s; exact: (2/3) f N R (theory.md section 3).
+    print("\npure spin, omega0 R = 1 m/s: |Mz| / (f N R) from the deceleration (exact 2/3)")
+    spin = {}
+    for k in VARIANTS:
+        tr = run_disk(mujoco, disk, k, 0.0, 1.0, 0.1)
+        i, j = (int(round(t / disk.timestep)) for t in (0.02, 0.08))
+        dudt = (tr.u[j] - tr.u[i]) / (tr.t[j] - tr.t[i])
+        spin[k] = -dudt / (2 * disk.friction * 9.81)  # du/dt = 2 Mz / (M R)
+        print(f"{VARIANTS[k]:44}  {spin[k]:.4f}")
+
     if args.json:
         Path(args.json).parent.mkdir(parents=True, exist_ok=True)
-        Path(args.json).write_text(json.dumps({"rows": rows, "lag": lag}, indent=1))
+        Path(args.json).write_text(json.dumps({"rows": rows, "lag": lag, "pure_spin": spin}, indent=1))
     if args.png:
         import matplotlib
 
