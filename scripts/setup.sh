@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # Installs every dependency from Debian 12's packages, builds contensou in ./build, creates the
 # Python virtual environment .venv with the package `contensou` installed in it (pip install .,
-# python/requirements.txt), and runs the main job on the built-in data.
+# python/requirements.txt, which includes `mujoco` for the MuJoCo plugin in plugins/mujoco), and
+# runs the main job on the built-in data.
 # Usage: scripts/setup.sh   (CONTENSOU_WERROR=ON for CI)
 set -euo pipefail
 cd "$(dirname "$0")/.."
@@ -22,15 +23,18 @@ if ((${#missing[@]})); then
   DEBIAN_FRONTEND=noninteractive $SUDO apt-get install -y -qq --no-install-recommends "${missing[@]}"
 fi
 
+# The Python environment first: python/requirements.txt pins the build requirements, the
+# packages the tests and the example use, and `mujoco`, whose wheels ship MuJoCo's headers and
+# libmujoco.so; CMake finds them there (cmake/FindMuJoCo.cmake) and builds plugins/mujoco.
+[ -x .venv/bin/python ] || python3 -m venv .venv
+.venv/bin/python -m pip install --quiet --disable-pip-version-check -r python/requirements.txt
+
 cmake -S . -B build -G Ninja -DCMAKE_BUILD_TYPE=Release \
   -DCONTENSOU_WERROR="${CONTENSOU_WERROR:-OFF}"
 cmake --build build --parallel
 
-# The Python package in .venv: build requirements and the packages the tests and the example use
-# (pinned in python/requirements.txt), then the extension, built against the same CMake targets
-# in build/python (scikit-build-core, nanobind; warnings as errors with CONTENSOU_WERROR=ON).
-[ -x .venv/bin/python ] || python3 -m venv .venv
-.venv/bin/python -m pip install --quiet --disable-pip-version-check -r python/requirements.txt
+# The Python package in .venv: the extension, built against the same CMake targets in
+# build/python (scikit-build-core, nanobind; warnings as errors with CONTENSOU_WERROR=ON).
 CONTENSOU_WERROR="${CONTENSOU_WERROR:-OFF}" .venv/bin/python -m pip install --quiet \
   --disable-pip-version-check --no-build-isolation .
 .venv/bin/python -c "import contensou; print('python: contensou', contensou.__version__, 'in .venv')"

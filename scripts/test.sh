@@ -19,10 +19,11 @@ ctest --test-dir "$dir" --output-on-failure --parallel 2
 [ "$dir" = build ] || exit 0
 
 # The Python package (scripts/setup.sh installed it into .venv); its tests compare with the
-# apps and a reference program of ./build.
+# apps and a reference program of ./build; -rs prints the reason of a skip (the MuJoCo tests skip
+# only when `mujoco` cannot be imported).
 [ -x .venv/bin/python ] || { echo "test: no .venv; run scripts/setup.sh first" >&2; exit 1; }
 status=0
-CONTENSOU_BUILD_DIR="$PWD/build" .venv/bin/python -m pytest tests/python -q -p no:cacheprovider \
+CONTENSOU_BUILD_DIR="$PWD/build" .venv/bin/python -m pytest tests/python -q -rs -p no:cacheprovider \
   || status=$?
 if [ "$status" -eq 5 ]; then
   echo "test: pytest collected no tests in tests/python" >&2

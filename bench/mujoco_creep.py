@@ -1,0 +1,93 @@
+#!/usr/bin/env python3
+"""Creep: the disk of bench/mujoco_disk.py (R = 0.1 m, f = 0.5, uniform pressure) rests on the
+plane and is loaded below the friction limit by a horizontal force of 0.3 f N and a torque of
+0.3 M0 about the normal (M0 = (2/3) f N R, the pure-spin torque; the pair lies inside the exact
+limit curve, checked below with the closed forms of theory.md section 3), held for 10 s of
+simulated time. A Coulomb contact would not move; the table prints the drift (horizontal
+displacement and rotation about the normal) of MuJoCo's own friction (elliptic and pyramidal
+cones, torsional coefficient (2/3) R f) and of the plugin (fractional law, regularised, at
+several regularisation speeds eps; and the exact law).
+
+Usage: .venv/bin/python bench/mujoco_creep.py [--dt 1e-3] [--seconds 10] [--json out.json]
+"""
+
+from __future__ import annotations
+
+import argparse
+import json
+import math
+import sys
+from pathlib import Path
+
+import numpy as np
+
+sys.path.insert(0, str(Path(__file__).resolve().parent))
+import mujoco  # noqa: E402
+
+from mujoco_common import GRAVITY, Disk, disk_mjcf, load_plugin, uniform_closed_form  # noqa: E402
+
+LOAD = 0.3  # fraction of f N and of M0
+
+
+def inside_limit_curve(load: float) -> bool:
+    """(load F0, load M0) inside the exact limit curve {(F_par, |Mz|)(eps)} (convex): the point is
+    inside iff it is below the curve where the curve's F_par equals load F0."""
+    eps = np.geomspace(1e-4, 1e4, 4001)
+    fm = np.array([uniform_closed_form(e) for e in eps])
+    f, m = fm[:, 0], fm[:, 1] / (2 / 3)
+    return bool(np.interp(load, f, m) > load)
+
+
+def run(variant: str, dt: float, seconds: float, eps: float = 1e-4) -> tuple[float, float, float]:
+    disk = Disk(timestep=dt)
+    if variant in ("exact", "fractional"):
+        load_plugin(mujoco)
+    m = mujoco.MjModel.from_xml_string(disk_mjcf(disk, variant, eps))
+    d = mujoco.MjData(m)
+    for _ in range(int(round(0.2 / dt))):  # settle
+        mujoco.mj_step(m, d)
+    N = float(m.body_mass[1]) * GRAVITY
+    F0, M0 = disk.friction * N, 2 / 3 * disk.friction * N * disk.radius
+    x0, yaw0 = d.qpos[:3].copy(), 0.0
+    d.xfrc_applied[1, 0] = LOAD * F0  # force along x at the centre of mass
+    d.xfrc_applied[1, 5] = LOAD * M0  # torque about z
+    yaw = 0.0
+    for _ in range(int(round(seconds / dt))):
+        mujoco.mj_step(m, d)
+        yaw += d.qvel[5] * dt  # body-frame spin = world spin while flat
+    drift = float(np.hypot(*(d.qpos[:2] - x0[:2])))
+    return drift, yaw - yaw0, drift / seconds
+
+
+def main() -> int:
+    ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    ap.add_argument("--dt", type=float, default=1e-3)
+    ap.add_argument("--seconds", type=float, default=10.0)
+    ap.add_argument("--json", default=None)
+    args = ap.parse_args()
+    for name in ("dt", "seconds"):
+        if not (getattr(args, name) > 0):
+            ap.error(f"--{name} = {getattr(args, name)}: must be positive")
+    print(f"creep: disk R = 0.1 m, f = 0.5, load {LOAD} f N and {LOAD} M0 "
+          f"(inside the exact limit curve: {inside_limit_curve(LOAD)}), {args.seconds} s, "
+          f"dt = {args.dt} s, MuJoCo {mujoco.__version__}")
+    cases = [("MuJoCo elliptic cone, mu_t = 2/3 R f", "elliptic", None),
+             ("MuJoCo pyramidal cone, mu_t = 2/3 R f", "pyramidal", None)]
+    cases += [(f"plugin fractional, eps = {e:g} m/s", "fractional", e) for e in (1e-2, 1e-3, 1e-4)]
+    cases += [("plugin exact law", "exact", None)]
+    print(f"{'model':42} {'drift [mm]':>12} {'rotation [mrad]':>16}")
+    rows = []
+    for label, variant, eps in cases:
+        drift, rot, _ = run(variant, args.dt, args.seconds, eps or 1e-4)
+        print(f"{label:42} {drift * 1e3:12.4g} {rot * 1e3:16.4g}")
+        rows.append({"model": label, "drift_m": drift, "rotation_rad": rot})
+    print("(fractional law, steady creep where F0 v / sqrt(v^2 + eps^2) = 0.3 F0: "
+          f"v = {LOAD / math.sqrt(1 - LOAD**2):.3f} eps)")
+    if args.json:
+        Path(args.json).parent.mkdir(parents=True, exist_ok=True)
+        Path(args.json).write_text(json.dumps(rows, indent=1))
+    return 0
+
+
+if __name__ == "__main__":
+    raise SystemExit(main())
