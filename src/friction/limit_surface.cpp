@@ -53,6 +53,30 @@ struct ScaledExact {
     }
     return 0.5 * (H + H.transpose()) / n;
   }
+  // The cheaper Hessian the Newton iterations use (the exact one is not needed for
+  // convergence): H u = 0 for a degree-1 function, so H = P B P^T with P an orthonormal basis
+  // of u's orthogonal plane and B = P^T H P from two forward differences of the gradient
+  // (g = grad Dhat(t), already known), step 1e-6: error about 1e-6 relative.
+  Mat3 hess_newton(const Vec3& t, const Vec3& g) const {
+    const double n = t.norm();
+    if (n == 0.0) return Mat3::Zero();
+    const Vec3 u = t / n;
+    const Vec3 a = std::abs(u[0]) < 0.9 ? Vec3::UnitX() : Vec3::UnitY();
+    Eigen::Matrix<double, 3, 2> P;
+    P.col(0) = (a - a.dot(u) * u).normalized();
+    P.col(1) = u.cross(P.col(0)).normalized();
+    constexpr double h = 1e-6;
+    Eigen::Matrix<double, 3, 2> HP;
+    for (int k = 0; k < 2; ++k) {
+      Vec3 gk;
+      double d;
+      eval(u + h * P.col(k), d, gk);
+      HP.col(k) = (gk - g) / h;
+    }
+    Eigen::Matrix2d B = P.transpose() * HP;
+    B = 0.5 * (B + B.transpose());
+    return P * B * P.transpose() / n;
+  }
 };
 
 // The ellipsoid: Dhat_E(t) = sqrt(t1^2 + t2^2 + l^2 t3^2), l = L / R, scaled by its own F.
@@ -81,6 +105,7 @@ struct ScaledEllipsoid {
     // H = (Lambda - g g^T) / D.
     return (Mat3(lambda().asDiagonal()) - g * g.transpose()) / d;
   }
+  Mat3 hess_newton(const Vec3& t, const Vec3&) const { return hess(t); }
 };
 
 Mat3 scaling(double scale, double radius) {
@@ -126,7 +151,7 @@ Gauge scaled_gauge(const S& surf, const Vec3& W) {
     out.iterations = it + 1;
     const Eigen::Vector2d rg = P.transpose() * g;
     if (rg.norm() <= 1e-11 * std::max(1.0, g.norm())) break;
-    const Eigen::Matrix2d H = P.transpose() * surf.hess(t) * P;
+    const Eigen::Matrix2d H = P.transpose() * surf.hess_newton(t, g) * P;
     const Eigen::Vector2d dz = newton_direction<2>(H, rg);
     double alpha = 1.0;
     bool moved = false;
@@ -186,7 +211,7 @@ Projection scaled_project(const S& surf, const Vec3& Wt, const Mat3& Ghat,
       out.converged = true;
       break;
     }
-    const Mat3 H = Q + surf.hess(t);
+    const Mat3 H = Q + surf.hess_newton(t, g);
     const Vec3 dt = newton_direction<3>(H, grad);
     double alpha = 1.0;
     bool moved = false;

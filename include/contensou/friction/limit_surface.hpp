@@ -63,6 +63,16 @@ double dissipation(const LimitSurface& surface, const Eigen::Vector3d& twist);
 // H s = 0 to that accuracy, as a degree-1 function must).
 Dissipation dissipation_with_derivatives(const LimitSurface& surface, const Eigen::Vector3d& twist);
 
+// grad D templated on the scalar, for automatic differentiation: with T = ceres::Jet (or any
+// type exact_resultants accepts) its derivatives are the exact Hessian of D, d2D/ds2 = -dw/ds.
+// promote<T>(surface.model) gives the model.
+template <class T>
+Eigen::Matrix<T, 3, 1> dissipation_gradient(const ExactModel<T>& model, const Kinematics<T>& k,
+                                            const ExactOptions& options = {}) {
+  const Resultants<T> r = exact_resultants(model, k, options).resultants;
+  return {-r.Fx, -r.Fy, -r.Mz};  // grad D = -(Fx, Fy, Mz) (Goyal et al. 1991)
+}
+
 // The support function of C in direction d (a twist): max_{w in C} w.d = D(d).
 double support(const LimitSurface& surface, const Eigen::Vector3d& direction);
 
