@@ -113,6 +113,14 @@ TEST(ContactStep, StaysAtRestUnderALoadInsideTheLimitWhereTheRegularisedLawCreep
     x_f += h * tw_f;
   }
   EXPECT_EQ(x, Vec3::Zero());  // no creep: exactly at rest
+  // A force and a torque together (gauge 0.58), 10 s: at rest too.
+  const Vec3 combined(0.3 * fN, 0.2 * fN, 0.4 * law.M0);
+  Vec3 tc = Vec3::Zero(), xc = Vec3::Zero();
+  for (int i = 0; i < 1000; ++i) {
+    tc = moreau_jean_step(s, body, tc, combined, h).twist;
+    xc += h * tc;
+  }
+  EXPECT_EQ(xc, Vec3::Zero());
   // Creep of the regularised law: F0 v / sqrt(v^2 + eps^2) = 0.5 F0, v = eps / sqrt(3).
   const double creep = law.regularization_speed / std::sqrt(3.0);
   EXPECT_NEAR(tw_f[0], creep, 1e-3 * creep);

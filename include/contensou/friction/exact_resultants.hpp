@@ -538,7 +538,7 @@ std::array<T, 3> chord_moments_falling(const ExactModel<T>& m, const Chord<T>& c
   const T B = m.kx * c.ex + m.ky * c.ey;              // its slope per unit w = tau / R
   const bool angle = m.sqrt_edge;
   auto f = [&](const double* x, int n, int, Sample<T, 3>* out) {
-    std::array<T, kKronrodPoints> tau, jac, t, p;
+    std::array<T, kKronrodPoints> tau{}, jac{}, t{}, p{};  // {}: GCC -O1 -Wmaybe-uninitialized
     for (int i = 0; i < n; ++i) {
       if (angle) {
         const double cs = std::cos(x[i]);

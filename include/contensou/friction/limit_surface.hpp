@@ -94,7 +94,9 @@ Gauge gauge(const LimitSurface& surface, const Eigen::Vector3d& wrench);
 //   w* = argmin_{w in C} (w - w_t)^T G (w - w_t),
 // solved through its dual over twists (Moreau): t* minimises the strongly convex
 //   phi(t) = 1/2 t^T G^-1 t - w_t.t + D(t)
-// (0 iff w_t is inside), by Newton's method with an Armijo line search started on the ray
+// (0 iff w_t is inside), by Newton's method (Hessian of D from two forward differences of the
+// exact gradient in the plane orthogonal to t, as H t = 0; about 1e-6 relative, which only
+// slows the final convergence) with an Armijo line search started on the ray
 // of the gauge's normal where phi < 0 = phi(0), so that the iterates never reach the kink of D
 // at 0. Then w* = grad D(t*) (on the surface, normality exact) and twist = G (w* - w_t)
 // (= -t*), whose resultant is w* (maximum dissipation). A trial with gauge <= 1 +
