@@ -9,6 +9,7 @@
 // projection's convergence on random trials. With out_dir, writes sections of the limit
 // surfaces (CSV) for examples/limit_surface_sections.gp.
 #include <Eigen/LU>
+#include <Eigen/QR>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
@@ -16,6 +17,7 @@
 #include <numbers>
 #include <random>
 #include <string>
+#include <vector>
 
 #include "contensou/friction.hpp"
 
@@ -244,8 +246,57 @@ int main(int argc, char** argv) {
     std::printf(
         "\n(5) projection, %d random trials (|w_t| 0.1 ... 1000 f N, random SPD "
         "metrics): %d inside, %d not converged, at most %d Newton iterations (gauge + "
-        "projection), largest final |grad phi| %.2g f N (tolerance 1e-10)\n",
+        "projection), largest final |grad phi| / (f N + |w_t|) %.2g (tolerance 1e-10)\n",
         trials, inside, failed, worst_it, worst_res);
+  }
+
+  // (6) Extreme trials and ill-conditioned metrics: |w_t| from 1e-8 to 1e250 f N, metric
+  // condition numbers 1 to 1e12 (eigenvectors random), 10 trials each. Optimality checked by
+  // the variational inequality against 961 boundary samples w: the largest cosine between
+  // w - w* and G (w_t - w*) (<= 0 for the exact projection).
+  {
+    ContactPatch p = seed(0.14);
+    const LimitSurface s = make_limit_surface(p);
+    const double fN = s.force_scale, R = s.radius;
+    std::vector<Vec3> samples;
+    for (int i = 0; i <= 30; ++i)
+      for (int j = 0; j < 30; ++j) {
+        const double th = std::numbers::pi * i / 30, ph = 2 * std::numbers::pi * j / 30;
+        samples.push_back(surface_point(
+            s, Vec3(std::sin(th) * std::cos(ph), std::sin(th) * std::sin(ph), std::cos(th) / R)));
+      }
+    std::mt19937 rng(5);
+    std::normal_distribution<double> n01;
+    std::printf("\n(6) extreme trials (|w_t| 1e-8 ... 1e250 f N) and metric condition numbers:\n");
+    for (double cond : {1.0, 1e4, 1e8, 1e12}) {
+      int n = 0, failed = 0, maxit = 0;
+      double vi = -1.0;
+      for (double mag : {1e-8, 1e-3, 1.0, 1e3, 1e8, 1e20, 1e60, 1e150, 1e250})
+        for (int k = 0; k < 10; ++k) {
+          Eigen::Matrix3d A;
+          for (int q = 0; q < 9; ++q) A(q / 3, q % 3) = n01(rng);
+          const Eigen::Matrix3d U = Eigen::HouseholderQR<Eigen::Matrix3d>(A).householderQ();
+          const Vec3 sc(1.0, 1.0, 1.0 / R);
+          Eigen::Matrix3d G = sc.asDiagonal() * U * Vec3(1.0, std::sqrt(cond), cond).asDiagonal() *
+                              U.transpose() * sc.asDiagonal();
+          G = 0.5 * (G + G.transpose());
+          const Vec3 wt = mag * Vec3(n01(rng) * fN, n01(rng) * fN, n01(rng) * fN * R);
+          const Projection pr = project(s, wt, G);
+          ++n;
+          failed += !pr.converged || !pr.wrench.allFinite();
+          maxit = std::max(maxit, pr.iterations);
+          if (pr.inside) continue;
+          for (const Vec3& w : samples) {
+            const Vec3 a = w - pr.wrench, b = G * (wt - pr.wrench);
+            if (a.norm() > 0.0 && b.norm() > 0.0)
+              vi = std::max(vi, a.dot(b) / (a.norm() * b.norm()));
+          }
+        }
+      std::printf(
+          "  cond %g: %d trials, %d not converged, at most %d iterations, largest "
+          "variational-inequality cosine %.2g\n",
+          cond, n, failed, maxit, vi);
+    }
   }
 
   if (!dir.empty()) {

@@ -5,6 +5,7 @@
 #include <Eigen/LU>
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <numbers>
 #include <string>
 
@@ -24,7 +25,7 @@ struct ScaledExact {
   double scale() const { return s.force_scale; }
   // Dhat and its gradient at t; degree 1: evaluated at t/|t| (the integrals are degree 0).
   void eval(const Vec3& t, double& d, Vec3& g) const {
-    const double n = t.norm();
+    const double n = t.stableNorm();
     if (n == 0.0) {
       d = 0.0;
       g.setZero();
@@ -36,47 +37,42 @@ struct ScaledExact {
     g = -Vec3(r.Fx, r.Fy, r.Mz / s.radius) / s.force_scale;
     d = n * g.dot(u);  // Euler: Dhat = t . grad Dhat
   }
-  // Central differences of the exact gradient on the unit sphere; the Hessian of a degree-1
-  // function scales as 1/|t|.
-  Mat3 hess(const Vec3& t) const {
-    const double n = t.norm();
-    if (n == 0.0) return Mat3::Zero();
-    const Vec3 u = t / n;
-    const double h = s.hessian_step;
-    Mat3 H;
-    for (int j = 0; j < 3; ++j) {
-      Vec3 gp, gm;
-      double d;
-      eval(u + h * Vec3::Unit(j), d, gp);
-      eval(u - h * Vec3::Unit(j), d, gm);
-      H.col(j) = (gp - gm) / (2.0 * h);
-    }
-    return 0.5 * (H + H.transpose()) / n;
-  }
-  // The cheaper Hessian the Newton iterations use (the exact one is not needed for
-  // convergence): H u = 0 for a degree-1 function, so H = P B P^T with P an orthonormal basis
-  // of u's orthogonal plane and B = P^T H P from two forward differences of the gradient
-  // (g = grad Dhat(t), already known), step 1e-6: error about 1e-6 relative.
-  Mat3 hess_newton(const Vec3& t, const Vec3& g) const {
-    const double n = t.norm();
+  // The Hessian from differences of the exact gradient. A degree-1 function has H u = 0
+  // (u = t/|t|) and H(t) = H(u)/|t|, so H = P B P^T / |t| with P an orthonormal basis of the
+  // plane orthogonal to u and B = P^T H P from differences along P's two columns: central
+  // (step hessian_step, error O(h^2) + O(tolerance/h), about 1e-8 relative) for the reported
+  // Hessian, forward (step 1e-6, about 1e-6 relative; g = grad Dhat(t) is known) for the Newton
+  // iterations. Keeping H u = 0 exact matters: an error along u would be amplified by the
+  // inverse of the metric's smallest eigenvalue in the projection.
+  Mat3 hess_impl(const Vec3& t, const Vec3* g) const {
+    const double n = t.stableNorm();
     if (n == 0.0) return Mat3::Zero();
     const Vec3 u = t / n;
     const Vec3 a = std::abs(u[0]) < 0.9 ? Vec3::UnitX() : Vec3::UnitY();
     Eigen::Matrix<double, 3, 2> P;
     P.col(0) = (a - a.dot(u) * u).normalized();
     P.col(1) = u.cross(P.col(0)).normalized();
-    constexpr double h = 1e-6;
     Eigen::Matrix<double, 3, 2> HP;
     for (int k = 0; k < 2; ++k) {
-      Vec3 gk;
+      Vec3 gp, gm;
       double d;
-      eval(u + h * P.col(k), d, gk);
-      HP.col(k) = (gk - g) / h;
+      if (g != nullptr) {
+        constexpr double h = 1e-6;
+        eval(u + h * P.col(k), d, gp);
+        HP.col(k) = (gp - *g) / h;
+      } else {
+        const double h = s.hessian_step;
+        eval(u + h * P.col(k), d, gp);
+        eval(u - h * P.col(k), d, gm);
+        HP.col(k) = (gp - gm) / (2.0 * h);
+      }
     }
     Eigen::Matrix2d B = P.transpose() * HP;
     B = 0.5 * (B + B.transpose());
     return P * B * P.transpose() / n;
   }
+  Mat3 hess(const Vec3& t) const { return hess_impl(t, nullptr); }
+  Mat3 hess_newton(const Vec3& t, const Vec3& g) const { return hess_impl(t, &g); }
 };
 
 // The ellipsoid: Dhat_E(t) = sqrt(t1^2 + t2^2 + l^2 t3^2), l = L / R, scaled by its own F.
@@ -90,12 +86,16 @@ struct ScaledEllipsoid {
   }
   void eval(const Vec3& t, double& d, Vec3& g) const {
     const Vec3 L = lambda();
-    d = std::sqrt(t.dot(L.cwiseProduct(t)));
-    if (d == 0.0) {
+    const double n = t.stableNorm();  // degree 1: on the unit sphere, no overflow
+    if (n == 0.0) {
+      d = 0.0;
       g.setZero();
       return;
     }
-    g = L.cwiseProduct(t) / d;
+    const Vec3 u = t / n;
+    const double du = std::sqrt(u.dot(L.cwiseProduct(u)));
+    d = n * du;
+    g = L.cwiseProduct(u) / du;
   }
   Mat3 hess(const Vec3& t) const {
     double d;
@@ -135,7 +135,7 @@ Eigen::Matrix<double, N, 1> newton_direction(const Eigen::Matrix<double, N, N>& 
 template <class S>
 Gauge scaled_gauge(const S& surf, const Vec3& W) {
   Gauge out;
-  const double nW = W.norm();
+  const double nW = W.stableNorm();
   if (nW == 0.0) return out;
   const Vec3 e = W / nW;
   // Orthonormal basis of the plane e.t = 0.
@@ -192,7 +192,19 @@ Projection scaled_project(const S& surf, const Vec3& Wt, const Mat3& Ghat,
     out.wrench = Wt;
     return out;
   }
+  // Beyond |W_t| = 1e100 phi could overflow; there the projection is the support point of
+  // the direction Ghat W_t (the limit of the projection of lambda W_t as lambda -> infinity),
+  // to a relative error O(cond(Ghat) / |W_t|).
+  const double nWt = Wt.stableNorm();
+  if (nWt > 1e100) {
+    Vec3 g;
+    double d;
+    surf.eval(Ghat * (Wt / nWt), d, g);
+    out.wrench = g;
+    return out;
+  }
   const Mat3 Q = Ghat.llt().solve(Mat3::Identity());
+  const double Qnorm = Q.cwiseAbs().rowwise().sum().maxCoeff();  // infinity norm
   const Vec3 u = gg.normal;
   Vec3 g;
   double d;
@@ -205,13 +217,21 @@ Projection scaled_project(const S& surf, const Vec3& Wt, const Mat3& Ghat,
   double phi = phi_of(t, d);
   Vec3 grad = Q * t - Wt + g;
   out.converged = false;
+  // Tolerance relative to f N + |W_t| (round-off of Q t - W_t for a large trial).
+  const double tol = opt.tolerance * (1.0 + nWt);
+  bool accurate = false;  // the central-difference Hessian, once the cheap one stalls
   for (int it = 0; it < opt.max_iterations; ++it) {
     ++out.iterations;
-    if (grad.norm() <= opt.tolerance) {
+    // ... plus the round-off floor of Q t: for a large metric t is large (|t| ~ |Ghat| |W_t -
+    // W*|), and its last bit times |Q| bounds how small grad phi can be computed. W* = grad
+    // Dhat(t) depends only on t's direction and is then accurate to that relative round-off.
+    const double floor = 2.0 * std::numeric_limits<double>::epsilon() * Qnorm * t.norm();
+    if (grad.norm() <= tol + floor) {
       out.converged = true;
       break;
     }
-    const Mat3 H = Q + surf.hess_newton(t, g);
+    const double before = grad.norm();
+    const Mat3 H = Q + (accurate ? surf.hess(t) : surf.hess_newton(t, g));
     const Vec3 dt = newton_direction<3>(H, grad);
     double alpha = 1.0;
     bool moved = false;
@@ -235,10 +255,18 @@ Projection scaled_project(const S& surf, const Vec3& Wt, const Mat3& Ghat,
       }
       alpha *= 0.5;
     }
-    if (!moved) break;
+    if (!moved) {
+      if (accurate) break;
+      accurate = true;
+      continue;
+    }
+    // Slow (linear) convergence: the cheap Hessian's error dominates (an ill-conditioned metric).
+    if (grad.norm() > 0.25 * before) accurate = true;
   }
-  if (!out.converged && grad.norm() <= opt.tolerance) out.converged = true;
-  out.residual = grad.norm();
+  if (!out.converged &&
+      grad.norm() <= tol + 2.0 * std::numeric_limits<double>::epsilon() * Qnorm * t.norm())
+    out.converged = true;
+  out.residual = grad.norm() / (1.0 + nWt);
   out.wrench = g;  // grad Dhat(t*): on the surface, with normal t*
   return out;
 }

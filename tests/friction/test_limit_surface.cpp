@@ -315,3 +315,40 @@ TEST(LimitSurface, BadInputIsRejectedWithTheParameterNamed) {
   }
   EXPECT_THROW(make_limit_surface(uniform_patch(), 0.1), InvalidArgument);
 }
+
+// Every trial converges, from 1e-8 to 1e200 times f N, in metrics with condition numbers 1 and
+// 1e8: the result is on the surface, and normality holds (the resultant of the returned twist
+// is the returned wrench, an independent exact integral) to the dual's round-off floor, about
+// cond x 1e-16 relative (1e-5 of f N allowed at cond 1e8, 1e-8 at cond 1).
+TEST(LimitSurface, ProjectionConvergesForExtremeTrialsAndIllConditionedMetrics) {
+  ContactPatch p = shifted_seed();
+  const LimitSurface s = make_limit_surface(p);
+  const ExactModel<double> m = make_exact_model(p);
+  const double fN = s.force_scale, R = s.radius;
+  Mat3 U;  // a fixed rotation
+  U << 0.36, 0.48, -0.8, -0.8, 0.6, 0.0, 0.48, 0.64, 0.6;
+  const Vec3 sc(1.0, 1.0, 1.0 / R);
+  for (double cond : {1.0, 1e8}) {
+    const Mat3 G0 = sc.asDiagonal() * U * Vec3(1.0, std::sqrt(cond), cond).asDiagonal() *
+                    U.transpose() * sc.asDiagonal();
+    const Mat3 G = 0.5 * (G0 + G0.transpose());
+    for (double mag : {1e-8, 1.5, 1e3, 1e20, 1e200}) {
+      const Vec3 wt = mag * Vec3(0.6 * fN, -0.7 * fN, 0.4 * fN * R);
+      const Projection pr = project(s, wt, G);
+      EXPECT_TRUE(pr.converged) << mag << " " << cond;
+      if (pr.inside) {
+        EXPECT_LT(mag, 1.0);
+        continue;
+      }
+      ASSERT_TRUE(pr.wrench.allFinite() && pr.twist.allFinite()) << mag << " " << cond;
+      EXPECT_NEAR(gauge(s, pr.wrench).value, 1.0, 1e-9) << mag << " " << cond;
+      const Vec3 n = pr.twist / pr.twist.stableNorm();
+      const Resultants<double> r =
+          exact_resultants(m, Kinematics<double>{n[0], n[1], n[2]}, {1e-12}).resultants;
+      const double tol = cond > 1.0 ? 1e-5 : 1e-8;
+      EXPECT_NEAR(r.Fx, pr.wrench[0], tol * fN) << mag << " " << cond;
+      EXPECT_NEAR(r.Fy, pr.wrench[1], tol * fN) << mag << " " << cond;
+      EXPECT_NEAR(r.Mz, pr.wrench[2], tol * fN * R) << mag << " " << cond;
+    }
+  }
+}

@@ -58,9 +58,9 @@ struct Dissipation {
 // D(s) = -(F.v + Mz omega) (Euler's relation for a degree-1 function, with grad D = -wrench).
 double dissipation(const LimitSurface& surface, const Eigen::Vector3d& twist);
 // Value, gradient (exact integrals, error <= tolerance f N) and Hessian (central differences
-// of the exact gradient on the unit sphere of scaled twists, step h = hessian_step: error
-// O(h^2) + O(tolerance / h), about 1e-8 relative to f N / |t| with the defaults; it satisfies
-// H s = 0 to that accuracy, as a degree-1 function must).
+// of the exact gradient along two directions orthogonal to the scaled twist t, step h =
+// hessian_step: error O(h^2) + O(tolerance / h), about 1e-8 relative to f N / |t| with the
+// defaults; H s = 0 holds exactly, as for any degree-1 function).
 Dissipation dissipation_with_derivatives(const LimitSurface& surface, const Eigen::Vector3d& twist);
 
 // grad D templated on the scalar, for automatic differentiation: with T = ceres::Jet (or any
@@ -105,7 +105,7 @@ Gauge gauge(const LimitSurface& surface, const Eigen::Vector3d& wrench);
 // In a Moreau-Jean step with Delassus matrix A = h M^-1 (twist change per unit wrench) and
 // free twist s_free, G = A and w_t = -A^-1 s_free give the new twist s+ = twist = s_free + A w*.
 struct ProjectionOptions {
-  double tolerance = 1e-10;         // on |grad phi|, relative to f N (a scaled wrench)
+  double tolerance = 1e-10;         // on |grad phi|, relative to f N + |w_t| (scaled wrenches)
   double inside_tolerance = 1e-10;  // on the gauge
   int max_iterations = 60;
 };
@@ -114,7 +114,7 @@ struct Projection {
   Eigen::Vector3d twist = Eigen::Vector3d::Zero();   // G (w* - w_t); 0 if inside
   bool inside = false;                               // the trial was admissible (stick)
   double gauge = 0.0;                                // gauge of the trial
-  double residual = 0.0;  // final |grad phi| relative to f N (0 if inside)
+  double residual = 0.0;  // final |grad phi| / (f N + |w_t|), scaled (0 if inside)
   int iterations = 0;     // Newton iterations (gauge + projection)
   bool converged = true;
 };
