@@ -102,6 +102,23 @@ double farkas_ratio_relative(const LimitSurface& s, double c) {
   return tw[0] / tw[2];
 }
 
+// The fixed point of v/(omega R) from Contensou's closed forms (theory.md section 3): equal
+// relative decay of v and omega R, F_par = 2 eps |Mz| / R for M = R = 1, I = 1/2.
+double closed_form_ratio() {
+  auto g = [](double e) {
+    const double K = std::comp_ellint_1(e), E = std::comp_ellint_2(e);
+    const double fpar = 4 / (3 * std::numbers::pi) * ((1 + e * e) * E - (1 - e * e) * K) / e;
+    const double mz = 4 / (9 * std::numbers::pi) * ((4 - 2 * e * e) * E - (1 - e * e) * K);
+    return fpar - 2 * e * mz;
+  };
+  double lo = 0.3, hi = 0.95;
+  for (int i = 0; i < 100; ++i) {
+    const double mid = 0.5 * (lo + hi);
+    (g(lo) * g(mid) <= 0 ? hi : lo) = mid;
+  }
+  return 0.5 * (lo + hi);
+}
+
 // A section of a surface by the plane spanned by two unit wrench directions a, b (in scaled
 // wrench coordinates (Fx, Fy, Mz/R)/(f N)): boundary points along rays, by the gauge.
 template <class Surface>
@@ -186,10 +203,13 @@ int main(int argc, char** argv) {
       std::printf("  h = %g: ratio %.5f (error %+.5f), both stop on the same step: %s\n", h, r,
                   r - 0.6530, together ? "yes" : "no");
     }
+    const double ref = closed_form_ratio();
     for (double c : {0.04, 0.02, 0.01}) {
       const double r = farkas_ratio_relative(s, c);
-      std::printf("  relative step h = %g (v + omega R) / (f g): ratio %.7f (error %+.2e)\n", c, r,
-                  r - 0.6530);
+      std::printf(
+          "  relative step h = %g (v + omega R) / (f g): ratio %.9f (closed-form fixed "
+          "point %.9f, difference %+.1e)\n",
+          c, r, ref, r - ref);
     }
   }
 
