@@ -9,6 +9,7 @@
 #include "contensou/friction/exact_resultants.hpp"
 #include "contensou/friction/fractional_law.hpp"
 #include "contensou/friction/kinematics.hpp"
+#include "contensou/friction/limit_surface.hpp"
 #include "contensou/friction/model_error.hpp"
 #include "contensou/friction/pressure_profile.hpp"
 #include "contensou/friction/quadrature.hpp"

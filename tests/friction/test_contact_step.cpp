@@ -1,0 +1,177 @@
+// One contact integrated by Moreau-Jean with the exact limit surface (issue 15, item 3):
+// (a) stick without creep under a load inside the limit, beside the regularised law's creep
+// (oracle: its closed-form creep speed); (b) a load just outside starts the motion the
+// maximum-dissipation law gives (oracle: the implicit Euler equation with the exact resultants);
+// (c) the sliding-spinning uniform disk stops both motions together at v/(omega R) = 0.6530
+// (oracle: the closed forms of theory.md section 3, Farkas et al. 2003), at two step sizes.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <numbers>
+#include <string>
+
+#include <Eigen/LU>
+
+#include "contensou/friction/limit_surface.hpp"
+
+using namespace contensou;
+using Vec3 = Eigen::Vector3d;
+
+namespace {
+
+// Units: M = R = mu g = 1 (f N = 1), I = M R^2 / 2.
+ContactPatch unit_disk() {
+  ContactPatch p;
+  p.radius_m = 1.0;
+  p.reference_pressure_pa = 1.0 / std::numbers::pi;
+  p.friction = 1.0;
+  p.profile = uniform_profile();
+  return p;
+}
+
+// The fixed point of v/(omega R) from the closed forms (as tests/gear/test_sliding_disk.cpp).
+double closed_form_fixed_point() {
+  auto g = [](double e) {
+    const double K = std::comp_ellint_1(e), E = std::comp_ellint_2(e);
+    const double fpar = 4 / (3 * std::numbers::pi) * ((1 + e * e) * E - (1 - e * e) * K) / e;
+    const double mz = 4 / (9 * std::numbers::pi) * ((4 - 2 * e * e) * E - (1 - e * e) * K);
+    return fpar - 2 * e * mz;
+  };
+  double lo = 0.3, hi = 0.95;
+  for (int i = 0; i < 100; ++i) {
+    const double mid = 0.5 * (lo + hi);
+    (g(lo) * g(mid) <= 0 ? hi : lo) = mid;
+  }
+  return 0.5 * (lo + hi);
+}
+
+struct Stop {
+  double ratio = 0.0;           // v / (omega R) at the last step before both are zero
+  double t_v = 0.0, t_w = 0.0;  // first time v, omega reach zero
+  int steps = 0;
+};
+
+Stop slide_to_rest(const LimitSurface& s, double h) {
+  const PlanarBody body{1.0, 0.5};
+  Vec3 tw(1.0, 0.0, 1.0);
+  Stop out;
+  for (int i = 1; i < 100000; ++i) {
+    const ContactStep st = moreau_jean_step(s, body, tw, Vec3::Zero(), h);
+    if (out.t_v == 0.0 && st.twist[0] <= 0.0) out.t_v = i * h;
+    if (out.t_w == 0.0 && st.twist[2] <= 0.0) out.t_w = i * h;
+    if (st.twist.norm() == 0.0) {
+      out.steps = i;
+      break;
+    }
+    out.ratio = st.twist[0] / st.twist[2];
+    tw = st.twist;
+  }
+  return out;
+}
+
+// The same disk with a step proportional to its speed, h = c (v + omega R) / (f g): by the
+// homogeneity of the law the ratio obeys an autonomous map, whose fixed point is that of the
+// continuous motion (at the fixed ratio the implicit step scales v and omega R alike).
+double relative_step_ratio(const LimitSurface& s, double c) {
+  const PlanarBody body{1.0, 0.5};
+  Vec3 tw(1.0, 0.0, 1.0);
+  while (tw[0] + tw[2] > 1e-12) {
+    const ContactStep st = moreau_jean_step(s, body, tw, Vec3::Zero(), c * (tw[0] + tw[2]));
+    if (st.twist.norm() == 0.0) break;
+    tw = st.twist;
+  }
+  return tw[0] / tw[2];
+}
+
+}  // namespace
+
+TEST(ContactStep, StaysAtRestUnderALoadInsideTheLimitWhereTheRegularisedLawCreeps) {
+  ContactPatch p = seed_tire_patch();
+  p.profile.keep_negative = true;
+  const LimitSurface s = make_limit_surface(p);
+  const FractionalLaw<double> law = fractional_law_from_patch(p);
+  const PlanarBody body{300.0, 300.0 * 0.087 * 0.087};
+  const double fN = s.force_scale, h = 0.01;
+  // Half the sliding limit, along x (the regularised law's creep speed has a closed form).
+  const Vec3 load(0.5 * fN, 0.0, 0.0);
+  Vec3 tw = Vec3::Zero(), x = Vec3::Zero(), tw_f = Vec3::Zero(), x_f = Vec3::Zero();
+  for (int i = 0; i < 1000; ++i) {  // 10 s
+    const ContactStep st = moreau_jean_step(s, body, tw, load, h);
+    ASSERT_TRUE(st.stick);
+    tw = st.twist;
+    x += h * tw;
+    // Regularised law, implicit Euler by Newton with its analytic Jacobian.
+    Vec3 v = tw_f;
+    for (int k = 0; k < 30; ++k) {
+      const auto fj = fractional_resultants_with_jacobian(law, {v[0], v[1], v[2]});
+      const Vec3 m(body.mass, body.mass, body.inertia);
+      const Vec3 r = m.cwiseProduct(v - tw_f) / h - load - fj.resultants.vector();
+      const Eigen::Matrix3d J = Eigen::Matrix3d(m.asDiagonal()) / h - fj.jacobian;
+      v -= J.lu().solve(r);
+    }
+    tw_f = v;
+    x_f += h * tw_f;
+  }
+  EXPECT_EQ(x, Vec3::Zero());  // no creep: exactly at rest
+  // A force and a torque together (gauge 0.58), 10 s: at rest too.
+  const Vec3 combined(0.3 * fN, 0.2 * fN, 0.4 * law.M0);
+  Vec3 tc = Vec3::Zero(), xc = Vec3::Zero();
+  for (int i = 0; i < 1000; ++i) {
+    tc = moreau_jean_step(s, body, tc, combined, h).twist;
+    xc += h * tc;
+  }
+  EXPECT_EQ(xc, Vec3::Zero());
+  // Creep of the regularised law: F0 v / sqrt(v^2 + eps^2) = 0.5 F0, v = eps / sqrt(3).
+  const double creep = law.regularization_speed / std::sqrt(3.0);
+  EXPECT_NEAR(tw_f[0], creep, 1e-3 * creep);
+  EXPECT_GT(x_f[0], 0.9 * creep * 10.0);
+  RecordProperty("set_valued_drift_m", std::to_string(x.norm()));
+  RecordProperty("fractional_drift_m", std::to_string(x_f[0]));
+}
+
+TEST(ContactStep, ALoadJustOutsideStartsTheMaximumDissipationMotion) {
+  ContactPatch p = seed_tire_patch();
+  p.profile.keep_negative = true;
+  p.profile.kx = 0.14;
+  const LimitSurface s = make_limit_surface(p);
+  const ExactModel<double> m = make_exact_model(p);
+  const double R = s.radius;
+  const PlanarBody body{300.0, 300.0 * R * R};  // isotropic in scaled twists
+  const double h = 1e-3;
+  for (const Vec3& dir : {Vec3(1.0, 0.5, 3.0 / R), Vec3(0.0, 1.0, 0.2 / R), Vec3(0, 0, 1)}) {
+    // The friction at kinematics `dir` is a boundary point; the load pushes 2 % beyond it.
+    const Vec3 wb = surface_point(s, -dir);
+    const Vec3 load = -1.02 * wb;
+    const ContactStep st = moreau_jean_step(s, body, Vec3::Zero(), load, h);
+    ASSERT_FALSE(st.stick);
+    // Implicit Euler with the exact law: M s+ / h = load + resultant(s+).
+    const Resultants<double> r =
+        exact_resultants(m, Kinematics<double>{st.twist[0], st.twist[1], st.twist[2]}, {1e-12})
+            .resultants;
+    const Vec3 res =
+        Vec3(body.mass, body.mass, body.inertia).cwiseProduct(st.twist) / h - load - r.vector();
+    EXPECT_LT(res.head<2>().norm(), 1e-7 * s.force_scale);
+    EXPECT_LT(std::abs(res[2]), 1e-7 * s.force_scale * R);
+    // Moving the way maximum dissipation gives: along dir (to O(2 %) in scaled twists).
+    const Vec3 a(st.twist[0], st.twist[1], st.twist[2] * R), b(dir[0], dir[1], dir[2] * R);
+    EXPECT_GT(a.normalized().dot(b.normalized()), std::cos(0.05)) << dir.transpose();
+    // And the load 2 % inside the limit does not move it.
+    EXPECT_TRUE(moreau_jean_step(s, body, Vec3::Zero(), -0.98 * wb, h).stick);
+  }
+}
+
+TEST(ContactStep, SlidingSpinningDiskStopsTogetherAtTheFarkasRatioAtTwoStepSizes) {
+  const LimitSurface s = make_limit_surface(unit_disk());
+  const double ref = closed_form_fixed_point();
+  for (double h : {4e-3, 2e-3}) {
+    const Stop st = slide_to_rest(s, h);
+    ASSERT_GT(st.steps, 0);
+    EXPECT_NEAR(st.ratio, ref, 0.01) << "h = " << h;
+    // Both motions end on the same step.
+    EXPECT_EQ(st.t_v, st.t_w) << "h = " << h;
+    RecordProperty("ratio_h" + std::to_string(h), std::to_string(st.ratio));
+  }
+  // The fixed-step ratio above is sampled at speeds O(h), where the ratio's power-law approach
+  // to its limit is not over; with a step proportional to the speed the limit is reached.
+  for (double c : {0.04, 0.02}) EXPECT_NEAR(relative_step_ratio(s, c), ref, 1e-7) << c;
+}
