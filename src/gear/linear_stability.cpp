@@ -1,9 +1,6 @@
 #include "contensou/gear/linear_stability.hpp"
 
-#include <cvode/cvode.h>
-#include <nvector/nvector_serial.h>
-#include <sunlinsol/sunlinsol_dense.h>
-#include <sunmatrix/sunmatrix_dense.h>
+#include "cvode_handles.hpp"
 
 #include <Eigen/Dense>
 #include <Eigen/Eigenvalues>
@@ -184,21 +181,7 @@ int fixed_rhs(sunrealtype, N_Vector y, N_Vector ydot, void* data) {
   return 0;
 }
 
-struct Cvode {
-  SUNContext ctx = nullptr;
-  N_Vector y = nullptr, atol = nullptr;
-  SUNMatrix A = nullptr;
-  SUNLinearSolver LS = nullptr;
-  void* mem = nullptr;
-  ~Cvode() {
-    if (mem) CVodeFree(&mem);
-    if (LS) SUNLinSolFree(LS);
-    if (A) SUNMatDestroy(A);
-    if (atol) N_VDestroy(atol);
-    if (y) N_VDestroy(y);
-    if (ctx) SUNContext_Free(&ctx);
-  }
-};
+using Cvode = detail::CvodeHandles;
 
 void check(int flag, const char* what) {
   if (flag < 0)

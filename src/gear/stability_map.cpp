@@ -1,13 +1,11 @@
 #include "contensou/gear/stability_map.hpp"
 
-#include <atomic>
-#include <chrono>
 #include <cmath>
 #include <exception>
-#include <thread>
 #include <utility>
 
 #include "contensou/friction/error.hpp"
+#include "parallel_cells.hpp"
 
 namespace contensou {
 
@@ -26,40 +24,20 @@ StabilityMap evaluate_map(const GearModel& base, const MapAxis& x, const MapAxis
   StabilityMap map{x, y, base.contact, false, StabilityPhase::braked_slide, {}};
   const int total = x.points * y.points;
   map.cells.resize(static_cast<std::size_t>(total));
-  if (threads == 0) threads = std::max(1u, std::thread::hardware_concurrency());
-  std::atomic<int> next{0}, done{0};
-  auto work = [&] {
-    for (int k = next++; k < total; k = next++) {
-      MapCell& cell = map.cells[static_cast<std::size_t>(k)];
-      cell.x = x.value(k % x.points);
-      cell.y = y.value(k / x.points);
-      GearModel model = base;  // shares the exact model, if any (read-only)
-      *gear_parameter(model.config, x.parameter) = cell.x;
-      *gear_parameter(model.config, y.parameter) = cell.y;
-      try {
-        validate(model.config);
-        cell_fn(model, cell);
-      } catch (const std::exception& e) {
-        cell.error = e.what();
-      }
-      ++done;
+  detail::run_cells_in_parallel(total, threads, progress, [&](int k) {
+    MapCell& cell = map.cells[static_cast<std::size_t>(k)];
+    cell.x = x.value(k % x.points);
+    cell.y = y.value(k / x.points);
+    GearModel model = base;  // shares the exact model, if any (read-only)
+    *gear_parameter(model.config, x.parameter) = cell.x;
+    *gear_parameter(model.config, y.parameter) = cell.y;
+    try {
+      validate(model.config);
+      cell_fn(model, cell);
+    } catch (const std::exception& e) {
+      cell.error = e.what();
     }
-  };
-  std::vector<std::thread> pool;
-  for (unsigned i = 1; i < threads; ++i) pool.emplace_back(work);
-  if (progress) {
-    // The calling thread reports progress and joins the work when the pool is busy.
-    std::thread last(work);
-    while (done.load() < total) {
-      progress(done.load(), total);
-      std::this_thread::sleep_for(std::chrono::milliseconds(100));
-    }
-    last.join();
-    progress(total, total);
-  } else {
-    work();
-  }
-  for (std::thread& t : pool) t.join();
+  });
   return map;
 }
 

@@ -2,14 +2,12 @@
 
 #include <Eigen/Eigenvalues>
 #include <algorithm>
-#include <atomic>
-#include <chrono>
 #include <cmath>
 #include <limits>
 #include <random>
-#include <thread>
 
 #include "contensou/friction/error.hpp"
+#include "parallel_cells.hpp"
 
 namespace contensou {
 
@@ -98,33 +96,14 @@ GrowthBand growth_band(const GearModel& base, const std::vector<TireLawCoefficie
                        const std::function<void(int, int)>& progress) {
   const int total = static_cast<int>(draws.size());
   std::vector<double> growth(draws.size(), std::numeric_limits<double>::quiet_NaN());
-  if (threads == 0) threads = std::max(1u, std::thread::hardware_concurrency());
-  std::atomic<int> next{0}, done{0};
-  auto work = [&] {
-    for (int k = next++; k < total; k = next++) {
-      try {
-        growth[static_cast<std::size_t>(k)] =
-            linear_growth_rate(with_tire_law(base, draws[static_cast<std::size_t>(k)]), phase);
-      } catch (const std::exception&) {
-        // left NaN: not counted
-      }
-      ++done;
+  detail::run_cells_in_parallel(total, threads, progress, [&](int k) {
+    try {
+      growth[static_cast<std::size_t>(k)] =
+          linear_growth_rate(with_tire_law(base, draws[static_cast<std::size_t>(k)]), phase);
+    } catch (const std::exception&) {
+      // left NaN: not counted
     }
-  };
-  std::vector<std::thread> pool;
-  for (unsigned i = 1; i < threads; ++i) pool.emplace_back(work);
-  if (progress) {
-    std::thread last(work);
-    while (done.load() < total) {
-      progress(done.load(), total);
-      std::this_thread::sleep_for(std::chrono::milliseconds(100));
-    }
-    last.join();
-    progress(total, total);
-  } else {
-    work();
-  }
-  for (std::thread& t : pool) t.join();
+  });
   return summarise(growth);
 }
 
