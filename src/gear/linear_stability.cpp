@@ -22,8 +22,9 @@ namespace contensou {
 namespace {
 
 // Scales of the states (the solver's absolute-tolerance scales): y, y', psi, psi', Omega,
-// lambda, x, x', Omega2.
-constexpr std::array<double, kStateSize> kScale{1e-3, 1e-1, 1e-3, 1e-1, 1e2, 1e-3, 1e-3, 1e-1, 1e2};
+// lambda, x, x', Omega2, e_y, e_psi.
+constexpr std::array<double, kStateSize> kScale{1e-3, 1e-1, 1e-3, 1e-1, 1e2, 1e-3,
+                                                1e-3, 1e-1, 1e2,  1e-3, 1e-3};
 
 double scale_of(int i) {
   return kScale[static_cast<std::size_t>(i)];
@@ -82,6 +83,10 @@ QuasiSteadyState quasi_steady_state(const GearModel& model, StabilityPhase phase
   if (model.config.structure.fore_aft_stiffness_n_per_m > 0.0) {
     q.states.push_back(kX);
     q.states.push_back(kXDot);
+  }
+  if (model.config.structure.carcass_compliance()) {
+    q.states.push_back(kCarcassY);
+    q.states.push_back(kCarcassPsi);
   }
 
   // Newton's method with a central-difference Jacobian and step halving.
