@@ -664,7 +664,7 @@ GearState gear_rhs(const GearModel& model, const GearMode& mode, double t, const
   dx[kPsiDot] =
       (-g.torsional_stiffness_nm_per_rad * freeplay_deflection(x[kPsi], g.freeplay_rad).first -
        g.torsional_damping_nms_per_rad * x[kPsiDot] + F.Mz - g.trail_m * F.Fy -
-       (g.offset_m + x[kCarcassY]) * F.Fx - gyro * x[kYDot]) /
+       (g.offset_m + (g.carcass_compliance() ? x[kCarcassY] : 0.0)) * F.Fx - gyro * x[kYDot]) /
       g.torsional_inertia_kgm2;
   // The brake torque opposes the spin; tanh(Omega / 1 rad/s) keeps it smooth through zero.
   dx[kSpin] = (-g.wheel_radius_m * cs.wheel_fx_n[0] - cs.wheel_brake_nm[0] * std::tanh(x[kSpin])) /

@@ -10,6 +10,7 @@
 
 #include "contensou/friction/error.hpp"
 #include "contensou/gear/landing_gear.hpp"
+#include "contensou/gear/landing_simulation.hpp"
 #include "contensou/gear/linear_stability.hpp"
 
 using namespace contensou;
@@ -231,4 +232,37 @@ TEST(Carcass, JacobianAgreesWithCentralDifferences) {
     for (int i = 0; i < kStateSize; ++i)
       EXPECT_NEAR(J(i, j), d[i], 1e-3 * (std::abs(d[i]) + 1.0)) << i << "," << j;
   }
+}
+
+// A simulated landing with the carcass on: it completes, spins up as the rigid model does (the
+// carcass does not change the drag), deflects the carcass by Fy / k_cy during the braked slide
+// (the patch's rate is small there), and after spin-up (rolling, before the brake) the carcass
+// has relaxed to zero.
+TEST(Carcass, SimulatedLandingWithCarcass) {
+  const GearConfig rigid;
+  const GearConfig c = carcass_from_string_tire(rigid);
+  SolverOptions o;
+  o.relative_tolerance = 1e-6;
+  const LandingRun a = simulate_landing(make_gear_model(rigid, ContactModel::coupled), o);
+  const LandingRun b = simulate_landing(make_gear_model(c, ContactModel::coupled), o);
+  ASSERT_TRUE(a.spin_up_s && b.spin_up_s);
+  EXPECT_NEAR(*b.spin_up_s, *a.spin_up_s, 0.02 * *a.spin_up_s);
+  bool relaxed = false, deflected = false;
+  const double ky = c.structure.carcass_lateral_stiffness_n_per_m;
+  for (const LandingSample& s : b.samples) {
+    ASSERT_TRUE(s.x.allFinite()) << s.t;
+    if (s.rolling && s.t > c.scenario.touchdown_time_s + *b.spin_up_s + 0.05 &&
+        s.t < c.scenario.brake_on_s)
+      relaxed |= std::abs(s.x[kCarcassY]) < 1e-8 && std::abs(s.x[kCarcassPsi]) < 1e-8;
+    if (!s.rolling && s.t > c.scenario.brake_on_s + 0.2 && s.t < c.scenario.brake_off_s &&
+        std::abs(s.contact.force.Fy) > 100.0) {
+      // k e_y + c e_y' = Fy: the balance holds at every sample.
+      EXPECT_NEAR(ky * s.x[kCarcassY] +
+                      c.structure.carcass_lateral_damping_ns_per_m * s.contact.carcass_rate[0],
+                  s.contact.force.Fy, 1e-6 * std::abs(s.contact.force.Fy) + 1e-6);
+      deflected = true;
+    }
+  }
+  EXPECT_TRUE(relaxed);
+  EXPECT_TRUE(deflected);
 }
