@@ -89,6 +89,7 @@ nlohmann::json report_json(const StabilityReport& r) {
             {"torsional_damping", r.energy.torsional_damping},
             {"lateral_friction", r.energy.lateral_friction},
             {"lateral_damping", r.energy.lateral_damping},
+            {"carcass_lever", r.energy.carcass_lever},
             {"total", r.energy.total()}}}};
 }
 

@@ -322,6 +322,11 @@ StabilityReport assess_stability(const GearModel& model_in, StabilityPhase phase
     rep.energy.torsional_damping = work(-g.torsional_damping_nms_per_rad * psi_dot, psi_dot);
     rep.energy.lateral_friction = work(F[3], y_dot);
     rep.energy.lateral_damping = work(-g.lateral_damping_ns_per_m * y_dot, y_dot);
+    if (g.carcass_compliance()) {
+      const double fx0 = contact_state(model, q.mode, q.t, q.x).force.Fx;
+      rep.energy.carcass_lever =
+          work(-(q.x[kCarcassY] * F[0] + fx0 * v[index_of(kCarcassY)]), psi_dot);
+    }
   }
   rep.perturbation_growth_rate_per_s = std::numeric_limits<double>::quiet_NaN();
   rep.perturbation_frequency_hz = std::numeric_limits<double>::quiet_NaN();

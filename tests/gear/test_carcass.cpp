@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <cmath>
 #include <complex>
+#include <numbers>
 
 #include "contensou/friction/error.hpp"
 #include "contensou/gear/landing_gear.hpp"
@@ -265,4 +266,22 @@ TEST(Carcass, SimulatedLandingWithCarcass) {
   }
   EXPECT_TRUE(relaxed);
   EXPECT_TRUE(deflected);
+}
+
+// The energy per cycle (linear_stability.hpp) with the carcass on, the carcass lever term
+// included, matches the growth rate as in the rigid test (test_linear_stability.cpp): the legacy
+// gear's torsional mode, 1 mrad, work = 2 sigma E 2 pi / w.
+TEST(Carcass, EnergyPerCycleMatchesTheGrowthRate) {
+  const GearConfig c = carcass_from_string_tire(legacy_gear_config());
+  StabilityOptions o;
+  o.simulate_perturbation = false;
+  const StabilityReport r =
+      assess_stability(make_gear_model(c, ContactModel::coupled), StabilityPhase::braked_slide, o);
+  ASSERT_GT(r.torsion_share, 0.5);
+  const double w = 2 * std::numbers::pi * r.frequency_hz;
+  const double E = 0.5 * c.structure.torsional_inertia_kgm2 * std::pow(1e-3 * w, 2);
+  const double expected = 2 * r.growth_rate_per_s * E * 2 * std::numbers::pi / w;
+  EXPECT_NEAR(r.energy.total(), expected, 0.15 * std::abs(expected) + 1e-4)
+      << "carcass lever " << r.energy.carcass_lever << " growth " << r.growth_rate_per_s;
+  EXPECT_EQ(r.energy.total() > 0, r.growth_rate_per_s > 0);
 }
