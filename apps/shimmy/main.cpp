@@ -89,6 +89,7 @@ nlohmann::json report_json(const StabilityReport& r) {
             {"torsional_damping", r.energy.torsional_damping},
             {"lateral_friction", r.energy.lateral_friction},
             {"lateral_damping", r.energy.lateral_damping},
+            {"carcass_lever", r.energy.carcass_lever},
             {"total", r.energy.total()}}}};
 }
 
@@ -163,7 +164,13 @@ void print_stability(const ShimmyConfig& config, const std::vector<LandingRun>& 
       j["verdict"] = verdict;
       summary["models"][to_string(run.contact)]["stability"][to_string(r->state.phase)] = j;
     }
-    if (run.contact == ContactModel::decoupled)
+    if (run.contact == ContactModel::decoupled && config.gear.structure.carcass_compliance())
+      std::printf(
+          "  note: the decoupled model's regularised Coulomb spin torque (M0 R / eps) acts in "
+          "series with the carcass's torsional spring: %.3g N m s/rad of damping at the rim "
+          "while braking; shown for reference only\n",
+          br.spin_torque_damping_nms_per_rad);
+    else if (run.contact == ContactModel::decoupled)
       std::printf(
           "  note: the decoupled model's regularised Coulomb spin torque acts on the torsion as a "
           "damper of %.3g N m s/rad (M0 R / eps) while braking: an artefact of the regularisation, "

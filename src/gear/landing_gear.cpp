@@ -60,6 +60,35 @@ void validate(const GearConfig& c) {
   if (!(g.gyroscopic_length_m >= 0.0 && g.gyroscopic_length_m < 1e6))
     throw InvalidArgument("structure.gyroscopic_length_m", format_value(g.gyroscopic_length_m),
                           "must be >= 0 and finite (0: no gyroscopic coupling)");
+  if (!(g.carcass_lateral_stiffness_n_per_m >= 0.0 && g.carcass_lateral_stiffness_n_per_m < 1e15))
+    throw InvalidArgument("structure.carcass_lateral_stiffness_n_per_m",
+                          format_value(g.carcass_lateral_stiffness_n_per_m),
+                          "must be >= 0 and finite (0 with the torsional one: rigid carcass)");
+  if (!(g.carcass_torsional_stiffness_nm_per_rad >= 0.0 &&
+        g.carcass_torsional_stiffness_nm_per_rad < 1e15))
+    throw InvalidArgument("structure.carcass_torsional_stiffness_nm_per_rad",
+                          format_value(g.carcass_torsional_stiffness_nm_per_rad),
+                          "must be >= 0 and finite (0 with the lateral one: rigid carcass)");
+  if (g.carcass_compliance()) {
+    if (!(g.carcass_lateral_stiffness_n_per_m > 0.0))
+      throw InvalidArgument(
+          "structure.carcass_lateral_stiffness_n_per_m",
+          format_value(g.carcass_lateral_stiffness_n_per_m),
+          "must be positive when structure.carcass_torsional_stiffness_nm_per_rad "
+          "is (both 0: rigid carcass)");
+    if (!(g.carcass_torsional_stiffness_nm_per_rad > 0.0))
+      throw InvalidArgument("structure.carcass_torsional_stiffness_nm_per_rad",
+                            format_value(g.carcass_torsional_stiffness_nm_per_rad),
+                            "must be positive when structure.carcass_lateral_stiffness_n_per_m is "
+                            "(both 0: rigid carcass)");
+    require_positive("structure.carcass_lateral_damping_ns_per_m",
+                     g.carcass_lateral_damping_ns_per_m);
+    require_positive("structure.carcass_torsional_damping_nms_per_rad",
+                     g.carcass_torsional_damping_nms_per_rad);
+    if (g.wheel_spacing_m > 0.0)
+      throw InvalidArgument("structure.wheel_spacing_m", format_value(g.wheel_spacing_m),
+                            "must be 0 with carcass compliance (implemented for one wheel)");
+  }
 
   const SlidingTire& t = c.tire;
   require_positive("tire.inflation_pressure_pa", t.inflation_pressure_pa);
@@ -287,6 +316,99 @@ void contact_forces(const GearModel& model, bool rolling, double lambda, Contact
   cs.force = sliding_friction(model, cs.slip, N, R, cs.friction);
 }
 
+// K = d(Fx, Fy, Mz)/d(vx, vy, omega) of the sliding law at fixed load and patch radius (w.force
+// and w.friction filled): analytic for the coupled fractional law, forward differences of the
+// law (one evaluation per input) otherwise.
+Eigen::Matrix3d sliding_law_jacobian(const GearModel& model, const ContactState& w) {
+  Eigen::Matrix3d K;
+  if (model.contact == ContactModel::coupled && !model.exact) {
+    // F = f(w) G(v, omega): the law's analytic Jacobian at fixed f, plus G f'(w) grad w.
+    const double R = w.patch_radius_m;
+    const FractionalWithJacobian law =
+        fractional_resultants_with_jacobian(coupled_law(model, w.load_n, R, w.friction), w.slip);
+    K = law.jacobian;
+    const double speed = sliding_slip_speed(w.slip, R);
+    if (speed > 0.0) {
+      const double slope = friction_slope(model.config.tire.friction, speed) / w.friction;
+      const Eigen::Vector3d grad_w(w.slip.vx / speed, w.slip.vy / speed,
+                                   4.0 / 9.0 * w.slip.omega * R * R / speed);
+      const Eigen::Vector3d F(law.resultants.Fx, law.resultants.Fy, law.resultants.Mz);
+      K += slope * F * grad_w.transpose();
+    }
+    return K;
+  }
+  const Eigen::Vector3d F0(w.force.Fx, w.force.Fy, w.force.Mz);
+  for (int j = 0; j < 3; ++j) {
+    ContactState p = w;
+    double* v = j == 0 ? &p.slip.vx : j == 1 ? &p.slip.vy : &p.slip.omega;
+    const double h = 1e-7 * std::max(std::abs(*v), 1.0);
+    *v += h;
+    contact_forces(model, false, 0.0, p);
+    K.col(j) = (Eigen::Vector3d(p.force.Fx, p.force.Fy, p.force.Mz) - F0) / h;
+  }
+  return K;
+}
+
+// The massless patch on the compliant carcass (landing_gear.hpp, GearStructure::carcass_*;
+// docs/shimmy.md, "Carcass compliance"). Given the rim's patch kinematics in cs.slip and the
+// carcass deflections e_y, e_psi, find the patch's rates z = (e_y', e_psi') relative to the rim
+// such that the friction on the patch balances the carcass (Pacejka 2012, sec. 7.2: a massless
+// contact point on a lateral spring-damper; Besselink 2000, ch. 3, the same in torsion):
+//   r_1(z) = Fy(vx - e_y psi', vy + z_1, omega + z_2) - k_cy e_y - c_cy z_1 = 0
+//   r_2(z) = Mz(vx - e_y psi', vy + z_1, omega + z_2) - k_cpsi e_psi - c_cpsi z_2 = 0
+// by Newton's method with the law's Jacobian (dr/dz = K - diag(c_cy, c_cpsi), K the sliding
+// law's partials) and step halving. The patch's yaw e_psi turns its frame against the rim's; for
+// the isotropic law (kappa = 1) that changes the force only through the tread-aligned pressure
+// shift kx, O(kx e_psi), which is neglected: forces stay in the rim's frame. Fills cs.slip with
+// the patch's kinematics, cs.force, cs.friction and cs.carcass_rate.
+void carcass_contact(const GearModel& model, double psi_rate, double e_y, double e_psi,
+                     ContactState& cs) {
+  const GearStructure& g = model.config.structure;
+  const Kinematics<double> rim = cs.slip;
+  const double ky = g.carcass_lateral_stiffness_n_per_m, cy = g.carcass_lateral_damping_ns_per_m;
+  const double kp = g.carcass_torsional_stiffness_nm_per_rad;
+  const double cpsi = g.carcass_torsional_damping_nms_per_rad;
+  const auto evaluate = [&](const Eigen::Vector2d& z, ContactState& p) {
+    p = cs;
+    p.slip.vx = rim.vx - e_y * psi_rate;  // the patch centre sits e_y further out on the lever
+    p.slip.vy = rim.vy + z[0];
+    p.slip.omega = rim.omega + z[1];
+    contact_forces(model, false, 0.0, p);
+    return Eigen::Vector2d(p.force.Fy - ky * e_y - cy * z[0],
+                           p.force.Mz - kp * e_psi - cpsi * z[1]);
+  };
+  // Residual scales: the force and torque levels of the law.
+  const double fscale = std::max(cs.friction > 0.0 ? cs.friction : 1.0, 1e-3) * cs.load_n + 1e-6;
+  const Eigen::Vector2d scale(1.0 / fscale, 1.0 / (fscale * cs.patch_radius_m));
+  Eigen::Vector2d z = Eigen::Vector2d::Zero();
+  ContactState p;
+  Eigen::Vector2d r = evaluate(z, p);
+  for (int iter = 0; iter < 60; ++iter) {
+    const double norm = r.cwiseProduct(scale).lpNorm<Eigen::Infinity>();
+    if (!(norm > 1e-15)) break;
+    const Eigen::Matrix3d K = sliding_law_jacobian(model, p);
+    // dr/dz = [[K_yy - c_cy, K_yw], [K_My, K_Mw - c_cpsi]], solved by Cramer's rule.
+    const double a11 = K(1, 1) - cy, a12 = K(1, 2), a21 = K(2, 1), a22 = K(2, 2) - cpsi;
+    const double det = a11 * a22 - a12 * a21;
+    const Eigen::Vector2d step(-(a22 * r[0] - a12 * r[1]) / det, -(a11 * r[1] - a21 * r[0]) / det);
+    if (!step.allFinite()) break;
+    double lambda = 1.0;
+    Eigen::Vector2d zt = z, rt = r;
+    ContactState pt;
+    for (int halving = 0; halving < 40; ++halving, lambda *= 0.5) {
+      zt = z + lambda * step;
+      rt = evaluate(zt, pt);
+      if (rt.cwiseProduct(scale).lpNorm<Eigen::Infinity>() < norm) break;
+    }
+    if (!(rt.cwiseProduct(scale).lpNorm<Eigen::Infinity>() < norm)) break;  // at rounding level
+    z = zt;
+    r = rt;
+    p = pt;
+  }
+  cs = p;
+  cs.carcass_rate = {z[0], z[1]};
+}
+
 }  // namespace
 
 namespace {
@@ -336,7 +458,12 @@ int wheel_contacts(const GearModel& model, const GearMode& mode, double t, const
       const double z = (wheel_slip - s.brake_target_slip) / s.brake_slip_band;
       cs.brake_torque_nm = s.brake_max_torque_nm / (1.0 + std::exp(std::clamp(z, -50.0, 50.0)));
     }
-    if (load > 0.0) contact_forces(model, mode.rolling, x[kLambda], cs);
+    if (load > 0.0) {
+      if (!mode.rolling && g.carcass_compliance())
+        carcass_contact(model, x[kPsiDot], x[kCarcassY], x[kCarcassPsi], cs);
+      else
+        contact_forces(model, mode.rolling, x[kLambda], cs);
+    }
   }
   return n;
 }
@@ -377,6 +504,21 @@ GearJacobian gear_jacobian(const GearModel& model, const GearMode& mode, double 
   const GearConfig& c = model.config;
   const GearStructure& g = c.structure;
   const LandingScenario& s = c.scenario;
+  if (g.carcass_compliance()) {
+    // e_y', e_psi' come from an implicit solve: forward differences of the whole right-hand side
+    // (one evaluation per state).
+    const GearState f0 = gear_rhs(model, mode, t, x);
+    constexpr std::array<double, kStateSize> kScale{1e-3, 1e-1, 1e-3, 1e-1, 1e2, 1e-3,
+                                                    1e-3, 1e-1, 1e2,  1e-3, 1e-3};
+    GearJacobian J;
+    for (int j = 0; j < kStateSize; ++j) {
+      GearState xp = x;
+      const double h = 1e-7 * std::max(std::abs(x[j]), kScale[static_cast<std::size_t>(j)]);
+      xp[j] += h;
+      J.col(j) = (gear_rhs(model, mode, t, xp) - f0) / h;
+    }
+    return J;
+  }
   const double V = s.forward_speed_mps, r = g.wheel_radius_m;
   const ContactState cs = contact_state(model, mode, t, x);
   const double cp = std::cos(x[kPsi]), sp = std::sin(x[kPsi]);
@@ -521,8 +663,8 @@ GearState gear_rhs(const GearModel& model, const GearMode& mode, double t, const
   dx[kPsi] = x[kPsiDot];
   dx[kPsiDot] =
       (-g.torsional_stiffness_nm_per_rad * freeplay_deflection(x[kPsi], g.freeplay_rad).first -
-       g.torsional_damping_nms_per_rad * x[kPsiDot] + F.Mz - g.trail_m * F.Fy - g.offset_m * F.Fx -
-       gyro * x[kYDot]) /
+       g.torsional_damping_nms_per_rad * x[kPsiDot] + F.Mz - g.trail_m * F.Fy -
+       (g.offset_m + (g.carcass_compliance() ? x[kCarcassY] : 0.0)) * F.Fx - gyro * x[kYDot]) /
       g.torsional_inertia_kgm2;
   // The brake torque opposes the spin; tanh(Omega / 1 rad/s) keeps it smooth through zero.
   dx[kSpin] = (-g.wheel_radius_m * cs.wheel_fx_n[0] - cs.wheel_brake_nm[0] * std::tanh(x[kSpin])) /
@@ -551,6 +693,22 @@ GearState gear_rhs(const GearModel& model, const GearMode& mode, double t, const
   } else {
     dx[kX] = dx[kXDot] = 0.0;
   }
+  // Carcass compliance (GearStructure::carcass_*): sliding, the patch's rates from the force
+  // balance (carcass_contact); rolling or airborne, the stretched string is the carcass (its
+  // lambda carries the lateral force), so e_y, e_psi relax unloaded, k e + c e' = 0.
+  if (g.carcass_compliance()) {
+    if (mode.loaded && !mode.rolling && cs.load_n > 0.0) {
+      dx[kCarcassY] = cs.carcass_rate[0];
+      dx[kCarcassPsi] = cs.carcass_rate[1];
+    } else {
+      dx[kCarcassY] =
+          -g.carcass_lateral_stiffness_n_per_m / g.carcass_lateral_damping_ns_per_m * x[kCarcassY];
+      dx[kCarcassPsi] = -g.carcass_torsional_stiffness_nm_per_rad /
+                        g.carcass_torsional_damping_nms_per_rad * x[kCarcassPsi];
+    }
+  } else {
+    dx[kCarcassY] = dx[kCarcassPsi] = 0.0;
+  }
   return dx;
 }
 
@@ -575,6 +733,10 @@ void for_each_parameter(GearConfig& c, F&& f) {
   f("structure.fore_aft_mass_kg", g.fore_aft_mass_kg);
   f("structure.fore_aft_stiffness_n_per_m", g.fore_aft_stiffness_n_per_m);
   f("structure.fore_aft_damping_ns_per_m", g.fore_aft_damping_ns_per_m);
+  f("structure.carcass_lateral_stiffness_n_per_m", g.carcass_lateral_stiffness_n_per_m);
+  f("structure.carcass_lateral_damping_ns_per_m", g.carcass_lateral_damping_ns_per_m);
+  f("structure.carcass_torsional_stiffness_nm_per_rad", g.carcass_torsional_stiffness_nm_per_rad);
+  f("structure.carcass_torsional_damping_nms_per_rad", g.carcass_torsional_damping_nms_per_rad);
   SlidingTire& t = c.tire;
   f("tire.inflation_pressure_pa", t.inflation_pressure_pa);
   f("tire.rolling_shift", t.rolling_shift);
@@ -650,6 +812,24 @@ double string_deflection_for_force(const GearModel& model, double t, const GearS
 GearConfig legacy_gear_config() {
   GearConfig c;
   c.structure.torsional_damping_nms_per_rad = 100.0;
+  return c;
+}
+
+GearConfig carcass_from_string_tire(GearConfig c) {
+  // Stretched string (Pacejka 2012, sec. 5.4; Besselink 2000, ch. 3): string stiffness per
+  // length c_c, free length sigma on each side of a contact line of half-length a. Cornering
+  // stiffness C_Fa = 2 c_c (sigma + a)^2; rim translated by e with the contact line held:
+  // foundation force 2 c_c a e (contact) + 2 c_c sigma e (free parts); rim turned by e_psi:
+  // moment c_c e_psi (2 a^3 / 3 + 2 a sigma (sigma + a)) (contact part and the free parts'
+  // deflection a e_psi decaying over sigma, at mean lever a + sigma).
+  const double N = c.scenario.static_load_n;
+  const double a = std::sqrt(N / (2.0 * std::numbers::pi * c.tire.inflation_pressure_pa *
+                                  moment(unit_patch(c.tire).profile, 1)));
+  const double sigma = c.rolling.relaxation_length_m;
+  const double cc = c.rolling.cornering_coefficient * N / (2.0 * (sigma + a) * (sigma + a));
+  c.structure.carcass_lateral_stiffness_n_per_m = 2.0 * cc * (sigma + a);
+  c.structure.carcass_torsional_stiffness_nm_per_rad =
+      cc * (2.0 / 3.0 * a * a * a + 2.0 * a * sigma * (sigma + a));
   return c;
 }
 

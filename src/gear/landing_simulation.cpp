@@ -48,6 +48,10 @@ std::vector<int> active_states(const GearModel& m) {
     a.push_back(kXDot);
   }
   if (m.config.structure.wheel_spacing_m > 0.0) a.push_back(kSpin2);
+  if (m.config.structure.carcass_compliance()) {
+    a.push_back(kCarcassY);
+    a.push_back(kCarcassPsi);
+  }
   return a;
 }
 
@@ -157,7 +161,8 @@ LandingRun simulate_landing(const GearModel& model, const SolverOptions& options
   check(SUNContext_Create(nullptr, &cv.ctx), "SUNContext_Create", 0.0);
   cv.y = N_VNew_Serial(n, cv.ctx);
   cv.atol = N_VNew_Serial(n, cv.ctx);
-  const std::array<double, kStateSize> scale{1e-3, 1e-1, 1e-3, 1e-1, 1e2, 1e-3, 1e-3, 1e-1, 1e2};
+  const std::array<double, kStateSize> scale{1e-3, 1e-1, 1e-3, 1e-1, 1e2, 1e-3,
+                                             1e-3, 1e-1, 1e2,  1e-3, 1e-3};
   from_state(problem, x, cv.y);
   for (int k = 0; k < n; ++k) {
     NV_Ith_S(cv.atol, k) =

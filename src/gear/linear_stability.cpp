@@ -19,8 +19,9 @@ namespace contensou {
 namespace {
 
 // Scales of the states (the solver's absolute-tolerance scales): y, y', psi, psi', Omega,
-// lambda, x, x', Omega2.
-constexpr std::array<double, kStateSize> kScale{1e-3, 1e-1, 1e-3, 1e-1, 1e2, 1e-3, 1e-3, 1e-1, 1e2};
+// lambda, x, x', Omega2, e_y, e_psi.
+constexpr std::array<double, kStateSize> kScale{1e-3, 1e-1, 1e-3, 1e-1, 1e2, 1e-3,
+                                                1e-3, 1e-1, 1e2,  1e-3, 1e-3};
 
 double scale_of(int i) {
   return kScale[static_cast<std::size_t>(i)];
@@ -79,6 +80,10 @@ QuasiSteadyState quasi_steady_state(const GearModel& model, StabilityPhase phase
   if (model.config.structure.fore_aft_stiffness_n_per_m > 0.0) {
     q.states.push_back(kX);
     q.states.push_back(kXDot);
+  }
+  if (model.config.structure.carcass_compliance()) {
+    q.states.push_back(kCarcassY);
+    q.states.push_back(kCarcassPsi);
   }
 
   // Newton's method with a central-difference Jacobian and step halving.
@@ -300,6 +305,11 @@ StabilityReport assess_stability(const GearModel& model_in, StabilityPhase phase
     rep.energy.torsional_damping = work(-g.torsional_damping_nms_per_rad * psi_dot, psi_dot);
     rep.energy.lateral_friction = work(F[3], y_dot);
     rep.energy.lateral_damping = work(-g.lateral_damping_ns_per_m * y_dot, y_dot);
+    if (g.carcass_compliance()) {
+      const double fx0 = contact_state(model, q.mode, q.t, q.x).force.Fx;
+      rep.energy.carcass_lever =
+          work(-(q.x[kCarcassY] * F[0] + fx0 * v[index_of(kCarcassY)]), psi_dot);
+    }
   }
   rep.perturbation_growth_rate_per_s = std::numeric_limits<double>::quiet_NaN();
   rep.perturbation_frequency_hz = std::numeric_limits<double>::quiet_NaN();

@@ -7,6 +7,8 @@
 //   lambda    lateral deflection of the stretched-string tire's leading point [m]
 //   x, x'     fore-aft bending of the strut at the wheel [m, m/s] (optional)
 //   Omega2    the second wheel's spin of a twin gear [rad/s] (optional)
+//   e_y, e_psi lateral offset and yaw of the sliding patch relative to the rim [m, rad]
+//             (tire carcass compliance, optional; docs/shimmy.md, "Carcass compliance")
 // Ground frame X forward, Y left, Z up; the wheel frame is turned by psi. The patch centre lies
 // a trail e behind the strut axis and an offset l to its left. Patch kinematics (theory.md
 // section 1, with spin omega = psi'):
@@ -83,6 +85,21 @@ struct GearStructure {
   double fore_aft_mass_kg = 300.0;            // m_x
   double fore_aft_stiffness_n_per_m = 0.0;    // k_x (0: off)
   double fore_aft_damping_ns_per_m = 1000.0;  // c_x
+  // Lateral and torsional carcass compliance of the sliding tire (issue 12, item 3;
+  // docs/shimmy.md, "Carcass compliance"): the patch, massless, moves relative to the rim by
+  // e_y (lateral, wheel frame) and e_psi (yaw); the carcass carries
+  //   k_cy e_y + c_cy e_y' = Fy(patch),   k_cpsi e_psi + c_cpsi e_psi' = Mz(patch),
+  // with the friction law evaluated at the patch's own motion (Pacejka 2012, ch. 5 and 7;
+  // Besselink 2000, ch. 3). Both stiffnesses 0: rigid carcass, the patch moves with the rim
+  // (the default); both > 0: on (one wheel only). carcass_from_string_tire() gives the values
+  // estimated from the stretched string.
+  double carcass_lateral_stiffness_n_per_m = 0.0;        // k_cy (0: off)
+  double carcass_lateral_damping_ns_per_m = 1000.0;      // c_cy (> 0 when on)
+  double carcass_torsional_stiffness_nm_per_rad = 0.0;   // k_cpsi (0: off)
+  double carcass_torsional_damping_nms_per_rad = 100.0;  // c_cpsi (> 0 when on)
+  bool carcass_compliance() const {
+    return carcass_lateral_stiffness_n_per_m > 0.0 || carcass_torsional_stiffness_nm_per_rad > 0.0;
+  }
 };
 
 // The sliding tire: the seed tire's pressure profile (theory.md section 5) at the inflation
@@ -155,6 +172,13 @@ void validate(const GearConfig& config);
 GearConfig gear_config_by_name(const std::string& name);
 GearConfig legacy_gear_config();
 
+// The configuration with the carcass compliance switched on at the values the stretched string of
+// config.rolling implies at the static load (docs/shimmy.md, "Carcass compliance"): string
+// stiffness per length c_c = C_Fa N_s / (2 (sigma + a)^2), a the patch radius at N_s, then
+//   k_cy = 2 c_c (sigma + a),   k_cpsi = c_c (2 a^3 / 3 + 2 a sigma (sigma + a));
+// the dampings keep their (estimated) values.
+GearConfig carcass_from_string_tire(GearConfig config);
+
 // The numeric parameters of a GearConfig by dotted name ("structure.offset_m",
 // "scenario.forward_speed_mps", "tire.friction.static_coefficient", ...); nullptr if unknown.
 double* gear_parameter(GearConfig& config, std::string_view name);
@@ -163,6 +187,8 @@ std::vector<std::string> gear_parameter_names();
 // x, x': fore-aft bending of the strut at the wheel (structure.fore_aft_stiffness_n_per_m > 0;
 // inert otherwise).
 // Omega2: the second wheel's spin of a twin gear (structure.wheel_spacing_m > 0; inert otherwise).
+// e_y, e_psi: the patch's offset and yaw relative to the rim (structure.carcass_*; inert
+// otherwise).
 enum StateIndex : int {
   kY = 0,
   kYDot,
@@ -173,6 +199,8 @@ enum StateIndex : int {
   kX,
   kXDot,
   kSpin2,
+  kCarcassY,
+  kCarcassPsi,
   kStateSize
 };
 using GearState = Eigen::Matrix<double, kStateSize, 1>;
@@ -198,6 +226,9 @@ struct ContactState {
   // Per wheel (a twin gear's second wheel in [1]; zero for one wheel): drag and brake torque.
   std::array<double, 2> wheel_fx_n{};
   std::array<double, 2> wheel_brake_nm{};
+  // Carcass compliance: (e_y', e_psi'), the patch's motion relative to the rim; slip is then the
+  // patch's own motion (the rim's plus these), on which the law acts.
+  std::array<double, 2> carcass_rate{};
 };
 
 // Everything fixed for one run: the configuration, the contact model and the friction law's
@@ -229,10 +260,12 @@ ContactState contact_state(const GearModel& model, const GearMode& mode, double 
 // dx/dt.
 GearState gear_rhs(const GearModel& model, const GearMode& mode, double t, const GearState& x);
 
-// d(dx/dt)/dx, structured: the gear's equations and kinematics differentiated by hand, the
-// contact law's partials d(Fx, Fy, Mz)/d(vx, vy, omega, lambda) analytic for the coupled
-// fractional law (fractional_resultants_with_jacobian and f'(w)), by forward differences of the
-// law alone (one evaluation per input) for the others (docs/shimmy.md, "Numerics").
+// d(dx/dt)/dx, structured (with carcass compliance on: forward differences of gear_rhs, one
+// evaluation per state, since e_y', e_psi' come from an implicit solve): the gear's equations and
+// kinematics differentiated by hand, the contact law's partials d(Fx, Fy, Mz)/d(vx, vy, omega,
+// lambda) analytic for the coupled fractional law (fractional_resultants_with_jacobian and f'(w)),
+// by forward differences of the law alone (one evaluation per input) for the others
+// (docs/shimmy.md, "Numerics").
 using GearJacobian = Eigen::Matrix<double, kStateSize, kStateSize>;
 GearJacobian gear_jacobian(const GearModel& model, const GearMode& mode, double t,
                            const GearState& x);

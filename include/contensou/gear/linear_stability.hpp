@@ -60,9 +60,12 @@ struct EnergyPerCycle {
   double torsional_damping = 0.0;    // -c_psi psi' on psi'
   double lateral_friction = 0.0;     // (Fx sin psi + Fy cos psi) on y'
   double lateral_damping = 0.0;      // -c_y y' on y'
+  // Carcass compliance only (GearStructure::carcass_*): the drag's lever grows by e_y,
+  // -(e_y Fx)' = -(e_y0 dFx + Fx0 de_y) on psi'.
+  double carcass_lever = 0.0;
   double total() const {
     return spin_torque + trail_lateral_force + offset_drag + torsional_damping + lateral_friction +
-           lateral_damping;
+           lateral_damping + carcass_lever;
   }
 };
 
