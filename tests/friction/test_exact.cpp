@@ -6,20 +6,14 @@
 #include <random>
 
 #include "contensou/friction/exact_resultants.hpp"
+#include "patches.hpp"
 
 using namespace contensou;
 constexpr double kPi = std::numbers::pi;
 
 namespace {
 
-ContactPatch uniform_patch() {
-  ContactPatch p;
-  p.radius_m = 0.1;
-  p.reference_pressure_pa = 1.0e5;
-  p.friction = 0.5;
-  p.profile = uniform_profile();
-  return p;
-}
+using test_support::uniform_patch;
 
 ContactPatch seed_patch() {
   return seed_tire_patch();

@@ -13,6 +13,7 @@
 #include <Eigen/Eigenvalues>
 
 #include "contensou/friction/limit_surface.hpp"
+#include "patches.hpp"
 
 using namespace contensou;
 using Vec3 = Eigen::Vector3d;
@@ -21,14 +22,7 @@ constexpr double kPi = std::numbers::pi;
 
 namespace {
 
-ContactPatch uniform_patch() {
-  ContactPatch p;
-  p.radius_m = 0.1;
-  p.reference_pressure_pa = 1.0e5;
-  p.friction = 0.5;
-  p.profile = uniform_profile();
-  return p;
-}
+using test_support::uniform_patch;
 
 ContactPatch shifted_seed() {
   ContactPatch p = seed_tire_patch();
