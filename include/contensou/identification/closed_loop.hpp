@@ -65,7 +65,7 @@ struct ClosedLoopOptions {
   int folds = 5;        // k of the cross-validation
   int max_steps = 6;
   // speed_dependence with the exact integrals: f(w) at the local slip speed inside the
-  // integrals (exact; with a tabulated profile about 70 times slower, README "The closed
+  // integrals (exact; with a tabulated profile about 230 times slower, README "The closed
   // loop"), or at the effective speed (default).
   bool speed_inside_integrals = false;
   std::function<void(const std::string&)> progress;  // called with a line per stage
