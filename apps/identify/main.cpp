@@ -78,14 +78,7 @@ int run_fit(const std::string& data_path, double radius, std::optional<double> l
     o.noise_scale = std::array<double, 3>{noise_scale[0], noise_scale[1], noise_scale[2]};
   }
   const MeasuredData data = read_measured_csv(data_path);
-  app::RunInfo info{data_path,
-                    static_cast<int>(data.points.size()),
-                    data.count(0) + data.count(1) + data.count(2),
-                    radius,
-                    o.normal_load_n,
-                    profile.description,
-                    profile.rms_residual_pa,
-                    profile.max_residual_pa};
+  const app::RunInfo info = describe_run(data_path, data, radius, o.normal_load_n, profile);
   if (!loop_on) {
     const FitReport fit = fit_fractional_law(data, o);
     std::printf("%s %s: fractional law (seed eqs. 5-7)\n%s", kName, kVersion,

@@ -176,14 +176,7 @@ nb::dict identify(std::optional<std::string> path, std::string source, std::opti
       throw std::invalid_argument("the kinematics vx_mps, vy_mps and omega_radps are required");
     data = data_from_columns(source, *vx, *vy, *omega, {fx, fy, mz}, fz, ts);
   }
-  const ReportInput info{source,
-                         static_cast<int>(data.points.size()),
-                         data.count(0) + data.count(1) + data.count(2),
-                         radius,
-                         o.normal_load_n,
-                         profile.description,
-                         profile.rms_residual_pa,
-                         profile.max_residual_pa};
+  const ReportInput info = describe_run(source, data, radius, o.normal_load_n, profile);
   const std::size_t n = data.points.size();
   std::vector<double> measured(3 * n, std::nan(""));
   for (std::size_t i = 0; i < n; ++i)

@@ -201,4 +201,16 @@ ProfileChoice choose_profile(const std::string& spec, int smoothing, bool clip) 
           fit.rms_residual, fit.max_residual};
 }
 
+ReportInput describe_run(const std::string& file, const MeasuredData& data, double radius_m,
+                         std::optional<double> normal_load_n, const ProfileChoice& profile) {
+  return {file,
+          static_cast<int>(data.points.size()),
+          data.count(0) + data.count(1) + data.count(2),
+          radius_m,
+          normal_load_n,
+          profile.description,
+          profile.rms_residual_pa,
+          profile.max_residual_pa};
+}
+
 }  // namespace contensou

@@ -45,4 +45,9 @@ struct ProfileChoice {
 };
 ProfileChoice choose_profile(const std::string& spec, int smoothing = 0, bool clip = false);
 
+// The report's description of a run: the file (or source), the data's point and value counts,
+// the radius, the load and the profile as chosen.
+ReportInput describe_run(const std::string& file, const MeasuredData& data, double radius_m,
+                         std::optional<double> normal_load_n, const ProfileChoice& profile);
+
 }  // namespace contensou
