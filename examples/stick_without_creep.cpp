@@ -219,21 +219,30 @@ int main(int argc, char** argv) {
         "\n(4) fitted ellipsoid (pure slide and pure spin matched) against the exact "
         "surface: radial error 1/g_E - 1 over 24 x 48 normals\n");
     std::printf(
-        "| profile | L / R | max radial error | rms | worst normal (vx, vy, omega R) |\n"
-        "|---|---|---|---|---|\n");
+        "| profile | kappa | L / R | max radial error | rms | worst normal (vx, vy, omega R) "
+        "|\n|---|---|---|---|---|---|\n");
     ContactPatch u = seed();
     u.profile = uniform_profile();
     ContactPatch h = u;
     h.profile = hertz_profile();
+    auto orthotropic = [](ContactPatch p, double kappa) {
+      p.kappa = kappa;
+      return p;
+    };
     const std::pair<const char*, ContactPatch> rows[] = {
-        {"uniform", u}, {"Hertz", h}, {"seed tire", seed()}, {"seed tire, kx = 0.14", seed(0.14)}};
+        {"uniform", u},
+        {"Hertz", h},
+        {"seed tire", seed()},
+        {"seed tire, kx = 0.14", seed(0.14)},
+        {"uniform, orthotropic", orthotropic(u, 0.5)},
+        {"seed tire, orthotropic", orthotropic(seed(), 0.8)}};
     for (const auto& [name, p] : rows) {
       const LimitSurface s = make_limit_surface(p);
       const EllipsoidalLimitSurface e = fit_ellipsoid(s);
       const EllipsoidError err = ellipsoid_error(s, e, 24, 48);
       const Vec3 n(err.worst_normal[0], err.worst_normal[1], err.worst_normal[2] * s.radius);
       const Vec3 nn = n.normalized();
-      std::printf("| %s | %.4f | %.2f %% | %.2f %% | (%.2f, %.2f, %.2f) |\n", name,
+      std::printf("| %s | %.2f | %.4f | %.2f %% | %.2f %% | (%.2f, %.2f, %.2f) |\n", name, e.kappa,
                   e.torsional_length / s.radius, 100 * err.max_radial_error,
                   100 * err.rms_radial_error, nn[0], nn[1], nn[2]);
     }

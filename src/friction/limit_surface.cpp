@@ -75,14 +75,15 @@ struct ScaledExact {
   Mat3 hess_newton(const Vec3& t, const Vec3& g) const { return hess_impl(t, &g); }
 };
 
-// The ellipsoid: Dhat_E(t) = sqrt(t1^2 + t2^2 + l^2 t3^2), l = L / R, scaled by its own F.
+// The ellipsoid: Dhat_E(t) = sqrt(t1^2 + kappa^2 t2^2 + l^2 t3^2), l = L / R, scaled by its
+// own F.
 struct ScaledEllipsoid {
   const EllipsoidalLimitSurface& e;
   double radius() const { return e.radius; }
   double scale() const { return e.force_limit; }
   Vec3 lambda() const {
     const double l = e.torsional_length / e.radius;
-    return {1.0, 1.0, l * l};
+    return {1.0, e.kappa * e.kappa, l * l};
   }
   void eval(const Vec3& t, double& d, Vec3& g) const {
     const Vec3 L = lambda();
@@ -278,6 +279,7 @@ void check_surface(const LimitSurface& s) {
 void check_surface(const EllipsoidalLimitSurface& e) {
   require_positive("force_limit", e.force_limit);
   require_positive("torsional_length", e.torsional_length);
+  require_positive("kappa", e.kappa);
   require_positive("radius", e.radius);
 }
 
@@ -373,10 +375,6 @@ ContactStep step_any(const Surface& surface, const PlanarBody& body, const Vec3&
 
 LimitSurface make_limit_surface(const ContactPatch& patch, double tolerance) {
   validate(patch);
-  if (patch.kappa != 1.0)
-    throw InvalidArgument("kappa", format_value(patch.kappa),
-                          "the limit surface needs isotropic friction (kappa = 1): the "
-                          "orthotropic law diag(1, kappa) vc/|vc| has no dissipation potential");
   if (patch.slip_speed_friction)
     throw InvalidArgument("slip_speed_friction", "set",
                           "the limit surface needs a constant friction coefficient");
@@ -384,6 +382,7 @@ LimitSurface make_limit_surface(const ContactPatch& patch, double tolerance) {
     throw InvalidArgument("tolerance", format_value(tolerance), "must be in [1e-14, 1e-6]");
   LimitSurface s;
   s.model = make_exact_model(patch);
+  s.model.associated_orthotropy = true;  // the normality law of the set (header comment)
   s.radius = s.model.radius;
   s.force_scale = patch.friction * normal_load(patch);
   s.tolerance = tolerance;
@@ -442,15 +441,17 @@ Projection project(const LimitSurface& surface, const Vec3& trial, const Mat3& m
 
 EllipsoidalLimitSurface fit_ellipsoid(const LimitSurface& surface) {
   check_surface(surface);
-  // Pure sliding |F| (= f N for kappa = 1) and pure spin |Mz| (= M0) from the exact integrals.
-  const Resultants<double> slide =
-      exact_resultants(surface.model, Kinematics<double>{1.0, 0.0, 0.0}, {surface.tolerance})
-          .resultants;
-  const Resultants<double> spin =
-      exact_resultants(surface.model, Kinematics<double>{0.0, 0.0, 1.0}, {surface.tolerance})
-          .resultants;
+  // Pure sliding along x and y (|F| = f N and kappa f N) and pure spin |Mz| (= M0 for kappa
+  // = 1) from the exact integrals.
+  auto at = [&](double vx, double vy, double omega) {
+    return exact_resultants(surface.model, Kinematics<double>{vx, vy, omega}, {surface.tolerance})
+        .resultants;
+  };
+  const Resultants<double> slide_x = at(1.0, 0.0, 0.0), slide_y = at(0.0, 1.0, 0.0);
+  const Resultants<double> spin = at(0.0, 0.0, 1.0);
   EllipsoidalLimitSurface e;
-  e.force_limit = std::hypot(slide.Fx, slide.Fy);
+  e.force_limit = std::hypot(slide_x.Fx, slide_x.Fy);
+  e.kappa = std::hypot(slide_y.Fx, slide_y.Fy) / e.force_limit;
   e.torsional_length = std::abs(spin.Mz) / e.force_limit;
   e.radius = surface.radius;
   return e;
@@ -459,8 +460,8 @@ EllipsoidalLimitSurface fit_ellipsoid(const LimitSurface& surface) {
 double support(const EllipsoidalLimitSurface& e, const Vec3& d) {
   check_surface(e);
   check_vector("direction", d);
-  // D_E(s) = F sqrt(vx^2 + vy^2 + L^2 omega^2).
-  return e.force_limit * std::sqrt(d[0] * d[0] + d[1] * d[1] +
+  // D_E(s) = F sqrt(vx^2 + kappa^2 vy^2 + L^2 omega^2).
+  return e.force_limit * std::sqrt(d[0] * d[0] + e.kappa * e.kappa * d[1] * d[1] +
                                    e.torsional_length * e.torsional_length * d[2] * d[2]);
 }
 
@@ -489,14 +490,15 @@ Vec3 surface_point(const EllipsoidalLimitSurface& e, const Vec3& normal) {
 Gauge gauge(const EllipsoidalLimitSurface& e, const Vec3& w) {
   check_surface(e);
   check_vector("wrench", w);
-  // Closed form: g = sqrt((Fx/F)^2 + (Fy/F)^2 + (Mz/(F L))^2); normal Lambda^-1 W (scaled).
+  // Closed form: g = sqrt((Fx/F)^2 + (Fy/(kappa F))^2 + (Mz/(F L))^2); normal Lambda^-1 W
+  // (scaled).
   Gauge g;
-  const double F = e.force_limit, L = e.torsional_length;
-  g.value = std::sqrt((w[0] / F) * (w[0] / F) + (w[1] / F) * (w[1] / F) +
+  const double F = e.force_limit, L = e.torsional_length, Fy = e.kappa * F;
+  g.value = std::sqrt((w[0] / F) * (w[0] / F) + (w[1] / Fy) * (w[1] / Fy) +
                       (w[2] / (F * L)) * (w[2] / (F * L)));
   if (g.value > 0.0) {
     const double l = L / e.radius;
-    Vec3 t(w[0] / F, w[1] / F, w[2] / (F * e.radius) / (l * l));
+    Vec3 t(w[0] / F, w[1] / F / (e.kappa * e.kappa), w[2] / (F * e.radius) / (l * l));
     t.normalize();
     t[2] /= e.radius;
     g.normal = t;

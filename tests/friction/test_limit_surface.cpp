@@ -285,9 +285,17 @@ TEST(LimitSurface, FractionalDissipationGradientMatchesFiniteDifferences) {
 
 TEST(LimitSurface, BadInputIsRejectedWithTheParameterNamed) {
   ContactPatch p = uniform_patch();
-  p.kappa = 0.8;
+  p.slip_speed_friction = SlipSpeedFriction<double>{0.6, 0.4, 1.0, 1.0};
   try {
     make_limit_surface(p);
+    FAIL();
+  } catch (const InvalidArgument& e) {
+    EXPECT_EQ(e.parameter(), "slip_speed_friction");
+  }
+  EllipsoidalLimitSurface bad_e = fit_ellipsoid(make_limit_surface(uniform_patch()));
+  bad_e.kappa = 0.0;
+  try {
+    gauge(bad_e, Vec3(1, 0, 0));
     FAIL();
   } catch (const InvalidArgument& e) {
     EXPECT_EQ(e.parameter(), "kappa");
@@ -344,5 +352,176 @@ TEST(LimitSurface, ProjectionConvergesForExtremeTrialsAndIllConditionedMetrics) 
       EXPECT_NEAR(r.Fy, pr.wrench[1], tol * fN) << mag << " " << cond;
       EXPECT_NEAR(r.Mz, pr.wrench[2], tol * fN * R) << mag << " " << cond;
     }
+  }
+}
+
+// --- Orthotropic friction (kappa != 1) -------------------------------------------------------
+
+namespace {
+
+struct BruteSurface {
+  double D = 0.0;  // integral f sigma |K vc| dS, K = diag(1, kappa)
+  Vec3 gradient;   // integral f sigma (K^2 vc/|K vc|) {1, r x} dS (dD/d(vx, vy, omega))
+};
+
+// Midpoint rule on an (r, theta) grid about O, straight from the definitions (header of
+// limit_surface.hpp): the support function and its gradient, the associated traction.
+BruteSurface brute_surface(const ContactPatch& p, const Vec3& s, int nr = 500, int nt = 1000) {
+  BruteSurface out;
+  out.gradient.setZero();
+  const double R = p.radius_m, k2 = p.kappa * p.kappa;
+  for (int i = 0; i < nr; ++i) {
+    const double r = R * (i + 0.5) / nr;
+    for (int j = 0; j < nt; ++j) {
+      const double th = 2 * kPi * (j + 0.5) / nt;
+      const double x = r * std::cos(th), y = r * std::sin(th);
+      const double fs = p.friction * p.reference_pressure_pa * shape_value(p.profile, r / R) *
+                        (1 + p.profile.kx * x / R + p.profile.ky * y / R) * r * (R / nr) *
+                        (2 * kPi / nt);
+      const double cx = s[0] - s[2] * y, cy = s[1] + s[2] * x;
+      const double w = std::hypot(cx, p.kappa * cy);
+      if (w == 0.0) continue;
+      out.D += fs * w;
+      const double tx = fs * cx / w, ty = fs * k2 * cy / w;
+      out.gradient += Vec3(tx, ty, x * ty - y * tx);
+    }
+  }
+  return out;
+}
+
+ContactPatch orthotropic(ContactPatch p, double kappa) {
+  p.kappa = kappa;
+  return p;
+}
+
+}  // namespace
+
+// For kappa != 1 the surface is that of the local ellipses of tractions: its support function
+// is integral f sigma |diag(1, kappa) vc| dS and its points the associated law's resultants,
+// both checked against the brute-force grid (an oracle that does not use the chord integrals
+// or Euler's relation) in every regime: centre inside, near the rim, outside, pure sliding
+// (diagonal), pure spin; two kappas on both sides of 1, uniform and the shifted seed tire.
+TEST(LimitSurface, OrthotropicSupportAndPointsMatchTheBruteForceIntegralOfTheEllipses) {
+  for (const ContactPatch& base : {uniform_patch(), shifted_seed()}) {
+    for (double kappa : {0.6, 1.5}) {
+      const ContactPatch p = orthotropic(base, kappa);
+      const LimitSurface s = make_limit_surface(p);
+      const double fN = s.force_scale, R = s.radius;
+      for (const Vec3& n :
+           {Vec3(0.1, -0.05, 3.0), Vec3(0.3, 0.2, 1.0 / R * 0.4), Vec3(0.5, 0.5, 1.0 / R * 0.3),
+            Vec3(0.6, -0.8, 0.0), Vec3(0, 0, 1.0 / R), Vec3(-0.9, 0.1, -2.0 / R)}) {
+        const BruteSurface b = brute_surface(p, n);
+        const double scale = fN * std::hypot(n.head<2>().norm(), n[2] * R);
+        EXPECT_NEAR(support(s, n), b.D, 2e-4 * scale) << kappa << " " << n.transpose();
+        const Vec3 w = surface_point(s, n);
+        for (int j = 0; j < 3; ++j)
+          EXPECT_NEAR(w[j], b.gradient[j], 2e-4 * fN * (j == 2 ? R : 1.0))
+              << kappa << " " << n.transpose() << " component " << j;
+      }
+    }
+  }
+}
+
+// The associated law is a gradient field: the Jacobian of its wrench (ceres::Jet through the
+// exact integrals) is symmetric, and it annihilates the twist (degree 0); the library's default
+// orthotropic law is not (asymmetry of order (1 - kappa) f N R, so the check can fail). At
+// pure sliding the closed-form first order in omega (exact_resultants.hpp) gives the same
+// symmetric Jacobian, and its dMz/domega matches a difference quotient of the integrals.
+TEST(LimitSurface, OrthotropicLawIsAGradientWithASymmetricJacobianInEveryBranch) {
+  using J = ceres::Jet<double, 3>;
+  for (const ContactPatch& base : {uniform_patch(), shifted_seed()}) {
+    const ContactPatch p = orthotropic(base, 0.7);
+    const LimitSurface s = make_limit_surface(p);
+    const double fN = s.force_scale, R = s.radius;
+    ExactModel<double> plain = make_exact_model(p);
+    const ExactModel<J> mj = promote<J>(s.model), mj_plain = promote<J>(plain);
+    auto jacobian = [&](const ExactModel<J>& m, const Vec3& t) {
+      const Kinematics<J> k{J(t[0], 0), J(t[1], 1), J(t[2], 2)};
+      const Eigen::Matrix<J, 3, 1> g = dissipation_gradient(m, k, {1e-13});
+      Mat3 H;
+      for (int i = 0; i < 3; ++i) H.row(i) = g[i].v.transpose();
+      return H;
+    };
+    // Scaled so that entries are comparable: S H S with S = diag(1, 1, 1/R).
+    const Mat3 S = Vec3(1, 1, 1 / R).asDiagonal();
+    for (const Vec3& t : {Vec3(0.1, -0.05, 3.0 / R), Vec3(0.3, 0.2, 0.4 / R),
+                          Vec3(0.5, 0.5, 0.3 / R), Vec3(0.6, -0.8, 1e-18 / R)}) {
+      const Mat3 H = S * jacobian(mj, t) * S;
+      const double scale = fN / std::hypot(t.head<2>().norm(), t[2] * R);  // |H| ~ f N / |t|
+      EXPECT_LT((H - H.transpose()).cwiseAbs().maxCoeff(), 1e-8 * scale) << t.transpose();
+      EXPECT_LT((jacobian(mj, t) * t).norm(), 1e-8 * fN) << t.transpose();
+      if (t[2] * R > 1e-3) {
+        const Mat3 Hp = S * jacobian(mj_plain, t) * S;
+        EXPECT_GT((Hp - Hp.transpose()).cwiseAbs().maxCoeff(), 1e-4 * scale) << t.transpose();
+      }
+    }
+    // Pure sliding: d(grad D)/domega from the first-order term against central differences.
+    const Vec3 v(0.6, -0.8, 0.0);
+    const double dw = 1e-4 / R;
+    const Mat3 H0 = jacobian(mj, v);
+    const Vec3 gp =
+        -exact_resultants(s.model, Kinematics<double>{v[0], v[1], dw}, {1e-14}).resultants.vector();
+    const Vec3 gm = -exact_resultants(s.model, Kinematics<double>{v[0], v[1], -dw}, {1e-14})
+                         .resultants.vector();
+    const Vec3 fd = (gp - gm) / (2 * dw);
+    for (int i = 0; i < 3; ++i)
+      EXPECT_NEAR(H0(i, 2), fd[i], 1e-6 * fN * R * (i == 2 ? R : 1.0)) << i;
+  }
+}
+
+// Pure spin of a uniform orthotropic disk (no shift): |Mz| = (2/3) f N R times the mean of
+// |diag(1, kappa) e| over directions e (the associated traction at r is f sigma |D e_theta|
+// along the moment arm); the fitted ellipsoid reproduces the three extremes.
+TEST(LimitSurface, OrthotropicPureSpinAndEllipsoidExtremes) {
+  for (double kappa : {0.5, 0.8, 1.3}) {
+    const ContactPatch p = orthotropic(uniform_patch(), kappa);
+    const LimitSurface s = make_limit_surface(p);
+    const double fN = s.force_scale, R = s.radius;
+    double mean = 0.0;
+    constexpr int n = 4096;  // trapezoid on a periodic analytic integrand: spectral
+    for (int j = 0; j < n; ++j) {
+      const double th = 2 * kPi * j / n;
+      mean += std::hypot(std::sin(th), kappa * std::cos(th)) / n;
+    }
+    EXPECT_NEAR(support(s, Vec3(0, 0, 1)), 2.0 / 3.0 * fN * R * mean, 1e-10 * fN * R) << kappa;
+    EXPECT_NEAR(support(s, Vec3(0, 1, 0)), kappa * fN, 1e-10 * fN) << kappa;
+    const EllipsoidalLimitSurface e = fit_ellipsoid(s);
+    EXPECT_NEAR(e.force_limit, fN, 1e-10 * fN);
+    EXPECT_NEAR(e.kappa, kappa, 1e-10);
+    EXPECT_NEAR(e.force_limit * e.torsional_length, 2.0 / 3.0 * fN * R * mean, 1e-10 * fN * R);
+    for (const Vec3& d : {Vec3(1, 0, 0), Vec3(0, 1, 0), Vec3(0, 0, 1)})
+      EXPECT_NEAR(support(e, d), support(s, d), 1e-9 * fN * (d[2] != 0 ? R : 1.0));
+    const EllipsoidError err = ellipsoid_error(s, e, 12, 12);
+    EXPECT_LT(err.max_radial_error, 0.15) << kappa;
+    EXPECT_GT(err.max_radial_error, 0.0) << kappa;
+  }
+}
+
+// Projection onto an orthotropic surface: the result is on the boundary (gauge 1) and obeys
+// normality (the associated resultant of the returned twist is the returned wrench).
+TEST(LimitSurface, OrthotropicProjectionLandsOnTheBoundaryWithNormality) {
+  const ContactPatch p = orthotropic(shifted_seed(), 0.75);
+  const LimitSurface s = make_limit_surface(p);
+  const double fN = s.force_scale, R = s.radius;
+  std::mt19937 rng(15);
+  std::normal_distribution<double> N01;
+  for (int trial = 0; trial < 40; ++trial) {
+    const Vec3 w_t(2 * fN * N01(rng), 2 * fN * N01(rng), 2 * fN * R * N01(rng));
+    Mat3 A = Mat3::Random();
+    const Mat3 Sc = Vec3(1, 1, 1 / R).asDiagonal();
+    const Mat3 G = Sc * (A * A.transpose() + Mat3::Identity()) * Sc;
+    const Projection pr = project(s, w_t, 0.5 * (G + G.transpose()));
+    ASSERT_TRUE(pr.converged) << trial;
+    if (pr.inside) {
+      EXPECT_LE(gauge(s, w_t).value, 1.0 + 1e-9);
+      continue;
+    }
+    EXPECT_NEAR(gauge(s, pr.wrench).value, 1.0, 1e-8) << trial;
+    const Vec3 w_n = surface_point(s, -pr.twist);
+    EXPECT_LT(
+        (Vec3(w_n[0], w_n[1], w_n[2] / R) - Vec3(pr.wrench[0], pr.wrench[1], pr.wrench[2] / R))
+            .norm(),
+        1e-7 * fN)
+        << trial;
   }
 }

@@ -2,7 +2,9 @@
 // (theory.md section 2; seed eqs. 1-4), by adaptive cubature with an error estimate.
 //
 //   F  = integral_S tau dS,   Mz = integral_S (x tau_y - y tau_x) dS,
-//   tau = -sigma(r) f(|vc|) diag(1, kappa) vc / |vc|,   vc = v + omega z x r.
+//   tau = -sigma(r) f(|vc|) diag(1, kappa) vc / |vc|,   vc = v + omega z x r
+// (or the associated orthotropic law tau = -sigma f D^2 vc/|D vc|, D = diag(1, kappa), with
+// ExactModel::associated_orthotropy; limit_surface.hpp).
 //
 // The integral is taken in polar coordinates (s, beta) about the instantaneous centre of
 // sliding r_c = (-vy, vx)/omega, where vc/|vc| = sign(omega) z x e(beta) depends on beta alone.
@@ -51,6 +53,11 @@ struct ExactModel {
   T pressure{};         // p* [Pa]
   T friction{};         // f (unused if slip_speed is set)
   T kappa{1.0};
+  // Orthotropy (kappa != 1): false, the law of theory.md section 2, tau = -sigma f D vc/|vc|,
+  // D = diag(1, kappa); true, the associated (maximum-dissipation) law on the same local
+  // ellipse of tractions, tau = -sigma f D^2 vc/|D vc|, the gradient of sigma f |D vc| with
+  // respect to vc (the limit surface's law, limit_surface.hpp). The same for kappa = 1.
+  bool associated_orthotropy = false;
   T kx{0.0}, ky{0.0};  // shift relative to `radius`
   // p = [sqrt(1 - t) if sqrt_edge] * sum_k chebyshev[k] T_k(2 t - 1), t = (r / radius)^2.
   std::vector<T> chebyshev;
@@ -88,6 +95,7 @@ ExactModel<T> promote(const ExactModel<double>& m) {
   out.pressure = T(m.pressure);
   out.friction = T(m.friction);
   out.kappa = T(m.kappa);
+  out.associated_orthotropy = m.associated_orthotropy;
   out.kx = T(m.kx);
   out.ky = T(m.ky);
   out.chebyshev.reserve(m.chebyshev.size());
@@ -690,9 +698,13 @@ ExactResult<T> exact_resultants(const ExactModel<T>& m, const Kinematics<T>& k,
     const T mu = m.slip_speed ? friction_at(*m.slip_speed, v) : m.friction;
     const T N = m.pressure * (2.0 * std::numbers::pi * R * R) * A[0];
     const T C3 = m.pressure * (std::numbers::pi * R * R * R) * A[1];  // p* pi R^3 A^3
-    out.resultants.Fx = -mu * N * ux;
-    out.resultants.Fy = -mu * N * m.kappa * uy;
-    out.resultants.Mz = -mu * C3 * (m.kappa * uy * m.kx - ux * m.ky);
+    // Traction direction t0 (per unit f sigma): D u, or D^2 u / |D u| (associated).
+    const bool assoc = m.associated_orthotropy;
+    const T hu = assoc ? T(sqrt(ux * ux + m.kappa * m.kappa * uy * uy)) : T(1.0);
+    const T tx = ux / hu, ty = (assoc ? m.kappa * m.kappa : m.kappa) * uy / hu;
+    out.resultants.Fx = -mu * N * tx;
+    out.resultants.Fy = -mu * N * ty;
+    out.resultants.Mz = -mu * C3 * (ty * m.kx - tx * m.ky);
     // First order in omega (theory.md section 2, vc/|vc| linearised about e_v; e_p = z x e_v):
     //   vc/|vc| = e_v + (omega/|v|) (r.e_v) e_p,  |vc| = |v| - omega (r.e_p),
     //   integral sigma r dS = C3 k,  integral sigma r r^T dS = C3 R I,
@@ -708,10 +720,23 @@ ExactResult<T> exact_resultants(const ExactModel<T>& m, const Kinematics<T>& k,
     const double c3 = value_of(C3), iv = std::min(1.0 / value_of(v), 1e300);
     const double fv = value_of(mu) * iv;
     const double fp = m.slip_speed ? value_of(detail::friction_slope_at(*m.slip_speed, v)) : 0.0;
-    const double dFx = c3 * (fv * kv * uyv + fp * kp * uxv);
-    const double dFy = c3 * kap * (-fv * kv * uxv + fp * kp * uyv);
-    const double dMz =
+    double dFx = c3 * (fv * kv * uyv + fp * kp * uxv);
+    double dFy = c3 * kap * (-fv * kv * uxv + fp * kp * uyv);
+    double dMz =
         -c3 * R * (fv * (kap * uxv * uxv + uyv * uyv) + fp * (kap * uyv * uyv + uxv * uxv));
+    if (assoc) {
+      // Associated law (tau = -f sigma D n, n = D vc/|D vc|): with h = |D u|, n = D u / h,
+      // P = I - n n^T, J = z x, d tau/d omega = -sigma [f/(|v| h) D P D J r + f' (J r.u) D n]:
+      //   dF/domega  = -(f C3/(|v| h)) D P D J k + f' C3 kp D n,
+      //   dMz/domega = -C3 R [(f/(|v| h)) tr(D P D) + f' h],  tr(D P D) = 1 + kappa^2 - |D n|^2.
+      const double k2 = kap * kap, kxv = value_of(m.kx), kyv = value_of(m.ky);
+      const double h = std::sqrt(uxv * uxv + k2 * uyv * uyv);
+      const double txv = uxv / h, tyv = k2 * uyv / h;
+      const double cr = (k2 * uyv * kxv - uxv * kyv) / h;  // n . D J k
+      dFx = -c3 * (fv / h) * (-kyv - txv * cr) + c3 * fp * kp * txv;
+      dFy = -c3 * (fv / h) * (k2 * kxv - tyv * cr) + c3 * fp * kp * tyv;
+      dMz = -c3 * R * ((fv / h) * (1.0 + k2 - txv * txv - tyv * tyv) + fp * h);
+    }
     out.resultants.Fx += k.omega * dFx;
     out.resultants.Fy += k.omega * dFy;
     out.resultants.Mz += k.omega * dMz;
@@ -779,7 +804,8 @@ ExactResult<T> exact_resultants(const ExactModel<T>& m, const Kinematics<T>& k,
   }
 
   // Outer integrand for a batch of chords with Jacobians jac: u = sign(omega) z x e,
-  // D u = (u_x, kappa u_y); F ~ D u I0, Mz ~ (D u)_y Ix - (D u)_x Iy.
+  // traction direction t = D u = (u_x, kappa u_y) (or D^2 u / |D u| for the associated law);
+  // F ~ t I0, Mz ~ t_y Ix - t_x Iy.
   auto chords_to_samples = [&](const detail::Chord<T>* ch, const T* jac, int n,
                                detail::Sample<T, 3>* out_samples) {
     std::array<std::array<T, 3>, detail::kKronrodPoints> I;
@@ -798,7 +824,12 @@ ExactResult<T> exact_resultants(const ExactModel<T>& m, const Kinematics<T>& k,
       }
     }
     for (int i = 0; i < n; ++i) {
-      const T ux = -sgn * ch[i].ey, uy = sgn * ch[i].ex * m.kappa;
+      T ux = -sgn * ch[i].ey, uy = sgn * ch[i].ex * m.kappa;
+      if (m.associated_orthotropy) {
+        const T hu = sqrt(ch[i].ey * ch[i].ey + m.kappa * m.kappa * ch[i].ex * ch[i].ex);
+        ux /= hu;
+        uy *= m.kappa / hu;
+      }
       out_samples[i].value = {ux * I[i][0] * jac[i], uy * I[i][0] * jac[i],
                               (uy * I[i][1] - ux * I[i][2]) * jac[i]};
       const double j = std::abs(value_of(jac[i]));

@@ -14,12 +14,17 @@
 // For sliding with spin this is Leine & Glocker's set-valued Coulomb-Contensou law (2003,
 // Eur. J. Mech. A/Solids 22): w in C, and -s in the normal cone of C at w.
 //
-// Scope: isotropic friction (kappa = 1) with a constant coefficient, any profile and shift.
-// The library's orthotropic law tau = -sigma f diag(1, kappa) vc/|vc| reaches the same local
-// set (the ellipse of semi-axes f sigma, kappa f sigma) but is not associated (not the
-// maximum-dissipation point of that ellipse for kappa != 1), so its resultant is not a
-// gradient and has no potential D; a speed-dependent f(w) makes D not homogeneous. Both are
-// refused (InvalidArgument on kappa or slip_speed_friction).
+// Orthotropic friction (kappa != 1): the local set of tractions is the ellipse of semi-axes
+// f sigma, kappa f sigma; its support function is f sigma |D vc|, D = diag(1, kappa), so
+//   D(v, omega) = integral_S f sigma |D vc| dS,
+// and the law that belongs to the set (maximum dissipation, its gradient) is the associated
+// tau = -f sigma D^2 vc/|D vc|. The library's default orthotropic law of theory.md section 2,
+// tau = -f sigma D vc/|vc|, reaches the same ellipse but not at its maximum-dissipation point
+// (it is not a gradient: its Jacobian is not symmetric), so the surface built here uses the
+// associated law (ExactModel::associated_orthotropy; the two agree for kappa = 1 and at pure
+// sliding along x or y). Scope: a constant coefficient, any profile, shift and kappa; a
+// speed-dependent f(w) makes D not homogeneous and is refused (InvalidArgument on
+// slip_speed_friction).
 //
 // Units: twist (vx, vy, omega) [m/s, m/s, rad/s], wrench (Fx, Fy, Mz) [N, N, N m], D [W].
 // Internally the work is done in the scaled twist t = (vx, vy, omega R) and scaled wrench
@@ -44,8 +49,8 @@ struct LimitSurface {
   double hessian_step = 1e-4;  // central-difference step on the unit sphere of scaled twists
 };
 
-// Throws InvalidArgument for a bad patch, kappa != 1, or a slip-speed friction law; the
-// tolerance must be in [1e-14, 1e-6].
+// Throws InvalidArgument for a bad patch or a slip-speed friction law; the tolerance must be
+// in [1e-14, 1e-6]. kappa != 1 gives the associated law's surface (header comment).
 LimitSurface make_limit_surface(const ContactPatch& patch, double tolerance = 1e-12);
 
 // D and its derivatives with respect to the twist (vx, vy, omega).
@@ -122,17 +127,20 @@ Projection project(const LimitSurface& surface, const Eigen::Vector3d& trial,
                    const Eigen::Matrix3d& metric, const ProjectionOptions& options = {});
 
 // The ellipsoid of the engines (MuJoCo's elliptic cone, cardillo's Coulomb-Contensou law):
-//   (Fx / F)^2 + (Fy / F)^2 + (Mz / (F L))^2 <= 1,  F = force_limit, L = torsional_length,
-// support function D_E(s) = F sqrt(vx^2 + vy^2 + L^2 omega^2).
+//   (Fx / F)^2 + (Fy / (kappa F))^2 + (Mz / (F L))^2 <= 1,  F = force_limit,
+// L = torsional_length, support function D_E(s) = F sqrt(vx^2 + kappa^2 vy^2 + L^2 omega^2).
 struct EllipsoidalLimitSurface {
-  double force_limit = 0.0;       // F [N]
+  double force_limit = 0.0;       // F [N], along x
   double torsional_length = 0.0;  // L [m]
   double radius = 0.0;            // R [m], only for scaling
+  double kappa = 1.0;             // Fy limit / Fx limit
 };
 
-// Fitted to the exact surface by matching its two extremes: F = |F| at pure sliding (f N for
-// kappa = 1, any profile) and F L = |Mz| at pure spin (M0 = 2 pi f R^3 p* A^2, theory.md
-// section 4; for uniform pressure L = 2R/3, Hertz 3 pi R / 16).
+// Fitted to the exact surface by matching its extremes: F = |F| at pure sliding along x (f N,
+// any profile), kappa F at pure sliding along y, and F L = |Mz| at pure spin (M0 = 2 pi f R^3
+// p* A^2 for kappa = 1, theory.md section 4; for uniform pressure L = 2R/3, Hertz 3 pi R / 16;
+// for kappa != 1 and no shift, M0 times the mean of |D e| over directions e, (2/pi) E(1 -
+// kappa^2) with E the complete elliptic integral of parameter m, for kappa <= 1).
 EllipsoidalLimitSurface fit_ellipsoid(const LimitSurface& surface);
 
 double support(const EllipsoidalLimitSurface& surface, const Eigen::Vector3d& direction);
