@@ -2,7 +2,8 @@
 coefficient converter. Oracles: the library's own resultants at the plugin's state (through the
 Python package), MuJoCo's mj_applyFT for the mapping to generalised forces, the closed forms of
 theory.md section 3 (the sliding disk's fixed point 0.6530, integrated by RK4 for the stopping
-time), and (2/3) f N R at pure spin.
+time), (2/3) f N R at pure spin, and for the set-valued law MuJoCo's dense mass matrix and
+Jacobian (the Delassus matrix), a loaded disk's displacement and the direction of a force.
 
 Skipped, with the reason shown, only if `mujoco` cannot be imported; a missing plugin library
 is an error.
