@@ -140,6 +140,9 @@ def closed_form_disk(v0: float, u0: float, friction: float, dt: float = 1e-5) ->
 
 
 # --- MuJoCo models ---------------------------------------------------------------------------------
+PLUGIN_VARIANTS = ("exact", "fractional", "set-valued", "set-valued-ellipsoid")
+
+
 @dataclass
 class Disk:
     radius: float = 0.1
@@ -152,17 +155,20 @@ class Disk:
 
 def disk_mjcf(disk: Disk, variant: str, regularization: float = 1e-4, profile: str = "uniform",
               stiffness: float | None = None) -> str:
-    """variant: elliptic | pyramidal (MuJoCo's own, condim 4) | exact | fractional (plugin, with
-    the patch radius R = disk.radius, or from the normal force if a stiffness is given)."""
-    if variant in ("exact", "fractional"):
+    """variant: elliptic | pyramidal (MuJoCo's own, condim 4) | exact | fractional | set-valued
+    (exact limit surface) | set-valued-ellipsoid (plugin, with the patch radius R = disk.radius,
+    or from the normal force if a stiffness is given)."""
+    if variant in PLUGIN_VARIANTS:
         size = (f'<config key="stiffness" value="{stiffness}"/>' if stiffness
                 else f'<config key="radius" value="{disk.radius}"/>')
+        law = ('<config key="law" value="set-valued"/><config key="surface" value="ellipsoid"/>'
+               if variant == "set-valued-ellipsoid" else f'<config key="law" value="{variant}"/>')
         ext = (
             '<extension><plugin plugin="contensou.friction"><instance name="patch">'
             '<config key="pairs" value="disk floor"/>'
             f'<config key="friction" value="{disk.friction}"/>'
             f'{size}<config key="profile" value="{profile}"/>'
-            f'<config key="law" value="{variant}"/>'
+            f'{law}'
             f'<config key="regularization" value="{regularization}"/>'
             "</instance></plugin></extension>"
         )
@@ -173,7 +179,7 @@ def disk_mjcf(disk: Disk, variant: str, regularization: float = 1e-4, profile: s
         contact = f'condim="4" friction="{disk.friction} {torsion} 0"'
         cone = f'cone="{variant}"'
     else:
-        raise ValueError(f"variant '{variant}': use elliptic, pyramidal, exact or fractional")
+        raise ValueError(f"variant '{variant}': use elliptic, pyramidal or one of {PLUGIN_VARIANTS}")
     return f"""<mujoco model="disk">
   <option timestep="{disk.timestep}" {cone}/>
   {ext}
@@ -193,7 +199,7 @@ def run_disk(mujoco, disk: Disk, variant: str, v0: float, u0: float, t_end: floa
     """Settles the disk on the plane for `settle` s, then throws it along x with v0 and spin
     omega0 = u0 / R (from `drop` metres above the plane if drop > 0: a landing); records
     v = |horizontal velocity|, u = |omega_z| R and the normal force."""
-    if variant in ("exact", "fractional"):
+    if variant in PLUGIN_VARIANTS:
         load_plugin(mujoco)
     m = mujoco.MjModel.from_xml_string(disk_mjcf(disk, variant, regularization))
     d = mujoco.MjData(m)

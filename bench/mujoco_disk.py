@@ -1,8 +1,9 @@
 #!/usr/bin/env python3
-"""The sliding-spinning disk in MuJoCo (Farkas et al., PRL 90, 248302, 2003), four ways:
+"""The sliding-spinning disk in MuJoCo (Farkas et al., PRL 90, 248302, 2003), six ways:
 (a) MuJoCo's elliptic cone with torsional friction mu_t = (2/3) R f (the converter's pure-spin
 value for uniform pressure), (b) its pyramidal cone with the same coefficients, (c) the contensou
-plugin with the exact law, (d) the plugin with the fractional law. Prints the stopping ratio
+plugin with the exact law, (d) the plugin with the fractional law, (e) the plugin's set-valued
+law on the exact limit surface, (f) on its fitted ellipsoid. Prints the stopping ratio
 v / (omega R) as v + omega R falls to 1 %, 0.3 % and 0.1 % of its start, the times at which v
 and omega R fall below 1 % of their start, against the closed form (theory.md section 3,
 integrated by RK4; the exact fixed point 0.6530), the cost of the normal force's one-step lag,
@@ -29,6 +30,8 @@ VARIANTS = {
     "pyramidal": "(b) MuJoCo pyramidal cone, mu_t = 2/3 R f",
     "exact": "(c) contensou plugin, exact law",
     "fractional": "(d) contensou plugin, fractional law",
+    "set-valued": "(e) contensou plugin, set-valued (exact)",
+    "set-valued-ellipsoid": "(f) contensou plugin, set-valued (ellipsoid)",
 }
 LEVELS = (0.01, 0.003, 0.001)
 

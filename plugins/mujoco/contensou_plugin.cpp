@@ -8,7 +8,8 @@
 //     <config key="friction" value="0.5"/>          f
 //     <config key="radius" value="0.05"/>           patch radius R [m], or instead:
 //     <config key="stiffness" value="1e7"/>         k [N/m^3]: R = (N / k)^(1/3) (Hertz-like)
-//     <config key="law" value="fractional"/>        fractional (default) | exact
+//     <config key="law" value="fractional"/>        fractional (default) | exact | set-valued
+//     <config key="surface" value="exact"/>         set-valued only: exact (default) | ellipsoid
 //     <config key="regularization" value="1e-4"/>   eps [m/s] of the fractional law
 //     <config key="tolerance" value="1e-8"/>        of the exact integrals (relative to f N)
 //   </instance></plugin></extension>
@@ -25,16 +26,55 @@
 // contact solution of this step does not exist yet. The plugin uses the PREVIOUS step's
 // solution: in `advance` (after the solver) it stores N = sum over the pair's contacts of the
 // normal component of mj_contactForce, and the next step's friction uses it. A contact that is
-// new this step has N = 0 (no friction in its first step). State per pair (kStateSize numbers):
-// [0] N stored for the next step, [1] N used this step, [2] R, [3..5] vx vy omega, [6..8] Fx Fy Mz.
+// new this step has N = 0 (no friction in its first step).
+//
+// law="set-valued" (issue 15): the wrench is a point of the patch's limit surface C (the exact
+// one, or its fitted ellipsoid; limit_surface.hpp), found per pair by one local Moreau-Jean
+// projection before MuJoCo's solver (Moreau 1988; Leine & Glocker 2003), so that a contact
+// loaded inside the limit sticks with zero twist instead of creeping:
+//   J (3 x nv): the twist s = (vx, vy, omega) = J qvel of tire relative to road at the patch
+//     centre (rows ex.Jp, ey.Jp, n.Jr of mj_jac(tire) - mj_jac(road));
+//   A = h J M^-1 J^T, the Delassus matrix (twist change over a step h per unit wrench); M^-1 by
+//     mj_solveM with qLD, which mj_fwdPosition (mj_factorM) has made current before the
+//     passive stage. Its symmetric part is used; if its smallest eigenvalue is below 1e-12 of
+//     the largest (a pair that cannot slide or spin in some direction) 1e-12 of the largest is
+//     added to the diagonal; a pair with A = 0 gets no friction;
+//   s_free = s + h J a_other, the twist at the end of the step without this pair's friction:
+//     a_other = M^-1 f_app (f_app = qfrc_applied + xfrc_applied of this step, known now) + the
+//     rest (gravity and bias forces, other passive forces, actuators, MuJoCo's constraint
+//     forces, the other pairs' friction) taken from the PREVIOUS step: `advance` stores the
+//     patch acceleration (world frame, linear and angular)
+//       c = (J qvel+ - s) / h - J M^-1 (J^T w + f_app)      (qvel+: the velocity after the step)
+//     and the next step uses J a_other = (projection of c) + J M^-1 f_app. With no history (the
+//     first step of a contact) s_free = s;
+//   trial w_t = -A^-1 s_free; w = argmin over w in C(N, R) of (w - w_t)^T A (w - w_t); the
+//     twist at the end of the step is then s_free + A w: 0 when w_t is inside C (stick). In the
+//     scaled wrench u = (Fx, Fy, Mz / R) / N on the unit patch's surface C_1 (R = 1, N = 1; C
+//     scales as w = N S u, S = diag(1, 1, R)): metric G = S A S, u_t = -G^-1 S s_free / N.
+// At rest under a constant load the trial is the previous step's wrench (J qacc = 0 there), so
+// a load inside C is a fixed point: the same wrench, the same qacc, the twist stays 0.
+// What stays approximate (README "Creep"): N and the non-friction forces lag one step; the
+// projection is per pair (the other pairs enter through the previous step); the estimate
+// assumes qvel+ = qvel + h qacc with the same M (Euler without implicit damping).
+//
+// State per pair (kStateSize numbers): [0] N stored for the next step, [1] N used this step,
+// [2] R, [3..5] vx vy omega, [6..8] Fx Fy Mz, [9] set-valued: 1 if the trial was inside C
+// (stick), [10] projection iterations, [11] 1 if the pair had contacts this step, [12..14]
+// patch centre (world), [15..20] relative velocity at the centre this step (world, linear and
+// angular), [21..26] force and torque on the tire (world), [27..32] c of `advance` (world,
+// linear and angular), [33] 1 if c is valid (the pair had contacts in the previous step).
 #include <mujoco/mujoco.h>
 
+#include <Eigen/Cholesky>
+#include <Eigen/Core>
+#include <Eigen/Eigenvalues>
 #include <algorithm>
 #include <array>
 #include <cmath>
 #include <cstdlib>
 #include <exception>
 #include <memory>
+#include <optional>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -42,19 +82,29 @@
 #include "contensou/friction/contact_patch.hpp"
 #include "contensou/friction/exact_resultants.hpp"
 #include "contensou/friction/fractional_law.hpp"
+#include "contensou/friction/limit_surface.hpp"
 #include "contensou/friction/pressure_profile.hpp"
 
 namespace contensou::mujoco_plugin {
 namespace {
 
-constexpr int kStateSize = 9;
+// State layout per pair (header comment).
+constexpr int kN = 0, kNUsed = 1, kRadius = 2, kTwist = 3, kWrench = 6, kStick = 9, kIter = 10,
+              kContact = 11, kCentre = 12, kVel = 15, kForce = 21, kOther = 27, kOtherValid = 33;
+constexpr int kStateSize = 34;
 constexpr const char* kName = "contensou.friction";
-constexpr std::array<const char*, 8> kAttributes = {
-    "pairs", "profile", "friction", "radius", "stiffness", "law", "regularization", "tolerance"};
+constexpr std::array<const char*, 9> kAttributes = {"pairs",   "profile",        "friction",
+                                                    "radius",  "stiffness",      "law",
+                                                    "surface", "regularization", "tolerance"};
+
+using Vec3 = Eigen::Vector3d;
+using Mat3 = Eigen::Matrix3d;
 
 struct Pair {
   int tire = -1, road = -1;  // geom ids
 };
+
+enum class Law { fractional, exact, set_valued };
 
 struct Config {
   std::vector<std::pair<std::string, std::string>> pair_names;
@@ -62,7 +112,8 @@ struct Config {
   double friction = 0.0;
   double radius = 0.0;     // 0: from the stiffness
   double stiffness = 0.0;  // N/m^3
-  bool exact = false;
+  Law law = Law::fractional;
+  bool ellipsoid = false;  // set-valued: the fitted ellipsoid instead of the exact surface
   double regularization = 1e-4;
   double tolerance = 1e-8;
 };
@@ -112,24 +163,60 @@ Config read_config(const mjModel* m, int instance) {
   if ((c.radius > 0) == (c.stiffness > 0))
     fail("give exactly one of config 'radius' [m] and 'stiffness' [N/m^3]");
   const std::string law = attribute(m, instance, "law");
-  if (!law.empty() && law != "fractional" && law != "exact")
-    fail("config 'law' = '" + law + "': use fractional or exact");
-  c.exact = law == "exact";
+  if (law.empty() || law == "fractional")
+    c.law = Law::fractional;
+  else if (law == "exact")
+    c.law = Law::exact;
+  else if (law == "set-valued")
+    c.law = Law::set_valued;
+  else
+    fail("config 'law' = '" + law + "': use fractional, exact or set-valued");
+  const std::string surface = attribute(m, instance, "surface");
+  if (!surface.empty() && c.law != Law::set_valued)
+    fail("config 'surface' = '" + surface + "' needs law 'set-valued' (law is '" +
+         (law.empty() ? std::string("fractional") : law) + "')");
+  if (!surface.empty() && surface != "exact" && surface != "ellipsoid")
+    fail("config 'surface' = '" + surface + "': use exact or ellipsoid");
+  c.ellipsoid = surface == "ellipsoid";
   c.regularization = number(m, instance, "regularization", 1e-4, true);
   c.tolerance = number(m, instance, "tolerance", 1e-8, true);
   return c;
 }
 
+// nv as the int that mju_* and mj_solveM take (mjtSize in MuJoCo 4).
+int dofs(const mjModel* m) {
+  return static_cast<int>(m->nv);
+}
+
+// Work arrays of the set-valued law (nv = degrees of freedom).
+struct Scratch {
+  std::vector<mjtNum> jp_tire, jr_tire, jp_road, jr_road;  // 3 x nv each
+  std::vector<mjtNum> jw;                                  // 6 x nv: relative, world frame
+  std::vector<mjtNum> j, x;                                // 3 x nv: contact rows, M^-1 rows
+  std::vector<mjtNum> q, y;                                // nv
+  void resize(int nv) {
+    for (auto* v : {&jp_tire, &jr_tire, &jp_road, &jr_road, &j, &x})
+      v->assign(3 * static_cast<std::size_t>(nv), 0.0);
+    jw.assign(6 * static_cast<std::size_t>(nv), 0.0);
+    q.assign(nv, 0.0);
+    y.assign(nv, 0.0);
+  }
+};
+
 // The instance: the law for a unit patch (R = 1 m, N = 1 N), scaled per contact. Coulomb
 // friction with constant f is homogeneous of degree 0 in the velocities, so the exact resultants
 // are F = N F_1(v/R, omega), Mz = N R Mz_1(v/R, omega) (theory.md section 3 uses the same
 // scaling); the fractional law scales F0 = f N and M0 = f N R A^2/A^1 (theory.md section 4:
-// M0 = 2 pi f R^3 p* A^2 with N = 2 pi R^2 p* A^1).
+// M0 = 2 pi f R^3 p* A^2 with N = 2 pi R^2 p* A^1); the limit surface scales as
+// C(N, R) = N diag(1, 1, R) C_1 (the same homogeneity: its points are exact resultants).
 struct Instance {
   Config config;
   std::vector<Pair> pairs;
   FractionalLaw<double> unit_law;
   std::unique_ptr<ExactModel<double>> unit_exact;
+  std::unique_ptr<LimitSurface> unit_surface;             // set-valued, exact surface
+  std::optional<EllipsoidalLimitSurface> unit_ellipsoid;  // set-valued, ellipsoid
+  Scratch scratch;
 
   Resultants<double> wrench(double N, double R, double vx, double vy, double omega) const {
     if (!(N > 0)) return {};
@@ -145,6 +232,11 @@ struct Instance {
     law.radius = R;
     law.regularization_speed = config.regularization;
     return fractional_resultants(law, Kinematics<double>{vx, vy, omega});
+  }
+
+  Projection project_unit(const Vec3& trial, const Mat3& metric) const {
+    return unit_ellipsoid ? project(*unit_ellipsoid, trial, metric)
+                          : project(*unit_surface, trial, metric);
   }
 };
 
@@ -184,13 +276,27 @@ int init(const mjModel* m, mjData* d, int instance) {
     inst->pairs.push_back({geom_id(m, tire), geom_id(m, road)});
   try {
     const ContactPatch patch = unit_patch(inst->config);
-    if (inst->config.exact)
-      inst->unit_exact = std::make_unique<ExactModel<double>>(make_exact_model(patch));
-    else
-      inst->unit_law = fractional_law_from_patch(patch);
+    switch (inst->config.law) {
+      case Law::exact:
+        inst->unit_exact = std::make_unique<ExactModel<double>>(make_exact_model(patch));
+        break;
+      case Law::fractional:
+        inst->unit_law = fractional_law_from_patch(patch);
+        break;
+      case Law::set_valued: {
+        auto surface =
+            std::make_unique<LimitSurface>(make_limit_surface(patch, inst->config.tolerance));
+        if (inst->config.ellipsoid)
+          inst->unit_ellipsoid = fit_ellipsoid(*surface);
+        else
+          inst->unit_surface = std::move(surface);
+        break;
+      }
+    }
   } catch (const std::exception& e) {
     fail(e.what());
   }
+  inst->scratch.resize(dofs(m));
   d->plugin_data[instance] = reinterpret_cast<uintptr_t>(inst.release());
   return 0;
 }
@@ -200,13 +306,16 @@ void destroy(mjData* d, int instance) {
   d->plugin_data[instance] = 0;
 }
 
-void copy(mjData* dest, const mjModel*, const mjData* src, int instance) {
+void copy(mjData* dest, const mjModel* m, const mjData* src, int instance) {
   const Instance* from = instance_of(src, instance);
   auto to = std::make_unique<Instance>();
   to->config = from->config;
   to->pairs = from->pairs;
   to->unit_law = from->unit_law;
   if (from->unit_exact) to->unit_exact = std::make_unique<ExactModel<double>>(*from->unit_exact);
+  if (from->unit_surface) to->unit_surface = std::make_unique<LimitSurface>(*from->unit_surface);
+  to->unit_ellipsoid = from->unit_ellipsoid;
+  to->scratch.resize(dofs(m));
   delete instance_of(dest, instance);
   dest->plugin_data[instance] = reinterpret_cast<uintptr_t>(to.release());
 }
@@ -235,14 +344,89 @@ void point_velocity(const mjModel* m, const mjData* d, int body, const mjtNum po
   mju_copy3(rot, v6);
 }
 
+// Relative Jacobian (6 x nv, world frame; rows 0-2 linear velocity, 3-5 angular velocity) of
+// the tire's material point at `point` with respect to the road's: mj_jac(tire) - mj_jac(road).
+void relative_jacobian(const mjModel* m, const mjData* d, const mjtNum point[3], int tire_body,
+                       int road_body, Scratch& w) {
+  const int nv = dofs(m);
+  mj_jac(m, d, w.jp_tire.data(), w.jr_tire.data(), point, tire_body);
+  mj_jac(m, d, w.jp_road.data(), w.jr_road.data(), point, road_body);
+  for (int k = 0; k < 3 * nv; ++k) {
+    w.jw[k] = w.jp_tire[k] - w.jp_road[k];
+    w.jw[3 * nv + k] = w.jr_tire[k] - w.jr_road[k];
+  }
+}
+
+// The generalised force of the applied inputs: qfrc_applied + xfrc_applied (force and torque
+// at each body's centre of mass, as MuJoCo applies them).
+void applied_force(const mjModel* m, mjData* d, mjtNum* q) {
+  mju_copy(q, d->qfrc_applied, dofs(m));
+  for (int b = 1; b < m->nbody; ++b) {
+    const mjtNum* f = d->xfrc_applied + 6 * b;
+    if (!mju_isZero(f, 6)) mj_applyFT(m, d, f, f + 3, d->xipos + 3 * b, b, q);
+  }
+}
+
+// The set-valued law at one pair (header comment): fills the wrench, stick flag and iterations.
+// s: this step's state block of the pair; ex, ey, normal: the contact frame.
+Vec3 set_valued_wrench(const mjModel* m, mjData* d, Instance& inst, mjtNum* s, double N, double R,
+                       const mjtNum ex[3], const mjtNum ey[3], const mjtNum normal[3]) {
+  const int nv = dofs(m);
+  const double h = m->opt.timestep;
+  Scratch& w = inst.scratch;
+  // Contact rows of the Jacobian: ex.Jp, ey.Jp, n.Jr.
+  for (int j = 0; j < nv; ++j) {
+    mjtNum p[3] = {w.jw[j], w.jw[nv + j], w.jw[2 * nv + j]};
+    mjtNum r[3] = {w.jw[3 * nv + j], w.jw[4 * nv + j], w.jw[5 * nv + j]};
+    w.j[j] = mju_dot3(ex, p);
+    w.j[nv + j] = mju_dot3(ey, p);
+    w.j[2 * nv + j] = mju_dot3(normal, r);
+  }
+  // A = h J M^-1 J^T (rows of X = M^-1 J_i^T).
+  mj_solveM(m, d, w.x.data(), w.j.data(), 3);
+  Mat3 A;
+  for (int a = 0; a < 3; ++a)
+    for (int b = 0; b < 3; ++b) A(a, b) = h * mju_dot(w.j.data() + a * nv, w.x.data() + b * nv, nv);
+  A = 0.5 * (A + A.transpose());
+  const Vec3 twist(s[kTwist], s[kTwist + 1], s[kTwist + 2]);
+  // s_free = s + h (c projected on the contact frame + J M^-1 f_app); c from the previous step.
+  Vec3 s_free = twist;
+  if (s[kOtherValid] != 0.0) {
+    applied_force(m, d, w.q.data());
+    mj_solveM(m, d, w.y.data(), w.q.data(), 1);
+    const mjtNum* c = s + kOther;
+    Vec3 a_other(mju_dot3(ex, c), mju_dot3(ey, c), mju_dot3(normal, c + 3));
+    for (int a = 0; a < 3; ++a) a_other[a] += mju_dot(w.j.data() + a * nv, w.y.data(), nv);
+    s_free += h * a_other;
+  }
+  // Scaled: u = S^-1 w / N, S = diag(1, 1, R); metric G = S A S; u_t = -G^-1 S s_free / N.
+  const Vec3 Sd(1.0, 1.0, R);
+  Mat3 G = Sd.asDiagonal() * A * Sd.asDiagonal();
+  const Eigen::SelfAdjointEigenSolver<Mat3> eig(G, Eigen::EigenvaluesOnly);
+  const double lmax = eig.eigenvalues().maxCoeff(), lmin = eig.eigenvalues().minCoeff();
+  if (!(lmax > 0.0)) return Vec3::Zero();  // the pair cannot move relative to the road
+  if (lmin < 1e-12 * lmax) G.diagonal().array() += 1e-12 * lmax - std::min(lmin, 0.0);
+  const Vec3 u_t = -G.llt().solve(Sd.cwiseProduct(s_free)) / N;
+  Projection p;
+  try {
+    p = inst.project_unit(u_t, G);
+  } catch (const std::exception& e) {
+    fail(e.what());
+  }
+  s[kStick] = p.inside ? 1.0 : 0.0;
+  s[kIter] = p.iterations;
+  return N * Sd.cwiseProduct(p.wrench);
+}
+
 void compute(const mjModel* m, mjData* d, int instance, int) {
   Instance* inst = instance_of(d, instance);
+  const bool set_valued = inst->config.law == Law::set_valued;
   mjtNum* state = d->plugin_state + m->plugin_stateadr[instance];
   for (std::size_t k = 0; k < inst->pairs.size(); ++k) {
     const Pair& p = inst->pairs[k];
     mjtNum* s = state + kStateSize * k;
-    const double N = s[0];
-    std::fill(s + 1, s + kStateSize, 0.0);
+    const double N = s[kN];
+    std::fill(s + kNUsed, s + kOther, 0.0);  // keeps N and c, written by `advance`
     int count = 0;
     mjtNum normal[3] = {0, 0, 0}, t1[3] = {0, 0, 0}, point[3] = {0, 0, 0};
     for (int i = 0; i < d->ncon; ++i) {
@@ -256,7 +440,8 @@ void compute(const mjModel* m, mjData* d, int instance, int) {
       mju_addTo3(point, c.pos);
       ++count;
     }
-    if (count == 0 || !(N > 0)) continue;
+    // The set-valued law keeps a history (c) of every step with contacts, even at N = 0.
+    if (count == 0 || (!(N > 0) && !set_valued)) continue;
     mju_scl3(point, point, 1.0 / count);
     // Patch centre: the tire geom's centre projected onto the contact plane through `point`.
     mjtNum centre[3], rel[3];
@@ -268,42 +453,88 @@ void compute(const mjModel* m, mjData* d, int instance, int) {
     mju_normalize3(ex);
     mju_cross(ey, normal, ex);
     const int tire_body = m->geom_bodyid[p.tire], road_body = m->geom_bodyid[p.road];
-    mjtNum vt[3], wt[3], vr[3], wr[3], dv[3], dw[3];
-    point_velocity(m, d, tire_body, centre, vt, wt);
-    point_velocity(m, d, road_body, centre, vr, wr);
-    mju_sub3(dv, vt, vr);
-    mju_sub3(dw, wt, wr);
+    mjtNum dv[3], dw[3];
+    if (set_valued) {
+      // The twist from the Jacobian (J qvel), the same J as the Delassus matrix's.
+      relative_jacobian(m, d, centre, tire_body, road_body, inst->scratch);
+      mju_mulMatVec(s + kVel, inst->scratch.jw.data(), d->qvel, 6, dofs(m));
+      mju_copy3(dv, s + kVel);
+      mju_copy3(dw, s + kVel + 3);
+      mju_copy3(s + kCentre, centre);
+      s[kContact] = 1.0;
+    } else {
+      mjtNum vt[3], wt[3], vr[3], wr[3];
+      point_velocity(m, d, tire_body, centre, vt, wt);
+      point_velocity(m, d, road_body, centre, vr, wr);
+      mju_sub3(dv, vt, vr);
+      mju_sub3(dw, wt, wr);
+    }
     const double vx = mju_dot3(dv, ex), vy = mju_dot3(dv, ey), omega = mju_dot3(dw, normal);
+    s[kTwist] = vx;
+    s[kTwist + 1] = vy;
+    s[kTwist + 2] = omega;
+    if (!(N > 0)) continue;
     // Patch radius: given, or Hertz-like R = (N / k)^(1/3) (a sphere on a plane:
     // a = (3 N R_s / 4 E*)^(1/3), Johnson, Contact Mechanics, eq. 4.22, so k = 4 E* / 3 R_s).
     const double R =
         inst->config.radius > 0 ? inst->config.radius : std::cbrt(N / inst->config.stiffness);
     Resultants<double> w;
-    try {
-      w = inst->wrench(N, R, vx, vy, omega);
-    } catch (const std::exception& e) {
-      fail(e.what());
+    if (set_valued) {
+      const Vec3 ws = set_valued_wrench(m, d, *inst, s, N, R, ex, ey, normal);
+      w = {ws[0], ws[1], ws[2]};
+    } else {
+      try {
+        w = inst->wrench(N, R, vx, vy, omega);
+      } catch (const std::exception& e) {
+        fail(e.what());
+      }
     }
     mjtNum force[3], torque[3];
     mju_scl3(force, ex, w.Fx);
     mju_addToScl3(force, ey, w.Fy);
     mju_scl3(torque, normal, w.Mz);
     mj_applyFT(m, d, force, torque, centre, tire_body, d->qfrc_passive);
+    mju_copy3(s + kForce, force);
+    mju_copy3(s + kForce + 3, torque);
     mju_scl3(force, force, -1.0);
     mju_scl3(torque, torque, -1.0);
     mj_applyFT(m, d, force, torque, centre, road_body, d->qfrc_passive);
-    s[1] = N;
-    s[2] = R;
-    s[3] = vx;
-    s[4] = vy;
-    s[5] = omega;
-    s[6] = w.Fx;
-    s[7] = w.Fy;
-    s[8] = w.Mz;
+    s[kNUsed] = N;
+    s[kRadius] = R;
+    s[kWrench] = w.Fx;
+    s[kWrench + 1] = w.Fy;
+    s[kWrench + 2] = w.Mz;
   }
 }
 
-// After MuJoCo's constraint solver: store this step's normal force of each pair for the next.
+// The set-valued law's history (header comment): after the step, the patch acceleration from
+// everything but this pair's friction and the applied inputs,
+//   c = (J qvel+ - s) / h - J M^-1 (J^T w + f_app),
+// with this step's J (kinematics are not yet updated), qLD and wrench w.
+void store_other_acceleration(const mjModel* m, mjData* d, Instance& inst, const Pair& p,
+                              mjtNum* s) {
+  s[kOtherValid] = 0.0;
+  if (s[kContact] == 0.0) return;
+  const int nv = dofs(m);
+  const int tire_body = m->geom_bodyid[p.tire], road_body = m->geom_bodyid[p.road];
+  Scratch& w = inst.scratch;
+  relative_jacobian(m, d, s + kCentre, tire_body, road_body, w);
+  applied_force(m, d, w.q.data());
+  mjtNum neg[6];
+  mj_applyFT(m, d, s + kForce, s + kForce + 3, s + kCentre, tire_body, w.q.data());
+  mju_scl(neg, s + kForce, -1.0, 6);
+  mj_applyFT(m, d, neg, neg + 3, s + kCentre, road_body, w.q.data());
+  mj_solveM(m, d, w.y.data(), w.q.data(), 1);
+  mjtNum after[6], known[6];
+  mju_mulMatVec(after, w.jw.data(), d->qvel, 6, nv);
+  mju_mulMatVec(known, w.jw.data(), w.y.data(), 6, nv);
+  const double h = m->opt.timestep;
+  for (int i = 0; i < 6; ++i) s[kOther + i] = (after[i] - s[kVel + i]) / h - known[i];
+  s[kOtherValid] = 1.0;
+}
+
+// After MuJoCo's constraint solver: store this step's normal force of each pair for the next
+// (and, set-valued, the other acceleration c).
 void advance(const mjModel* m, mjData* d, int instance) {
   Instance* inst = instance_of(d, instance);
   mjtNum* state = d->plugin_state + m->plugin_stateadr[instance];
@@ -316,7 +547,10 @@ void advance(const mjModel* m, mjData* d, int instance) {
       mj_contactForce(m, d, i, f6);
       N += f6[0];
     }
-    state[kStateSize * k] = N;
+    mjtNum* s = state + kStateSize * k;
+    s[kN] = N;
+    if (inst->config.law == Law::set_valued)
+      store_other_acceleration(m, d, *inst, inst->pairs[k], s);
   }
 }
 

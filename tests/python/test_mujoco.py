@@ -2,7 +2,8 @@
 coefficient converter. Oracles: the library's own resultants at the plugin's state (through the
 Python package), MuJoCo's mj_applyFT for the mapping to generalised forces, the closed forms of
 theory.md section 3 (the sliding disk's fixed point 0.6530, integrated by RK4 for the stopping
-time), and (2/3) f N R at pure spin.
+time), (2/3) f N R at pure spin, and for the set-valued law MuJoCo's dense mass matrix and
+Jacobian (the Delassus matrix), a loaded disk's displacement and the direction of a force.
 
 Skipped, with the reason shown, only if `mujoco` cannot be imported; a missing plugin library
 is an error.
@@ -105,6 +106,117 @@ def test_plugin_rejects_bad_configuration_with_a_clear_error():
     condim = mc.disk_mjcf(disk, "exact").replace('condim="1"', 'condim="3"', 1)
     with pytest.raises(Exception, match="condim"):
         mujoco.MjData(mujoco.MjModel.from_xml_string(condim))
+
+
+def test_plugin_rejects_bad_set_valued_configuration():
+    disk = mc.Disk()
+    law = '<config key="law" value="exact"/>'
+    bad = {
+        "surface.*needs law 'set-valued'": mc.disk_mjcf(disk, "exact").replace(
+            law, law + '<config key="surface" value="ellipsoid"/>'),
+        "surface.*'cone'.*exact or ellipsoid": mc.disk_mjcf(disk, "set-valued-ellipsoid").replace(
+            'value="ellipsoid"', 'value="cone"'),
+        "law.*'set valued'.*set-valued": mc.disk_mjcf(disk, "exact").replace(
+            'value="exact"', 'value="set valued"'),
+    }
+    for message, xml in bad.items():
+        with pytest.raises(Exception, match=message):
+            mujoco.MjData(mujoco.MjModel.from_xml_string(xml))
+
+
+# The state of a pair (plugins/mujoco/contensou_plugin.cpp, header comment).
+STICK, ITERATIONS, HISTORY = 9, 10, 33
+
+
+@pytest.mark.parametrize("variant", ["set-valued", "set-valued-ellipsoid"])
+def test_set_valued_wrench_at_a_frozen_state_is_the_projection_with_mujocos_delassus(variant):
+    """One mj_forward without history (s_free = s). Inside: w = -A^-1 s with A = h J M^-1 J^T
+    built here from MuJoCo's dense M (mj_fullM) and mj_jac at the patch centre. Outside (fast
+    pure sliding): the support point in the sliding direction, f N against the slip, Mz = 0."""
+    disk = mc.Disk(timestep=1e-3)
+    m, d = settled_disk(variant, disk)
+    N = 3.0
+    con = d.contact[0]
+    n, t1 = con.frame[:3], con.frame[3:6]
+    ey = np.cross(n, t1)
+    for qvel, inside in (([2e-6, -1e-6, 0, 0, 0, 1e-4], True), ([3.0, 0, 0, 0, 0, 0], False)):
+        d.qvel[:] = qvel
+        d.plugin_state[0], d.plugin_state[HISTORY] = N, 0.0
+        mujoco.mj_forward(m, d)
+        s = d.plugin_state
+        plane_z = np.mean([c.pos[2] for c in d.contact[: d.ncon]])
+        centre = np.array([d.xpos[1][0], d.xpos[1][1], plane_z])
+        jp, jr = np.zeros((3, m.nv)), np.zeros((3, m.nv))
+        mujoco.mj_jac(m, d, jp, jr, centre, 1)
+        J = np.vstack([t1 @ jp, ey @ jp, n @ jr])
+        M = np.zeros((m.nv, m.nv))
+        mujoco.mj_fullM(m, d, M)
+        A = disk.timestep * J @ np.linalg.solve(M, J.T)
+        twist = J @ d.qvel
+        assert s[3:6] == pytest.approx(twist, rel=1e-12, abs=1e-15)
+        assert s[STICK] == (1.0 if inside else 0.0) and s[ITERATIONS] >= 1
+        if inside:
+            assert s[6:9] == pytest.approx(-np.linalg.solve(A, twist), rel=1e-9)
+        else:
+            slide = -disk.friction * N * twist[:2] / np.hypot(*twist[:2])  # in (t1, n x t1)
+            assert s[6:9] == pytest.approx([*slide, 0.0], abs=1e-7 * N)
+
+
+def loaded_disk(variant: str, force: float, torque: float, angle: float, seconds: float,
+                dt: float = 1e-3):
+    """The disk of bench/mujoco_creep.py (R = 0.1 m, f = 0.5) settled for 0.2 s, then loaded at
+    its centre of mass by a horizontal force `force` f N at `angle` from x and a torque `torque`
+    M0 about z (M0 = (2/3) f N R), for `seconds`. Returns (m, d, x0, qpos at 0.5 s of load,
+    stick flags)."""
+    disk = mc.Disk(timestep=dt)
+    m, d = settled_disk(variant, disk)
+    for _ in range(int(round(0.2 / dt)) - 200):
+        mujoco.mj_step(m, d)
+    N = float(m.body_mass[1]) * mc.GRAVITY
+    f0, m0 = disk.friction * N, 2 / 3 * disk.friction * N * disk.radius
+    d.xfrc_applied[1, :2] = force * f0 * np.array([math.cos(angle), math.sin(angle)])
+    d.xfrc_applied[1, 5] = torque * m0
+    x0, half, stick = d.qpos.copy(), None, []
+    for i in range(int(round(seconds / dt))):
+        mujoco.mj_step(m, d)
+        stick.append(d.plugin_state[STICK])
+        if i + 1 == int(round(0.5 / dt)):
+            half = d.qpos.copy()
+    return m, d, x0, half, np.array(stick)
+
+
+@pytest.mark.parametrize("variant", ["set-valued", "set-valued-ellipsoid"])
+def test_set_valued_law_keeps_a_disk_loaded_inside_the_limit_at_rest(variant):
+    """0.3 f N and 0.3 M0 (inside the limit) for 1.5 s at dt = 1e-3: the trial is inside at every
+    step and the disk does not move from 0.5 s on, once its elastic tilt on MuJoCo's soft normal
+    contact has settled (the first 0.5 s move the centre of mass by 1.1e-7 m, mostly that tilt).
+    Measured from 0.5 s to 1.5 s: 1.5e-14 m and 2e-15 rad at dt = 1e-3 (6.5e-13 m at dt = 1e-4),
+    so the bound 1e-9 m (1e-9 rad) is round-off with a margin of 1000; the fractional law
+    (eps = 1e-4 m/s) creeps 0.74 mm in the same second."""
+    m, d, x0, half, stick = loaded_disk(variant, 0.3, 0.3, 0.0, 1.5)
+    assert stick.min() == 1.0
+    drift = np.hypot(*(d.qpos[:2] - half[:2]))
+    assert drift < 1e-9
+    assert np.hypot(*(half[:2] - x0[:2])) < 1e-6
+    yaw = lambda q: 2 * math.atan2(q[6], q[3])  # the disk stays flat: rotation about z
+    assert abs(yaw(d.qpos) - yaw(half)) < 1e-9
+    m, d, x0, half, _ = loaded_disk("fractional", 0.3, 0.3, 0.0, 1.5)
+    assert np.hypot(*(d.qpos[:2] - half[:2])) > 1e-4
+
+
+@pytest.mark.parametrize("variant", ["set-valued", "set-valued-ellipsoid"])
+def test_set_valued_law_slides_along_a_force_outside_the_limit(variant):
+    """1.2 f N at 30 degrees from x, no torque: the trial is outside at every step and the disk
+    slides along the force without spin; the friction is f N against the slip (pure sliding),
+    so the acceleration is (1.2 - 1) f g = 0.981 m/s^2 (measured 0.983: N lags one step)."""
+    angle = math.radians(30)
+    m, d, x0, _, stick = loaded_disk(variant, 1.2, 0.0, angle, 0.5)
+    assert stick.max() == 0.0
+    dx = d.qpos[:2] - x0[:2]
+    assert math.atan2(dx[1], dx[0]) == pytest.approx(angle, abs=1e-9)
+    assert math.atan2(d.qvel[1], d.qvel[0]) == pytest.approx(angle, abs=1e-9)
+    assert math.hypot(*d.qvel[:2]) / 0.5 == pytest.approx(0.2 * 0.5 * mc.GRAVITY, rel=0.01)
+    assert abs(d.qvel[5]) < 1e-9
 
 
 def test_disk_with_the_exact_law_stops_at_the_farkas_ratio():
