@@ -3,7 +3,8 @@
 numpy in, numpy out: the exact resultants and the fractional law on arrays of any shape
 (``contensou.friction``), identification of the law from measured diagrams given as a pandas
 DataFrame, arrays or a CSV path (``contensou.identify``), and the landing-gear shimmy model
-with stability maps in-process or on a ``dask.distributed`` client (``contensou.gear``).
+with stability maps in-process or on a ``dask.distributed`` client (``contensou.gear``), and
+the patch's limit surface for set-valued (stick without creep) friction (``LimitSurface``).
 The loops run in C++ (the extension ``contensou._core``) with the GIL released.
 
 Bad input raises ``ValueError`` with the C++ library's message.
@@ -12,9 +13,13 @@ Bad input raises ``ValueError`` with the C++ library's message.
 from . import _core
 from ._core import (
     ContactPatch,
+    ContactStep,
+    EllipsoidalLimitSurface,
     ExactModel,
     FractionalLaw,
+    LimitSurface,
     PressureProfile,
+    Projection,
     SlipSpeedFriction,
     cosine_series_profile,
     fractional_law_fitted,
@@ -43,16 +48,20 @@ __version__: str = _core.version  # the CMake project's version
 
 __all__ = [
     "ContactPatch",
+    "ContactStep",
+    "EllipsoidalLimitSurface",
     "ExactModel",
     "ExactResults",
     "FractionalLaw",
     "IdentificationResult",
     "LandingConfig",
     "LandingResult",
+    "LimitSurface",
     "LoopStep",
     "MapAxis",
     "Parameter",
     "PressureProfile",
+    "Projection",
     "SlipSpeedFriction",
     "StabilityMapResult",
     "__version__",

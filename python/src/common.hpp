@@ -25,6 +25,7 @@ using OutArray2 = nb::ndarray<double, nb::ndim<2>, nb::c_contig, nb::device::cpu
 using OutArray3 = nb::ndarray<double, nb::ndim<3>, nb::c_contig, nb::device::cpu>;
 
 void bind_friction(nb::module_& m);
+void bind_limit_surface(nb::module_& m);
 void bind_identification(nb::module_& m);
 void bind_gear(nb::module_& m);
 
