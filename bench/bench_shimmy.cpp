@@ -1,6 +1,7 @@
 // The shimmy demo's speed: a one-second landing of each contact model (wall time and the
 // real-time factor: simulated seconds per second), with the structured Jacobian and with
-// CVODE's difference quotients, and a 50 x 50 stability map on 2 threads
+// CVODE's difference quotients, with the default Adams-Moulton integrator and with BDF (the
+// integrator before), and a 50 x 50 stability map on 2 threads
 // against the same map on 1 thread as the in-process baseline (the ratio is the speed-up).
 #include <benchmark/benchmark.h>
 
@@ -13,18 +14,23 @@ using namespace contensou;
 
 namespace {
 
-void BM_Landing(benchmark::State& state, ContactModel contact, bool exact, bool analytic) {
+void BM_Landing(benchmark::State& state, ContactModel contact, bool exact, bool analytic,
+                Integrator method = Integrator::adams) {
   GearConfig c;
   c.tire.exact_integrals = exact;
   const GearModel m = make_gear_model(c, contact);
   SolverOptions o;
   o.record = false;
   o.analytic_jacobian = analytic;
+  o.method = method;
   LandingRun run;
   for (auto _ : state) run = simulate_landing(m, o);
   state.counters["steps"] = static_cast<double>(run.steps);
   state.counters["rhs"] = static_cast<double>(run.rhs_evaluations);
   state.counters["jacobians"] = static_cast<double>(run.jacobian_evaluations);
+  state.counters["newton"] = static_cast<double>(run.newton_iterations);
+  state.counters["lu"] = static_cast<double>(run.linear_setups);
+  state.counters["err_fails"] = static_cast<double>(run.error_test_failures);
   state.counters["realtime_factor"] = benchmark::Counter(
       c.scenario.end_time_s * static_cast<double>(state.iterations()), benchmark::Counter::kIsRate);
 }
@@ -53,10 +59,12 @@ void BM_LinearMap(benchmark::State& state) {
 }  // namespace
 
 // Each landing with the structured Jacobian (gear_jacobian) and with CVODE's difference
-// quotients ("_dq"), in the same binary.
+// quotients ("_dq"), in the same binary; "_bdf": CVODE's BDF instead of Adams-Moulton.
 BENCHMARK_CAPTURE(BM_Landing, coupled, ContactModel::coupled, false, true)
     ->Unit(benchmark::kMillisecond);
 BENCHMARK_CAPTURE(BM_Landing, coupled_dq, ContactModel::coupled, false, false)
+    ->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(BM_Landing, coupled_bdf, ContactModel::coupled, false, true, Integrator::bdf)
     ->Unit(benchmark::kMillisecond);
 BENCHMARK_CAPTURE(BM_Landing, decoupled, ContactModel::decoupled, false, true)
     ->Unit(benchmark::kMillisecond);
@@ -69,6 +77,9 @@ BENCHMARK_CAPTURE(BM_Landing, nonholonomic_dq, ContactModel::nonholonomic, false
 BENCHMARK_CAPTURE(BM_Landing, coupled_exact_integrals, ContactModel::coupled, true, true)
     ->Unit(benchmark::kMillisecond);
 BENCHMARK_CAPTURE(BM_Landing, coupled_exact_integrals_dq, ContactModel::coupled, true, false)
+    ->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(BM_Landing, coupled_exact_integrals_bdf, ContactModel::coupled, true, true,
+                  Integrator::bdf)
     ->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_LinearMap)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_Map)

@@ -10,7 +10,7 @@ namespace contensou::detail {
 
 struct CvodeHandles {
   SUNContext ctx = nullptr;
-  N_Vector y = nullptr, atol = nullptr;
+  N_Vector y = nullptr, atol = nullptr, out = nullptr;
   SUNMatrix A = nullptr;
   SUNLinearSolver LS = nullptr;
   void* mem = nullptr;
@@ -23,6 +23,7 @@ struct CvodeHandles {
     if (A) SUNMatDestroy(A);
     if (atol) N_VDestroy(atol);
     if (y) N_VDestroy(y);
+    if (out) N_VDestroy(out);
     if (ctx) SUNContext_Free(&ctx);
   }
 };

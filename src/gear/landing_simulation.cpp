@@ -1,6 +1,7 @@
 #include "contensou/gear/landing_simulation.hpp"
 
 #include "cvode_handles.hpp"
+#include "serial_kernels.hpp"
 
 #include <algorithm>
 #include <array>
@@ -120,16 +121,15 @@ void check(int flag, const char* what, double t) {
                              std::to_string(flag) + " at t = " + std::to_string(t) + " s");
 }
 
-ShimmyMetrics assess(const std::vector<LandingSample>& window, double peak_torsion,
-                     double peak_lateral, const ShimmyCriterion& criterion) {
+// The samples of the analysis window: time, torsion rate psi', torsion psi.
+struct Window {
   std::vector<double> t, rate, psi;
-  for (const LandingSample& s : window) {
-    t.push_back(s.t);
-    rate.push_back(s.x[kPsiDot]);
-    psi.push_back(s.x[kPsi]);
-  }
+};
+
+ShimmyMetrics assess(const Window& window, double peak_torsion, double peak_lateral,
+                     const ShimmyCriterion& criterion) {
   ShimmyMetrics m;
-  m.torsion = analyse_oscillation(t, rate, psi);
+  m.torsion = analyse_oscillation(window.t, window.rate, window.psi);
   m.peak_torsion_rad = peak_torsion;
   m.peak_lateral_m = peak_lateral;
   const double a = m.torsion.last_amplitude, thr = criterion.amplitude_threshold_rad;
@@ -161,6 +161,12 @@ LandingRun simulate_landing(const GearModel& model, const SolverOptions& options
   check(SUNContext_Create(nullptr, &cv.ctx), "SUNContext_Create", 0.0);
   cv.y = N_VNew_Serial(n, cv.ctx);
   cv.atol = N_VNew_Serial(n, cv.ctx);
+  cv.out = N_VNew_Serial(n, cv.ctx);
+  // CVODE's vector arithmetic and LU compiled with the project (serial_kernels.hpp); its clones
+  // of y and atol inherit the operations.
+  detail::use_compiled_vector_ops(cv.y);
+  detail::use_compiled_vector_ops(cv.atol);
+  detail::use_compiled_vector_ops(cv.out);
   const std::array<double, kStateSize> scale{1e-3, 1e-1, 1e-3, 1e-1, 1e2, 1e-3,
                                              1e-3, 1e-1, 1e2,  1e-3, 1e-3};
   from_state(problem, x, cv.y);
@@ -169,65 +175,120 @@ LandingRun simulate_landing(const GearModel& model, const SolverOptions& options
         options.relative_tolerance *
         scale[static_cast<std::size_t>(problem.active[static_cast<std::size_t>(k)])];
   }
-  cv.mem = CVodeCreate(CV_BDF, cv.ctx);
+  cv.mem = CVodeCreate(options.method == Integrator::bdf ? CV_BDF : CV_ADAMS, cv.ctx);
   double t = 0.0;
   check(CVodeInit(cv.mem, rhs, t, cv.y), "CVodeInit", t);
   check(CVodeSVtolerances(cv.mem, options.relative_tolerance, cv.atol), "CVodeSVtolerances", t);
   cv.A = SUNDenseMatrix(n, n, cv.ctx);
-  cv.LS = SUNLinSol_Dense(cv.y, cv.A, cv.ctx);
+  cv.LS = detail::compiled_dense_solver(cv.y, cv.A, cv.ctx);
+  if (!cv.LS) throw std::runtime_error("CVODE linear solver could not be created");
   check(CVodeSetLinearSolver(cv.mem, cv.LS, cv.A), "CVodeSetLinearSolver", t);
   if (options.analytic_jacobian) check(CVodeSetJacFn(cv.mem, jacobian), "CVodeSetJacFn", t);
   check(CVodeSetUserData(cv.mem, &problem), "CVodeSetUserData", t);
-  check(CVodeSetMaxNumSteps(cv.mem, options.max_steps), "CVodeSetMaxNumSteps", t);
   check(CVodeRootInit(cv.mem, kRoots, roots), "CVodeRootInit", t);
   std::array<int, kRoots> direction{1, 1, -1, 1, 1, 1};
   check(CVodeSetRootDirection(cv.mem, direction.data()), "CVodeSetRootDirection", t);
   check(CVodeSetNoInactiveRootWarn(cv.mem), "CVodeSetNoInactiveRootWarn", t);
 
-  std::vector<LandingSample> window;
+  // The analysis window keeps what assess() reads: t, psi', psi.
+  Window window;
+  const auto expected = static_cast<std::size_t>(std::clamp(
+      (run.window_end_s - run.window_start_s) / options.output_interval_s + 2.0, 0.0, 1e6));
+  window.t.reserve(expected);
+  window.rate.reserve(expected);
+  window.psi.reserve(expected);
+  if (options.record)
+    run.samples.reserve(static_cast<std::size_t>(
+        std::clamp(s.end_time_s / options.output_interval_s + 8.0, 0.0, 1e6)));
   double peak_torsion = 0.0, peak_lateral = 0.0;
-  auto record = [&](double time) {
-    LandingSample sample{time, to_state(problem, cv.y), {}, problem.mode.rolling};
+  auto record = [&](double time, N_Vector v) {
+    LandingSample sample{time, to_state(problem, v), {}, problem.mode.rolling};
     // The contact is kept for the time histories only; the analysis needs the state alone.
     if (options.record) sample.contact = contact_state(model, problem.mode, time, sample.x);
     if (time >= s.touchdown_time_s) {
       peak_torsion = std::max(peak_torsion, std::abs(sample.x[kPsi]));
       peak_lateral = std::max(peak_lateral, std::abs(sample.x[kY]));
     }
-    if (time >= run.window_start_s && time <= run.window_end_s) window.push_back(sample);
+    if (time >= run.window_start_s && time <= run.window_end_s) {
+      window.t.push_back(time);
+      window.rate.push_back(sample.x[kPsiDot]);
+      window.psi.push_back(sample.x[kPsi]);
+    }
     if (options.record) run.samples.push_back(sample);
   };
-  record(t);
+  record(t, cv.y);
 
   // The integrator's counters restart at each CVodeReInit: add them up before it.
   const auto count = [&] {
-    long steps = 0, rhs = 0, lin_rhs = 0, jac = 0;
+    long steps = 0, rhs = 0, lin_rhs = 0, jac = 0, setups = 0, iters = 0, fails = 0, conv = 0;
     CVodeGetNumSteps(cv.mem, &steps);
     CVodeGetNumRhsEvals(cv.mem, &rhs);
     CVodeGetNumLinRhsEvals(cv.mem, &lin_rhs);
     CVodeGetNumJacEvals(cv.mem, &jac);
+    CVodeGetNumLinSolvSetups(cv.mem, &setups);
+    CVodeGetNumNonlinSolvIters(cv.mem, &iters);
+    CVodeGetNumErrTestFails(cv.mem, &fails);
+    CVodeGetNumNonlinSolvConvFails(cv.mem, &conv);
     run.steps += steps;
     run.rhs_evaluations += rhs + lin_rhs;
     run.jacobian_evaluations += jac;
+    run.linear_setups += setups;
+    run.newton_iterations += iters;
+    run.error_test_failures += fails;
+    run.convergence_failures += conv;
   };
+  // CVODE takes one step per call (CV_ONE_STEP); the samples on the output grid are its
+  // interpolant there (CVodeGetDky), which is what CV_NORMAL would return, without a call and a
+  // root search split at every grid point. An event is handled when the output reaches it.
   const double dt = options.output_interval_s;
   long grid = 1;
+  double reached = 0.0;  // the integrator's time t_n
+  bool root = false;     // a root found at root_t and not handled yet
+  double root_t = 0.0;
+  long steps_since_output = 0;
   while (t < s.end_time_s) {
     const double tout = std::min(static_cast<double>(grid) * dt, s.end_time_s);
     if (tout - t < 1e-9 * dt) {  // an event fell on the grid point
-      record(t);
+      record(t, cv.y);
       ++grid;
       continue;
     }
-    const int flag = CVode(cv.mem, tout, cv.y, &t, CV_NORMAL);
-    check(flag, "CVode", t);
-    if (flag != CV_ROOT_RETURN) {
-      record(t);
+    while (!root && reached < tout) {
+      // solver.max_steps bounds the steps between two outputs, as CVodeSetMaxNumSteps does in
+      // CV_NORMAL.
+      if (++steps_since_output > options.max_steps)
+        check(CV_TOO_MUCH_WORK, "CVode (solver.max_steps between outputs)", reached);
+      double returned = reached;
+      const int flag = CVode(cv.mem, tout, cv.y, &returned, CV_ONE_STEP);
+      check(flag, "CVode", returned);
+      check(CVodeGetCurrentTime(cv.mem, &reached), "CVodeGetCurrentTime", returned);
+      if (flag == CV_ROOT_RETURN) {
+        root = true;
+        root_t = returned;
+      }
+    }
+    if (!root || tout < root_t) {
+      check(CVodeGetDky(cv.mem, tout, 0, cv.out), "CVodeGetDky", tout);
+      t = tout;
+      record(t, cv.out);
+      steps_since_output = 0;
       ++grid;
       continue;
     }
+    // The event: cv.y holds the state at the root.
+    t = root_t;
+    root = false;
     std::array<int, kRoots> found{};
     check(CVodeGetRootInfo(cv.mem, found.data()), "CVodeGetRootInfo", t);
+    // A time event (load onset, full load, brake on/off) is located by CVODE to within rounding,
+    // either side of its instant; take the instant itself, so that whether the sample there
+    // (e.g. at brake off, the analysis window's end) counts does not hang on the root finder.
+    if (!found[kSpinUp] && !found[kSliding]) {
+      if (found[kLoadOnset]) t = s.touchdown_time_s;
+      if (found[kFullLoad]) t = s.touchdown_time_s + s.load_ramp_s;
+      if (found[kBrakeOn]) t = s.brake_on_s;
+      if (found[kBrakeOff]) t = s.brake_off_s;
+    }
     x = to_state(problem, cv.y);
     GearMode& mode = problem.mode;
     if (found[kLoadOnset]) {
@@ -258,6 +319,7 @@ LandingRun simulate_landing(const GearModel& model, const SolverOptions& options
     count();
     from_state(problem, x, cv.y);
     check(CVodeReInit(cv.mem, t, cv.y), "CVodeReInit", t);
+    reached = t;
   }
   count();
   run.metrics = assess(window, peak_torsion, peak_lateral, criterion);

@@ -1,6 +1,7 @@
 #include "contensou/gear/linear_stability.hpp"
 
 #include "cvode_handles.hpp"
+#include "serial_kernels.hpp"
 
 #include <Eigen/Dense>
 #include <Eigen/Eigenvalues>
@@ -201,6 +202,8 @@ OscillationEstimate perturbation_response(const GearModel& model, const QuasiSte
   check(SUNContext_Create(nullptr, &cv.ctx), "SUNContext_Create");
   cv.y = N_VNew_Serial(kStateSize, cv.ctx);
   cv.atol = N_VNew_Serial(kStateSize, cv.ctx);
+  detail::use_compiled_vector_ops(cv.y);  // serial_kernels.hpp: the same arithmetic, compiled
+  detail::use_compiled_vector_ops(cv.atol);
   const double rtol = 1e-8;
   for (int i = 0; i < kStateSize; ++i) {
     NV_Ith_S(cv.y, i) = q.x[i] + (i == kPsiDot ? o.perturbation_rate_radps : 0.0);
@@ -210,7 +213,9 @@ OscillationEstimate perturbation_response(const GearModel& model, const QuasiSte
   check(CVodeInit(cv.mem, fixed_rhs, q.t, cv.y), "CVodeInit");
   check(CVodeSVtolerances(cv.mem, rtol, cv.atol), "CVodeSVtolerances");
   cv.A = SUNDenseMatrix(kStateSize, kStateSize, cv.ctx);
-  cv.LS = SUNLinSol_Dense(cv.y, cv.A, cv.ctx);
+  cv.LS = detail::compiled_dense_solver(cv.y, cv.A, cv.ctx);
+  if (!cv.LS)
+    throw std::runtime_error("CVODE linear solver could not be created (perturbation run)");
   check(CVodeSetLinearSolver(cv.mem, cv.LS, cv.A), "CVodeSetLinearSolver");
   check(CVodeSetUserData(cv.mem, &problem), "CVodeSetUserData");
   check(CVodeSetMaxNumSteps(cv.mem, 200000), "CVodeSetMaxNumSteps");

@@ -1,4 +1,5 @@
-// Integration of the landing-gear model with SUNDIALS CVODE (BDF, dense direct solver) and
+// Integration of the landing-gear model with SUNDIALS CVODE (Adams-Moulton or BDF with Newton
+// iterations on a dense direct solver) and
 // root-finding for the events: load onset, full load, end of spin-up (sliding -> rolling),
 // renewed sliding (rolling -> sliding), brake on, brake off (docs/shimmy.md).
 #pragma once
@@ -12,6 +13,13 @@
 
 namespace contensou {
 
+// CVODE's linear multistep family. Adams-Moulton (orders 1-12) takes fewer steps than BDF
+// (orders 1-5) on the landing's lightly damped 16-32 Hz modes at a given tolerance and is more
+// accurate there (docs/shimmy.md, "Numerics"); its Newton iterations use the same Jacobian. BDF
+// is for configurations much stiffer than the default gear (stiff struts, dampers of
+// 1e4 1/s and more), where Adams' bounded stability region would force tiny steps.
+enum class Integrator { adams, bdf };
+
 // The absolute tolerance of each state is relative_tolerance times a scale: 1 mm, 0.1 m/s,
 // 1 mrad, 0.1 rad/s, 100 rad/s, 1 mm, 1 mm, 0.1 m/s, 100 rad/s (y, y', psi, psi', Omega,
 // lambda, x, x', Omega2).
@@ -19,10 +27,11 @@ struct SolverOptions {
   double relative_tolerance = 1e-7;
   double output_interval_s = 5e-4;  // samples for the time history and the shimmy analysis
   bool record = true;               // keep the samples (the analysis runs either way)
-  long max_steps = 1000000;
+  long max_steps = 1000000;         // steps between two outputs
   // CVODE's Newton matrix from gear_jacobian (structured, analytic where the law allows), or
   // from CVODE's own difference quotients (one right-hand side per state) when false.
   bool analytic_jacobian = true;
+  Integrator method = Integrator::adams;
 };
 
 struct LandingSample {
@@ -62,6 +71,10 @@ struct LandingRun {
   long steps = 0;
   long rhs_evaluations = 0;       // by the integrator, including those of difference quotients
   long jacobian_evaluations = 0;  // Jacobians formed (analytic or by difference quotients)
+  long linear_setups = 0;         // LU factorisations of the Newton matrix I - gamma J
+  long newton_iterations = 0;
+  long error_test_failures = 0;
+  long convergence_failures = 0;  // of the Newton iteration
   double wall_s = 0.0;
 };
 
