@@ -61,6 +61,7 @@ nlohmann::json to_json(const ShimmyConfig& c) {
   j["scenario"]["braking"] = g.scenario.braking;
   for (ContactModel m : c.models) j["models"].push_back(to_string(m));
   j["solver"]["relative_tolerance"] = c.solver.relative_tolerance;
+  j["solver"]["method"] = c.solver.method == Integrator::bdf ? "bdf" : "adams";
   j["solver"]["output_interval_s"] = c.solver.output_interval_s;
   j["shimmy"]["amplitude_threshold_rad"] = c.criterion.amplitude_threshold_rad;
   j["shimmy"]["sustained_growth_rate_per_s"] = c.criterion.sustained_growth_rate_per_s;
@@ -213,6 +214,12 @@ ShimmyConfig parse_shimmy_config(const std::string& text, const std::string& pat
             if (!v.is_boolean()) r.fail_at_key(key, "expected true or false, got " + v.dump());
             (key == "scenario.braking" ? c.gear.scenario.braking : c.gear.tire.exact_integrals) =
                 v.get<bool>();
+          } else if (key == "solver.method") {
+            // CVODE's linear multistep method (docs/shimmy.md section 5): Adams-Moulton (the
+            // default, for this lightly damped gear) or BDF (for a much stiffer configuration).
+            if (!v.is_string() || (v != "adams" && v != "bdf"))
+              r.fail_at_key(key, "expected adams or bdf, got " + v.dump());
+            c.solver.method = v == "bdf" ? Integrator::bdf : Integrator::adams;
           } else if (key == "solver.relative_tolerance") {
             c.solver.relative_tolerance = r.number(v, key);
           } else if (key == "solver.output_interval_s") {

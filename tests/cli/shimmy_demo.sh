@@ -119,6 +119,8 @@ expect "bad map parameter" "unknown parameter 'scenario.speed'" \
 expect "bad map phase" "maps.phase: expected touchdown or braked_slide" \
   '{"maps": [{"x": {"parameter": "structure.offset_m"}, "y": {"parameter": "structure.offset_m"}, "phase": "cruise"}]}'
 expect "bad gear name" "gear = boeing: must be default or legacy" '{"gear": "boeing"}'
+expect "bad solver method" "solver.method: expected adams or bdf, got \"rk4\"" \
+  '{"solver": {"method": "rk4"}}'
 # Found by fuzz_shimmy_config: a number beyond double range escaped as a JSON library error
 # without a position, and a map axis without a parameter was accepted.
 expect "number overflow" "bad.json:2:30: invalid JSON: number overflow parsing '1e2111'" \

@@ -116,6 +116,22 @@ def test_landing_equals_the_apps_histories_and_metrics(app_run, model):
                                rtol=1e-12)
 
 
+def test_solver_method_bdf_gives_the_same_landing_as_adams():
+    """solver.method selects CVODE's method (docs/shimmy.md section 5): BDF and the default
+    Adams-Moulton agree to the tolerance's level (growth rates ~1e-4 apart at rtol 1e-7) and take
+    different numbers of steps; anything else is a ValueError naming the key."""
+    cfg = c.LandingConfig.default()
+    assert cfg["solver.method"] == "adams"
+    adams = c.simulate_landing(cfg, "coupled", record=False).metrics
+    cfg["solver.method"] = "bdf"
+    bdf = c.simulate_landing(cfg, "coupled", record=False).metrics
+    assert bdf["growth_rate_per_s"] == pytest.approx(adams["growth_rate_per_s"], abs=2e-3)
+    assert bdf["peak_torsion_rad"] == pytest.approx(adams["peak_torsion_rad"], rel=1e-4)
+    assert bdf["steps"] != adams["steps"]
+    with pytest.raises(ValueError, match=r"solver\.method: expected adams or bdf"):
+        cfg["solver.method"] = "rk4"
+
+
 @pytest.fixture(scope="module")
 def serial_map(app_run):
     return c.stability_map(app_run[0], AXES, progress=False)
