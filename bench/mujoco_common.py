@@ -154,10 +154,11 @@ class Disk:
 
 
 def disk_mjcf(disk: Disk, variant: str, regularization: float = 1e-4, profile: str = "uniform",
-              stiffness: float | None = None) -> str:
+              stiffness: float | None = None, kappa: float | None = None) -> str:
     """variant: elliptic | pyramidal (MuJoCo's own, condim 4) | exact | fractional | set-valued
     (exact limit surface) | set-valued-ellipsoid (plugin, with the patch radius R = disk.radius,
-    or from the normal force if a stiffness is given)."""
+    or from the normal force if a stiffness is given; the regularization only for fractional;
+    kappa, if given, is the plugin's lateral/longitudinal friction ratio along the disk's axes)."""
     if variant in PLUGIN_VARIANTS:
         size = (f'<config key="stiffness" value="{stiffness}"/>' if stiffness
                 else f'<config key="radius" value="{disk.radius}"/>')
@@ -169,8 +170,10 @@ def disk_mjcf(disk: Disk, variant: str, regularization: float = 1e-4, profile: s
             f'<config key="friction" value="{disk.friction}"/>'
             f'{size}<config key="profile" value="{profile}"/>'
             f'{law}'
-            f'<config key="regularization" value="{regularization}"/>'
-            "</instance></plugin></extension>"
+            + (f'<config key="regularization" value="{regularization}"/>'
+               if variant == "fractional" else "")
+            + (f'<config key="kappa" value="{kappa}"/>' if kappa is not None else "")
+            + "</instance></plugin></extension>"
         )
         contact, cone = 'condim="1"', ""
     elif variant in ("elliptic", "pyramidal"):

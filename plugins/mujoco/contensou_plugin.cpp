@@ -6,11 +6,15 @@
 //     <config key="pairs" value="disk floor"/>      tire geom, road geom [; tire road ...]
 //     <config key="profile" value="uniform"/>       uniform | hertz | seed-tire
 //     <config key="friction" value="0.5"/>          f
+//     <config key="kappa" value="1"/>               lateral/longitudinal friction ratio
+//                                                   (theory.md section 2; the tire geom's
+//                                                   x axis, projected on the contact plane,
+//                                                   is the longitudinal direction)
 //     <config key="radius" value="0.05"/>           patch radius R [m], or instead:
 //     <config key="stiffness" value="1e7"/>         k [N/m^3]: R = (N / k)^(1/3) (Hertz-like)
 //     <config key="law" value="fractional"/>        fractional (default) | exact | set-valued
 //     <config key="surface" value="exact"/>         set-valued only: exact (default) | ellipsoid
-//     <config key="regularization" value="1e-4"/>   eps [m/s] of the fractional law
+//     <config key="regularization" value="1e-4"/>   fractional only: eps [m/s] of the law
 //     <config key="tolerance" value="1e-8"/>        of the exact integrals (relative to f N)
 //   </instance></plugin></extension>
 // The named geoms must have condim="1": MuJoCo keeps the normal force (its constraint solver)
@@ -19,7 +23,8 @@
 // Per step and pair: the contacts of the pair (d->contact) give the normal n (from road into
 // tire, theory.md section 1) and a point; the patch centre is the tire geom's centre projected
 // onto the contact plane. The sliding velocity (tire relative to road at that point) and the
-// spin (relative angular velocity about n) in MuJoCo's contact frame enter the law; the wrench
+// spin (relative angular velocity about n) in the patch frame (x along the tire geom's x axis
+// projected onto the plane, z = n) enter the law; the wrench
 // on the tire (and its opposite on the road) goes to qfrc_passive by mj_applyFT.
 //
 // The normal force: passive forces are computed before MuJoCo's constraint solver, so the
@@ -93,9 +98,9 @@ constexpr int kN = 0, kNUsed = 1, kRadius = 2, kTwist = 3, kWrench = 6, kStick =
               kContact = 11, kCentre = 12, kVel = 15, kForce = 21, kOther = 27, kOtherValid = 33;
 constexpr int kStateSize = 34;
 constexpr const char* kName = "contensou.friction";
-constexpr std::array<const char*, 9> kAttributes = {"pairs",   "profile",        "friction",
-                                                    "radius",  "stiffness",      "law",
-                                                    "surface", "regularization", "tolerance"};
+constexpr std::array<const char*, 10> kAttributes = {
+    "pairs",     "profile", "friction", "kappa",          "radius",
+    "stiffness", "law",     "surface",  "regularization", "tolerance"};
 
 using Vec3 = Eigen::Vector3d;
 using Mat3 = Eigen::Matrix3d;
@@ -110,6 +115,7 @@ struct Config {
   std::vector<std::pair<std::string, std::string>> pair_names;
   std::string profile = "uniform";
   double friction = 0.0;
+  double kappa = 1.0;
   double radius = 0.0;     // 0: from the stiffness
   double stiffness = 0.0;  // N/m^3
   Law law = Law::fractional;
@@ -178,7 +184,10 @@ Config read_config(const mjModel* m, int instance) {
   if (!surface.empty() && surface != "exact" && surface != "ellipsoid")
     fail("config 'surface' = '" + surface + "': use exact or ellipsoid");
   c.ellipsoid = surface == "ellipsoid";
+  if (!attribute(m, instance, "regularization").empty() && c.law != Law::fractional)
+    fail("config 'regularization' applies to law 'fractional' only (law is '" + law + "')");
   c.regularization = number(m, instance, "regularization", 1e-4, true);
+  c.kappa = number(m, instance, "kappa", 1.0, true);
   c.tolerance = number(m, instance, "tolerance", 1e-8, true);
   return c;
 }
@@ -244,6 +253,7 @@ ContactPatch unit_patch(const Config& c) {
   ContactPatch p;
   p.radius_m = 1.0;
   p.friction = c.friction;
+  p.kappa = c.kappa;
   p.profile = c.profile == "hertz"       ? hertz_profile()
               : c.profile == "seed-tire" ? seed_tire_patch().profile
                                          : uniform_profile();
@@ -447,9 +457,18 @@ void compute(const mjModel* m, mjData* d, int instance, int) {
     mjtNum centre[3], rel[3];
     mju_sub3(rel, d->geom_xpos + 3 * p.tire, point);
     mju_addScl3(centre, d->geom_xpos + 3 * p.tire, normal, -mju_dot3(rel, normal));
-    // Frame: x = first tangent of MuJoCo's contact frame, z = normal (road into tire), y = z x x.
+    // Frame: z = normal (road into tire), x = the tire geom's x axis projected onto the contact
+    // plane (the longitudinal direction of kappa, theory.md section 2; its y axis if x is
+    // within 0.1 degree of the normal, MuJoCo's first contact tangent if both are), y = z x x.
     mjtNum ex[3], ey[3];
-    mju_addScl3(ex, t1, normal, -mju_dot3(t1, normal));
+    const mjtNum* xmat = d->geom_xmat + 9 * p.tire;  // row-major: column j is the geom's axis j
+    bool found = false;
+    for (int j = 0; j < 2 && !found; ++j) {
+      const mjtNum axis[3] = {xmat[j], xmat[3 + j], xmat[6 + j]};
+      mju_addScl3(ex, axis, normal, -mju_dot3(axis, normal));
+      found = mju_norm3(ex) > 2e-3;
+    }
+    if (!found) mju_addScl3(ex, t1, normal, -mju_dot3(t1, normal));
     mju_normalize3(ex);
     mju_cross(ey, normal, ex);
     const int tire_body = m->geom_bodyid[p.tire], road_body = m->geom_bodyid[p.road];

@@ -38,6 +38,14 @@ def plugin():
     mc.load_plugin(mujoco)
 
 
+def patch_x_axis(m, d, n, geom: str = "disk"):
+    """The patch frame's x: the tire geom's x axis projected onto the contact plane."""
+    g = mujoco.mj_name2id(m, mujoco.mjtObj.mjOBJ_GEOM, geom)
+    x = d.geom_xmat[g].reshape(3, 3)[:, 0]
+    x = x - (x @ n) * n
+    return x / np.linalg.norm(x)
+
+
 def settled_disk(variant: str, disk: mc.Disk, regularization: float = 1e-4, **patch):
     m = mujoco.MjModel.from_xml_string(mc.disk_mjcf(disk, variant, regularization, **patch))
     d = mujoco.MjData(m)
@@ -65,7 +73,7 @@ def test_plugin_wrench_equals_library_at_a_frozen_state(variant, profile, stiffn
     # plane (through the mean of the contact points; the floor's normal is z); the disk is flat,
     # so the body-frame spin is the world spin.
     con = d.contact[0]
-    n, t1 = con.frame[:3], con.frame[3:6]
+    n, t1 = con.frame[:3], patch_x_axis(m, d, con.frame[:3])
     assert n @ [0, 0, 1] == pytest.approx(1.0)
     ey = np.cross(n, t1)
     plane_z = np.mean([c.pos[2] for c in d.contact[: d.ncon]])
@@ -122,6 +130,41 @@ def test_plugin_rejects_bad_set_valued_configuration():
     for message, xml in bad.items():
         with pytest.raises(Exception, match=message):
             mujoco.MjData(mujoco.MjModel.from_xml_string(xml))
+    # A key of another law is an error, not silently ignored; kappa must be positive.
+    law = '<config key="law" value="set-valued"/>'
+    with pytest.raises(Exception, match="regularization.*'fractional' only.*set-valued"):
+        mujoco.MjData(mujoco.MjModel.from_xml_string(mc.disk_mjcf(disk, "set-valued").replace(
+            law, law + '<config key="regularization" value="1e-3"/>')))
+    with pytest.raises(Exception, match="kappa.*'-0.5'.*positive"):
+        mujoco.MjData(mujoco.MjModel.from_xml_string(mc.disk_mjcf(disk, "exact", kappa=-0.5)))
+
+
+@pytest.mark.parametrize("variant", ["fractional", "exact", "set-valued", "set-valued-ellipsoid"])
+def test_kappa_scales_the_lateral_friction_along_the_tire_axes(variant):
+    """kappa = 0.6 and the disk turned by 30 degrees about z: fast pure sliding along the disk's
+    x axis gives f N against the slip, along its y axis kappa f N (theory.md section 2: the limit
+    of pure sliding is F = -f N (cos phi, kappa sin phi) in the tire's axes), for every law."""
+    disk = mc.Disk(timestep=1e-3)
+    m, d = settled_disk(variant, disk, kappa=0.6)
+    yaw = math.radians(30)
+    d.qpos[3:7] = [math.cos(yaw / 2), 0, 0, math.sin(yaw / 2)]
+    N = 3.0
+    ex = np.array([math.cos(yaw), math.sin(yaw), 0.0])
+    ey = np.array([-math.sin(yaw), math.cos(yaw), 0.0])
+    for axis, limit in ((ex, 1.0), (ey, 0.6)):
+        d.qvel[:] = 0.0
+        d.qvel[:3] = 5.0 * axis  # 5 m/s: far outside any stick, and eps << |v|
+        d.plugin_state[0] = N
+        if variant.startswith("set-valued"):
+            d.plugin_state[HISTORY] = 0.0  # no history: s_free = s
+        mujoco.mj_forward(m, d)
+        mujoco.mj_forward(m, d)  # the patch frame follows the turned geom
+        s = d.plugin_state
+        fx, fy = s[6], s[7]  # in the patch frame (the disk's axes)
+        world = fx * ex + fy * ey
+        assert world @ axis == pytest.approx(-limit * disk.friction * N, rel=1e-6)
+        assert abs(np.cross(world, axis)[2]) < 1e-6 * N
+        assert abs(s[8]) < 1e-6 * N * disk.radius
 
 
 # The state of a pair (plugins/mujoco/contensou_plugin.cpp, header comment).
@@ -137,7 +180,7 @@ def test_set_valued_wrench_at_a_frozen_state_is_the_projection_with_mujocos_dela
     m, d = settled_disk(variant, disk)
     N = 3.0
     con = d.contact[0]
-    n, t1 = con.frame[:3], con.frame[3:6]
+    n, t1 = con.frame[:3], patch_x_axis(m, d, con.frame[:3])
     ey = np.cross(n, t1)
     for qvel, inside in (([2e-6, -1e-6, 0, 0, 0, 1e-4], True), ([3.0, 0, 0, 0, 0, 0], False)):
         d.qvel[:] = qvel
