@@ -7,6 +7,7 @@
 #include <numbers>
 #include <string>
 
+#include "closed_forms.hpp"
 #include "coefficients.hpp"
 #include "contensou/friction/error.hpp"
 
@@ -15,18 +16,7 @@ using namespace contensou::engines;
 
 namespace {
 
-// theory.md section 3: F_par / (f N) and |Mz| / (f N R) of uniform pressure at eps = v/(omega R).
-std::pair<double, double> uniform_closed_form(double e) {
-  const double pi = std::numbers::pi;
-  if (e < 1.0) {
-    const double K = std::comp_ellint_1(e), E = std::comp_ellint_2(e);
-    return {4 / (3 * pi) * ((1 + e * e) * E - (1 - e * e) * K) / e,
-            4 / (9 * pi) * ((4 - 2 * e * e) * E - (1 - e * e) * K)};
-  }
-  const double k = 1.0 / e, K = std::comp_ellint_1(k), E = std::comp_ellint_2(k);
-  return {4 / (3 * pi) * ((1 + e * e) * E - (e * e - 1) * K),
-          4 / (9 * pi) * (2 * e * (2 - e * e) * E + (2 * e * e - 3) * (e * e - 1) * K / e)};
-}
+using test_support::uniform_closed_form;
 
 const EngineCoefficient& row(const std::vector<EngineCoefficient>& rows, const std::string& engine,
                              int which = 0) {

@@ -13,6 +13,7 @@
 
 #include <Eigen/LU>
 
+#include "closed_forms.hpp"
 #include "contensou/friction/limit_surface.hpp"
 
 using namespace contensou;
@@ -28,22 +29,6 @@ ContactPatch unit_disk() {
   p.friction = 1.0;
   p.profile = uniform_profile();
   return p;
-}
-
-// The fixed point of v/(omega R) from the closed forms (as tests/gear/test_sliding_disk.cpp).
-double closed_form_fixed_point() {
-  auto g = [](double e) {
-    const double K = std::comp_ellint_1(e), E = std::comp_ellint_2(e);
-    const double fpar = 4 / (3 * std::numbers::pi) * ((1 + e * e) * E - (1 - e * e) * K) / e;
-    const double mz = 4 / (9 * std::numbers::pi) * ((4 - 2 * e * e) * E - (1 - e * e) * K);
-    return fpar - 2 * e * mz;
-  };
-  double lo = 0.3, hi = 0.95;
-  for (int i = 0; i < 100; ++i) {
-    const double mid = 0.5 * (lo + hi);
-    (g(lo) * g(mid) <= 0 ? hi : lo) = mid;
-  }
-  return 0.5 * (lo + hi);
 }
 
 struct Stop {
@@ -202,7 +187,7 @@ TEST(ContactStep, ALoadJustOutsideStartsTheMaximumDissipationMotion) {
 
 TEST(ContactStep, SlidingSpinningDiskStopsTogetherAtTheFarkasRatioAtTwoStepSizes) {
   const LimitSurface s = make_limit_surface(unit_disk());
-  const double ref = closed_form_fixed_point();
+  const double ref = test_support::sliding_disk_fixed_point();
   for (double h : {4e-3, 2e-3}) {
     const Stop st = slide_to_rest(s, h);
     ASSERT_GT(st.steps, 0);
@@ -226,7 +211,7 @@ TEST(ContactStep, SlidingSpinningDiskConvergesAtFirstOrderInTheStep) {
   const double threshold = 0.1;  // 5 % of v0 + omega0 R = 2
   const double ref = continuous_ratio_at(s, threshold);
   ASSERT_TRUE(std::isfinite(ref));
-  EXPECT_GT(ref, closed_form_fixed_point() + 0.01);  // not yet at the limit at 5 %
+  EXPECT_GT(ref, test_support::sliding_disk_fixed_point() + 0.01);  // not yet at the limit at 5 %
   std::vector<double> err;
   for (double h : {8e-3, 4e-3, 2e-3}) {
     err.push_back(stepped_ratio_at(s, h, threshold) - ref);

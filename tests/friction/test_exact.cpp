@@ -5,6 +5,7 @@
 #include <numbers>
 #include <random>
 
+#include "closed_forms.hpp"
 #include "contensou/friction/exact_resultants.hpp"
 #include "patches.hpp"
 
@@ -13,23 +14,11 @@ constexpr double kPi = std::numbers::pi;
 
 namespace {
 
+using test_support::uniform_closed_form;
 using test_support::uniform_patch;
 
 ContactPatch seed_patch() {
   return seed_tire_patch();
-}
-
-// Contensou's closed forms for uniform pressure (theory.md section 3): F_par/(fN), |Mz|/(fNR).
-std::pair<double, double> uniform_closed_form(double eps) {
-  if (eps <= 1.0) {
-    const double K = std::comp_ellint_1(eps), E = std::comp_ellint_2(eps);
-    return {4 / (3 * kPi) * ((1 + eps * eps) * E - (1 - eps * eps) * K) / eps,
-            4 / (9 * kPi) * ((4 - 2 * eps * eps) * E - (1 - eps * eps) * K)};
-  }
-  const double k = 1 / eps, K = std::comp_ellint_1(k), E = std::comp_ellint_2(k);
-  return {4 / (3 * kPi) * ((1 + eps * eps) * E - (eps * eps - 1) * K),
-          4 / (9 * kPi) *
-              (2 * eps * (2 - eps * eps) * E + (2 * eps * eps - 3) * (eps * eps - 1) * K / eps)};
 }
 
 // Brute-force oracle: midpoint rule on an (r, theta) grid about O, straight from the

@@ -11,6 +11,7 @@
 #include <functional>
 #include <numbers>
 
+#include "closed_forms.hpp"
 #include "contensou/friction/exact_resultants.hpp"
 #include "contensou/friction/fractional_law.hpp"
 
@@ -88,27 +89,10 @@ Motion slide(Law law, double v0, double w0) {
   return m;
 }
 
-// Root of F_par(eps) = 2 eps |Mz|(eps) (equal relative decay of v and omega R) from the closed
-// forms of theory.md section 3, by bisection: the fixed point of the ratio.
-double closed_form_fixed_point() {
-  auto g = [](double e) {
-    const double K = std::comp_ellint_1(e), E = std::comp_ellint_2(e);
-    const double fpar = 4 / (3 * std::numbers::pi) * ((1 + e * e) * E - (1 - e * e) * K) / e;
-    const double mz = 4 / (9 * std::numbers::pi) * ((4 - 2 * e * e) * E - (1 - e * e) * K);
-    return fpar - 2 * e * mz;
-  };
-  double lo = 0.3, hi = 0.95;
-  for (int i = 0; i < 100; ++i) {
-    const double mid = 0.5 * (lo + hi);
-    (g(lo) * g(mid) <= 0 ? hi : lo) = mid;
-  }
-  return 0.5 * (lo + hi);
-}
-
 }  // namespace
 
 TEST(SlidingDisk, ClosedFormsGiveFarkasRatio) {
-  EXPECT_NEAR(closed_form_fixed_point(), 0.6530, 5e-4);
+  EXPECT_NEAR(test_support::sliding_disk_fixed_point(), 0.6530, 5e-4);
 }
 
 TEST(SlidingDisk, ExactLawStopsBothMotionsTogetherAtFarkasRatio) {
