@@ -109,6 +109,11 @@ struct ScaledEllipsoid {
   Mat3 hess_newton(const Vec3& t, const Vec3&) const { return hess(t); }
 };
 
+// The scaled view of either surface.
+template <class Surface>
+using ScaledOf =
+    std::conditional_t<std::is_same_v<Surface, LimitSurface>, ScaledExact, ScaledEllipsoid>;
+
 Mat3 scaling(double scale, double radius) {
   return Vec3(scale, scale, scale * radius).asDiagonal();
 }
@@ -317,9 +322,7 @@ Projection project_any(const Surface& surface, const Vec3& trial, const Mat3& me
   if (opt.max_iterations < 1)
     throw InvalidArgument("max_iterations", std::to_string(opt.max_iterations),
                           "must be at least 1");
-  using Scaled =
-      std::conditional_t<std::is_same_v<Surface, LimitSurface>, ScaledExact, ScaledEllipsoid>;
-  const Scaled sc{surface};
+  const ScaledOf<Surface> sc{surface};
   const Mat3 S = scaling(sc.scale(), sc.radius());
   const Vec3 Wt = S.inverse() * trial;
   Mat3 Ghat = S * metric * S;
@@ -339,9 +342,7 @@ template <class Surface>
 Gauge gauge_any(const Surface& surface, const Vec3& wrench) {
   check_surface(surface);
   check_vector("wrench", wrench);
-  using Scaled =
-      std::conditional_t<std::is_same_v<Surface, LimitSurface>, ScaledExact, ScaledEllipsoid>;
-  const Scaled sc{surface};
+  const ScaledOf<Surface> sc{surface};
   const Mat3 S = scaling(sc.scale(), sc.radius());
   Gauge g = scaled_gauge(sc, S.inverse() * wrench);
   // Scaled normal t = (vx, vy, omega R) -> twist direction (vx, vy, omega).
@@ -371,6 +372,24 @@ ContactStep step_any(const Surface& surface, const PlanarBody& body, const Vec3&
   return out;
 }
 
+// D, gradient and Hessian in the twist s from the scaled surface: t = S s (t3 = R omega),
+// D = F Dhat(t), dD/ds = F S grad Dhat, d2D/ds2 = F S H S (F = f N, or the ellipsoid's F).
+template <class Surface>
+Dissipation derivatives_any(const Surface& surface, const Vec3& twist) {
+  check_surface(surface);
+  check_vector("twist", twist);
+  const ScaledOf<Surface> sc{surface};
+  const Mat3 S = scaling(1.0, sc.radius());
+  const Vec3 t = S * twist;
+  Dissipation out;
+  Vec3 g;
+  sc.eval(t, out.value, g);
+  out.value *= sc.scale();
+  out.gradient = sc.scale() * (S * g);
+  out.hessian = sc.scale() * (S * sc.hess(t) * S);
+  return out;
+}
+
 }  // namespace
 
 LimitSurface make_limit_surface(const ContactPatch& patch, double tolerance) {
@@ -390,19 +409,7 @@ LimitSurface make_limit_surface(const ContactPatch& patch, double tolerance) {
 }
 
 Dissipation dissipation_with_derivatives(const LimitSurface& surface, const Vec3& twist) {
-  check_surface(surface);
-  check_vector("twist", twist);
-  const ScaledExact sc{surface};
-  const Mat3 S = scaling(1.0, surface.radius);  // t = S s up to the factor: t3 = R omega
-  const Vec3 t(twist[0], twist[1], twist[2] * surface.radius);
-  Dissipation out;
-  Vec3 g;
-  sc.eval(t, out.value, g);
-  // D = f N Dhat(t), dD/ds = f N S^T grad Dhat, d2D/ds2 = f N S^T H S.
-  out.value *= surface.force_scale;
-  out.gradient = surface.force_scale * (S * g);
-  out.hessian = surface.force_scale * (S * sc.hess(t) * S);
-  return out;
+  return derivatives_any(surface, twist);
 }
 
 double dissipation(const LimitSurface& surface, const Vec3& twist) {
@@ -466,18 +473,7 @@ double support(const EllipsoidalLimitSurface& e, const Vec3& d) {
 }
 
 Dissipation dissipation_with_derivatives(const EllipsoidalLimitSurface& e, const Vec3& twist) {
-  check_surface(e);
-  check_vector("twist", twist);
-  const ScaledEllipsoid sc{e};
-  const Mat3 S = scaling(1.0, e.radius);
-  const Vec3 t(twist[0], twist[1], twist[2] * e.radius);
-  Dissipation out;
-  Vec3 g;
-  sc.eval(t, out.value, g);
-  out.value *= e.force_limit;
-  out.gradient = e.force_limit * (S * g);
-  out.hessian = e.force_limit * (S * sc.hess(t) * S);
-  return out;
+  return derivatives_any(e, twist);
 }
 
 Vec3 surface_point(const EllipsoidalLimitSurface& e, const Vec3& normal) {
