@@ -446,10 +446,45 @@ TEST(ExactResultants, TabulatedProfileIsExactForItsInterpolant) {
     EXPECT_NEAR(e.resultants.Mz, o.Mz, 1e-9 * fN * R) << ratio;
   }
   expect_matches_brute_force(p, m, {0.0, 0.3, 0.98});
-  // With friction falling with slip speed inside the integrals (the chords broken at knot
-  // crossings); 1e-7: at 1e-10 a 101-point table with f(w) runs out of intervals.
+  // With friction falling with slip speed inside the integrals (at 1e-7 the chords unbroken);
+  // 1e-7: at 1e-10 a 101-point table with f(w) runs out of intervals.
   p.slip_speed_friction = SlipSpeedFriction<double>{0.8, 0.45, 1.0, 1.0};
   expect_matches_brute_force(p, make_exact_model(p), {0.3, 1.02, 4.0}, 1e-7);
+}
+
+// A table with f(w) inside: its chords are broken at knot crossings from 1e-5 up (a single
+// G15K31 panel first where g < 1e-3 on the whole chord), unbroken below; on random kinematics
+// the estimate bounds the achieved error against the same integrals at 1e-13 on every branch.
+TEST(ExactResultants, TableWithSpeedLawErrorEstimateBoundsTheErrorOnEveryPartition) {
+  std::vector<double> rho, pv;
+  for (int i = 0; i <= 100; ++i) {
+    rho.push_back(i / 100.0);
+    const double r = rho.back();
+    pv.push_back(r < 0.9 ? 1.0 + 0.4 * r * r - 0.9 * std::pow(r, 4) : 0.7439 - 4.0 * (r - 0.9));
+  }
+  ContactPatch p = seed_patch();
+  p.profile = tabulated_profile(rho, pv);
+  p.profile.kx = 0.14;
+  p.slip_speed_friction = SlipSpeedFriction<double>{0.8, 0.45, 1.0, 1.0};
+  const ExactModel<double> m = make_exact_model(p);
+  const double R = p.radius_m, fN = m.friction_scale * normal_load(p);
+  std::mt19937_64 rng(7);
+  std::uniform_real_distribution<double> U(0.0, 1.0);
+  for (int i = 0; i < 16; ++i) {
+    double ratio = std::pow(10.0, -2.0 + 4.0 * U(rng));
+    if (i % 4 == 0) ratio = 1.0 + (U(rng) - 0.5) * 1e-2;
+    const double dir = 2.0 * kPi * U(rng), w = (U(rng) < 0.5 ? -20.0 : 20.0);
+    const double v = ratio * std::abs(w) * R;
+    const Kinematics<double> k{v * std::cos(dir), v * std::sin(dir), w};
+    const auto ref = exact_resultants(m, k, {1e-13}).resultants;
+    for (double tol : {1e-3, 1e-4, 1e-6}) {
+      const auto r = exact_resultants(m, k, {tol});
+      EXPECT_LE(r.error.Fx, tol * fN) << ratio << " " << tol;
+      ASSERT_LE(std::abs(r.resultants.Fx - ref.Fx), r.error.Fx) << ratio << " " << tol;
+      ASSERT_LE(std::abs(r.resultants.Fy - ref.Fy), r.error.Fy) << ratio << " " << tol;
+      ASSERT_LE(std::abs(r.resultants.Mz - ref.Mz), r.error.Mz) << ratio << " " << tol;
+    }
+  }
 }
 
 // A table with a negative part, clipped: the pieces are split at their zero crossings and the

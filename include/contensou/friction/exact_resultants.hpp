@@ -529,17 +529,21 @@ void profile_batch(const ExactModel<T>& m, const T* t, int n, std::size_t terms,
   for (int i = 0; i < n; ++i) out[i] = m.chebyshev[0] + z[i] * b1[i] - b2[i];
 }
 
+// Requested tolerances from which a table's chords are broken at knot crossings (f(w) inside).
+inline constexpr double kBreakChordsTolerance = 1e-5;
+
 // The falling part of a slip-speed law on one chord: integral sigma g(w) (tau - tau_c)
 // {1, x, y} dtau / p*, g(w) = exp(-(w / w_s)^delta), w = |omega| |tau - tau_c| (f = f_k + (f_s -
 // f_k) g; the constant part f_k is in closed form). Adaptive G15K31 on the two sides of the
 // centre of sliding (a kink of |tau - tau_c|), in tau, or for a Hertz edge in the chord angle
 // theta, tau = h sin(theta) (then R^2 - |r|^2 = h^2 cos^2(theta) and the edge is smooth); the
-// profile series is summed to `terms` terms.
+// profile series is summed to `terms` terms. break_at_knots: a table's chords are broken at
+// knot crossings (for loose tolerances only, see below).
 template <class T>
 std::array<T, 3> chord_moments_falling(const ExactModel<T>& m, const Chord<T>& c,
                                        const T& abs_omega, std::size_t terms,
                                        std::array<double, 3>& inner_error,
-                                       const std::array<double, 3>& tol) {
+                                       const std::array<double, 3>& tol, bool break_at_knots) {
   const double R = m.radius;
   inner_error = {0.0, 0.0, 0.0};
   const T A = 1.0 + (m.kx * c.fx + m.ky * c.fy) / R;  // shift factor at the foot
@@ -582,13 +586,26 @@ std::array<T, 3> chord_moments_falling(const ExactModel<T>& m, const Chord<T>& c
     lo = -hi;
     mid = std::clamp(value_of(c.tau_c), lo, hi);
   }
-  if (m.piece.empty()) {
-    const TaggedInterval parts[2] = {{lo, mid, 0}, {mid, hi, 1}};
-    const int first = mid > lo ? 0 : 1;
-    const int count = (mid < hi ? 2 : 1) - first;
-    const auto r = integrate_adaptive_batch<T, 3, 48, kGK31>(f, parts + first, count, tol);
+  const TaggedInterval halves[2] = {{lo, mid, 0}, {mid, hi, 1}};
+  const int first = mid > lo ? 0 : 1;
+  const int sides = (mid < hi ? 2 : 1) - first;
+  if (m.piece.empty() || !break_at_knots) {
+    const auto r = integrate_adaptive_batch<T, 3, 48, kGK31>(f, halves + first, sides, tol);
     inner_error = r.error;
     return r.value;
+  }
+  // Centre of sliding off the chord and g below 1e-3 on all of it (w >= |omega| (|tau_c| - h)):
+  // the falling part is small, one G15K31 panel (or its halves) usually suffices; else break.
+  if (sides == 1) {
+    const double w_min =
+        value_of(abs_omega) * std::max(0.0, std::abs(value_of(c.tau_c)) - value_of(c.h));
+    if (value_of(slip_speed_decay(*m.slip_speed, T(w_min))) < 1e-3) {
+      const auto r = integrate_adaptive_batch<T, 3, 2, kGK31>(f, halves + first, 1, tol);
+      if (r.converged) {
+        inner_error = r.error;
+        return r.value;
+      }
+    }
   }
   // A table: the chord crosses knot t_k at tau = +-R (t_k - t_foot)^(1/2), where the profile
   // is only C1. Break there (at most kChordBreaks = 8 per half chord, every m-th knot: 4 let the
@@ -796,6 +813,11 @@ ExactResult<T> exact_resultants(const ExactModel<T>& m, const Kinematics<T>& k,
   // pi R^2 (times R for Mz).
   std::size_t profile_terms = m.chebyshev.size();
   std::array<double, 3> tol_fall = tol_inner;
+  // A table's chords broken at knot crossings only for tol >= 1e-5: below, the pieces between
+  // every m-th knot still hold kinks, G7K15 runs out of its 32 intervals and the unconverged inner
+  // estimates can keep the outer rule bisecting to capacity; the unbroken panels converge down
+  // to ~3e-9 (101-point table), and below that still report a 100x smaller estimate.
+  const bool break_at_knots = tol >= detail::kBreakChordsTolerance;
   if (m.slip_speed && fall > 0.0) {
     for (double& t : tol_fall) t /= fall;
     if (m.piece.empty()) {
@@ -826,8 +848,8 @@ ExactResult<T> exact_resultants(const ExactModel<T>& m, const Kinematics<T>& k,
       for (int i = 0; i < n; ++i) {
         for (T& v : I[i]) v *= f_const;
         if (fall == 0.0) continue;
-        const auto g =
-            detail::chord_moments_falling(m, ch[i], abs_omega, profile_terms, ie[i], tol_fall);
+        const auto g = detail::chord_moments_falling(m, ch[i], abs_omega, profile_terms, ie[i],
+                                                     tol_fall, break_at_knots);
         for (int c = 0; c < 3; ++c) {
           I[i][c] += f_fall * g[c];
           ie[i][c] *= fall;
