@@ -4,13 +4,14 @@
 // classes; vectors are numpy arrays of 3 (twist (vx, vy, omega), wrench (Fx, Fy, Mz)).
 #include <nanobind/eigen/dense.h>
 #include <nanobind/nanobind.h>
-#include <nanobind/stl/array.h>
 #include <nanobind/stl/string.h>
+#include <nanobind/stl/vector.h>
 
-#include <array>
 #include <string>
+#include <vector>
 
 #include "common.hpp"
+#include "contensou/friction/error.hpp"
 #include "contensou/friction/limit_surface.hpp"
 
 namespace contensou::python {
@@ -18,19 +19,30 @@ namespace contensou::python {
 using namespace nb::literals;
 using Vec3 = Eigen::Vector3d;
 using Mat3 = Eigen::Matrix3d;
-// Inputs as sequences (lists, tuples, numpy arrays of any layout); outputs as numpy arrays.
-using In3 = std::array<double, 3>;
-using In33 = std::array<std::array<double, 3>, 3>;
+// Inputs as sequences (lists, tuples, numpy arrays of any layout), checked for 3 components
+// (a ValueError naming the argument); outputs as numpy arrays.
+using In = std::vector<double>;
+using In2 = std::vector<std::vector<double>>;
 
 namespace {
 
-Vec3 vec(const In3& a) {
+Vec3 vec(const char* name, const In& a) {
+  if (a.size() != 3)
+    throw InvalidArgument(name, std::to_string(a.size()) + " components",
+                          "must have 3 ((vx, vy, omega) or (Fx, Fy, Mz))");
   return {a[0], a[1], a[2]};
 }
-Mat3 mat(const In33& a) {
+Mat3 mat(const char* name, const In2& a) {
+  if (a.size() != 3)
+    throw InvalidArgument(name, std::to_string(a.size()) + " rows", "must be 3 x 3");
   Mat3 m;
-  for (int i = 0; i < 3; ++i)
+  for (int i = 0; i < 3; ++i) {
+    if (a[i].size() != 3)
+      throw InvalidArgument(
+          name, "row " + std::to_string(i) + " of " + std::to_string(a[i].size()) + " entries",
+          "must be 3 x 3");
     for (int j = 0; j < 3; ++j) m(i, j) = a[i][j];
+  }
   return m;
 }
 
@@ -48,23 +60,28 @@ ProjectionOptions projection_options(double tolerance, double inside_tolerance,
 template <class Surface, class Class>
 void bind_surface_methods(Class& c) {
   c.def(
-       "support", [](const Surface& s, const In3& d) { return support(s, vec(d)); }, "direction"_a,
+       "support", [](const Surface& s, const In& d) { return support(s, vec("direction", d)); },
+       "direction"_a,
        "max over the set of w . d = D(d) [W] for a twist direction d (vx, vy, omega)")
       .def(
           "dissipation_with_derivatives",
-          [](const Surface& s, const In3& t) { return dissipation_with_derivatives(s, vec(t)); },
+          [](const Surface& s, const In& t) {
+            return dissipation_with_derivatives(s, vec("twist", t));
+          },
           "twist"_a, "D, its gradient (= -wrench of the twist) and Hessian at the twist")
       .def(
-          "surface_point", [](const Surface& s, const In3& n) { return surface_point(s, vec(n)); },
+          "surface_point",
+          [](const Surface& s, const In& n) { return surface_point(s, vec("normal", n)); },
           "normal"_a, "the boundary wrench whose outward normal is the twist direction n")
       .def(
-          "gauge", [](const Surface& s, const In3& w) { return gauge(s, vec(w)); }, "wrench"_a,
+          "gauge", [](const Surface& s, const In& w) { return gauge(s, vec("wrench", w)); },
+          "wrench"_a,
           "the smallest g with wrench in g C (inside iff g <= 1) and the boundary normal")
       .def(
           "project",
-          [](const Surface& s, const In3& trial, const In33& metric, double tolerance,
+          [](const Surface& s, const In& trial, const In2& metric, double tolerance,
              double inside_tolerance, int max_iterations) {
-            return project(s, vec(trial), mat(metric),
+            return project(s, vec("trial", trial), mat("metric", metric),
                            projection_options(tolerance, inside_tolerance, max_iterations));
           },
           "trial"_a, "metric"_a, "tolerance"_a = 1e-10, "inside_tolerance"_a = 1e-10,
@@ -73,9 +90,10 @@ void bind_surface_methods(Class& c) {
           "with the twist G (w - trial) whose friction it is (normality)")
       .def(
           "moreau_jean_step",
-          [](const Surface& s, double mass, double inertia, const In3& twist, const In3& applied,
+          [](const Surface& s, double mass, double inertia, const In& twist, const In& applied,
              double step) {
-            return moreau_jean_step(s, PlanarBody{mass, inertia}, vec(twist), vec(applied), step);
+            return moreau_jean_step(s, PlanarBody{mass, inertia}, vec("twist", twist),
+                                    vec("applied", applied), step);
           },
           "mass"_a, "inertia"_a, "twist"_a, "applied"_a, "step"_a,
           "one implicit step of a planar body on the patch: M (s+ - s) = h (applied + w), w in "

@@ -99,15 +99,9 @@ QuasiSteadyState quasi_steady_state(const GearModel& model, StabilityPhase phase
   };
   Eigen::VectorXd f = residual_vector(q.x);
   for (int iter = 0; iter < 60 && f.allFinite(); ++iter) {
-    Eigen::MatrixXd J(n, n);
-    for (int k = 0; k < n; ++k) {
-      const int i = q.states[static_cast<std::size_t>(k)];
-      const double h = 1e-6 * scale_of(i);
-      GearState xp = q.x, xm = q.x;
-      xp[i] += h;
-      xm[i] -= h;
-      J.col(k) = (residual_vector(xp) - residual_vector(xm)) / (2.0 * h);
-    }
+    // The residual is the reduced right-hand side over the state scales: J = S^-1 A.
+    Eigen::MatrixXd J = linearise(model, q);
+    for (int k = 0; k < n; ++k) J.row(k) /= scale_of(q.states[static_cast<std::size_t>(k)]);
     const Eigen::VectorXd step = -J.colPivHouseholderQr().solve(f);
     if (!step.allFinite()) break;
     double lambda = 1.0;

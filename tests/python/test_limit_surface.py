@@ -90,6 +90,10 @@ def test_bad_input_raises_value_error_naming_the_problem():
         s.project([1.0, 0.0, 0.0], np.diag([1.0, -1.0, 1.0]))
     with pytest.raises(ValueError, match="trial"):
         s.project([math.nan, 0.0, 0.0], np.eye(3))
+    with pytest.raises(ValueError, match=r"direction = 2 components: must have 3"):
+        s.support([1.0, 0.0])
+    with pytest.raises(ValueError, match=r"metric = 2 rows: must be 3 x 3"):
+        s.project([1.0, 0.0, 0.0], np.eye(2))
     with pytest.raises(ValueError, match="step"):
         s.moreau_jean_step(1.0, 1.0, [0.0, 0.0, 0.0], [0.0, 0.0, 0.0], 0.0)
     with pytest.raises(ValueError, match="kappa"):
