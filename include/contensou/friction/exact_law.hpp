@@ -1,0 +1,318 @@
+// The exact law: the exact resultants of a patch (theory.md section 2) from tables built once
+// per pressure profile, at the cost of a closed-form law, with a certified error and the
+// Jacobian.
+//
+// Why tables suffice. The resultants are linear in the pressure, hence in (1, kx, ky), and the
+// default orthotropic law tau = -sigma f D vc/|vc|, D = diag(1, kappa), is D times the isotropic
+// one. In the frame of the sliding direction e = v/|v| (n = z x e, s = sign(omega)) the
+// isotropic integrals of an axisymmetric profile depend on eps = |v|/(|omega| R) only, and the
+// symmetries of theory.md section 2 (x -> -x with time reversal; y -> -y with omega -> -omega)
+// leave six functions of eps (R = 1, p* = 1, f = 1, u_hat = vc/|vc|, integrals over the disk):
+//   A = integral p u_x,  a = integral p x u_y,  b = integral p y u_x   (a, b odd in omega)
+//   alpha = integral p x^2 u_x,  c = integral p x y u_y,  d = integral p y^2 u_x.
+// Then, with N = 2 pi R^2 p* A^1 the load, k_par = k.e, k_perp = k.n (k = (kx, ky)):
+//   F  = -f N D [A e + s (a (z x k) + (a + b) k_perp e)] / L
+//   Mz = -f N R [s (a (1 + kappa) - (a + b) e'De) + (1 + kappa)/2 (c - d) k_perp
+//                + (kappa - 1) ((alpha - c) e_x e_y k_par + (c + d)/2 (e_x^2 - e_y^2) k_perp)] / L
+// with L = 2 pi A^1 (the same formulas as exact_resultants at eps -> 0 and eps -> infinity:
+// pure spin, Mz = -s M0 (1 + kappa)/2, F = s (M0/2R) D (z x k); pure sliding, F = -f N D e).
+// Every profile, shift and kappa therefore shares one table of six functions of one variable,
+//   t = (|v| - |omega| R) / (|v| + |omega| R) in [-1, 1]   (t = 0: the centre of sliding on the
+//   rim),
+// tabulated as A/sigma, a, (a + b)/sigma, (alpha - c)/sigma, (c - d)/sigma, (c + d)/sigma
+// (sigma = |v|/(|v| + |omega| R), all divided by L), which are bounded and make the law smooth in v
+// at v = 0. Their values at t = -1 (pure spin) are closed forms of the moments A^n (theory.md
+// section 4), from the first-order turn of the slip direction about a centre of sliding r_c near
+// O, u_hat = u_hat_0 + eps cos(theta) r_hat / rho: A/sigma -> A^0/(2 A^1), a -> A^2/(2 A^1),
+// (alpha - c)/sigma and (c + d)/sigma -> A^2/(4 A^1), (a + b)/sigma and (c - d)/sigma -> 0.
+// The table is piecewise Chebyshev (piecewise_chebyshev.hpp), graded towards t = 0 where the
+// functions have an x log|x| singularity, and checked between its nodes against the adaptive
+// integrator (exact_resultants.hpp): `achieved` is the largest error found, as a bound on the
+// resultants relative to f N and f N R for the model's own kappa and shift.
+#pragma once
+
+#include <Eigen/Core>
+#include <algorithm>
+#include <bit>
+#include <cmath>
+#include <cstdint>
+#include <optional>
+#include <utility>
+
+#include "contensou/friction/contact_patch.hpp"
+#include "contensou/friction/error.hpp"
+#include "contensou/friction/exact_resultants.hpp"
+#include "contensou/friction/kinematics.hpp"
+#include "contensou/friction/piecewise_chebyshev.hpp"
+#include "contensou/friction/scalar.hpp"
+
+namespace contensou {
+
+struct ExactLawOptions {
+  // Requested accuracy of the resultants, relative to f N (forces) and f N R (torque), for the
+  // model's own kappa and shift; in (1e-14, 1e-2).
+  double tolerance = 1e-8;
+  int degree = 12;         // of the Chebyshev pieces in t (8, 10, 12, 14 or 16)
+  int falling_degree = 8;  // the same for the falling part of a slip-speed law
+};
+
+// The table functions (exact_law.hpp header), in this order.
+enum ExactLawFunction : int {
+  kLawSlide,       // A / (sigma L)
+  kLawSpin,        // a / L
+  kLawSpinSum,     // (a + b) / (sigma L)
+  kLawShiftCross,  // (alpha - c) / (sigma L)
+  kLawShiftDiff,   // (c - d) / (sigma L)
+  kLawShiftSum,    // (c + d) / (sigma L)
+  kLawFunctions
+};
+
+// What the table leaves free: the patch's scale and the parameters that enter the resultants
+// algebraically. T = double, or an automatic-differentiation type (ceres::Jet).
+template <class T = double>
+struct ExactLawParameters {
+  T pressure{0};   // p* [Pa]
+  T friction{0};   // f (unused if slip_speed is set)
+  T kappa{1};      // lateral / longitudinal friction ratio
+  T kx{0}, ky{0};  // pressure shift (relative to the law's radius)
+  // f(w) = f_k + (f_s - f_k) exp(-(w / w_s)^delta) inside the integrals; delta must be the
+  // exponent the law's table was built for.
+  std::optional<SlipSpeedFriction<T>> slip_speed;
+};
+
+// The falling part g(w) = exp(-(w / w_s)^delta) of a slip-speed law: the six functions of
+// (t, z), z = (q)^delta, q = (|v| + |omega| R) / w_s, the speed in units of w_s. One table in t per
+// octave of 1 + z (1 + z in [2^j, 2^(j+1))), Chebyshev of degree degree_z in x = 2 (1 + z) / 2^j -
+// 3 within it: the 6 (degree_z + 1) "functions" of octave j are the coefficients c[k][i] of T_k(x).
+// Beyond the last octave the functions are taken as 0 (tail bounds them there).
+inline constexpr int kSlipDegreeZ = 8;
+inline constexpr int kSlipOctaves = 1;  // octaves of 1 + z a piece
+struct SlipSpeedTable {
+  double exponent = 1.0;  // delta
+  int degree_z = kSlipDegreeZ;
+  double tail = 0.0;  // largest |function| found at the top of the last octave
+  std::vector<PiecewiseChebyshev> octaves;
+  std::size_t bytes() const {
+    std::size_t b = 0;
+    for (const PiecewiseChebyshev& o : octaves) b += o.bytes();
+    return b;
+  }
+};
+
+struct ExactLaw {
+  double radius = 0.0;                    // R [m] (the model's integration radius)
+  double load_area = 0.0;                 // L = N / (p* R^2) = 2 pi A^1
+  ExactLawParameters<double> parameters;  // those of the model it was built from
+  PiecewiseChebyshev table;               // the six functions of t, constant friction
+  std::optional<SlipSpeedTable> falling;  // the falling part of a slip-speed law
+  double tolerance = 0.0;                 // requested
+  double achieved = 0.0;  // bound on the error found between the nodes (relative, see above)
+  bool reached = true;    // achieved <= tolerance
+  int samples = 0;        // adaptive-integrator calls of the build (each five integrals)
+  std::size_t bytes() const { return table.bytes() + (falling ? falling->bytes() : 0); }
+};
+
+// Builds the law of a model (the associated orthotropic law only for kappa = 1). A slip-speed
+// law adds the table of its falling part for its exponent delta. Throws InvalidArgument for a
+// tolerance outside (1e-14, 1e-2), a degree outside [4, 32], or a model the table cannot
+// represent.
+ExactLaw make_exact_law(const ExactModel<double>& model, const ExactLawOptions& options = {});
+
+namespace detail {
+
+// Chain rule through a table: value v and slope dv/dt at value_of(t), as a T that carries t's
+// derivatives (for double, just v).
+template <class T>
+T lift(double v, double slope, const T& t) {
+  if constexpr (std::is_arithmetic_v<T>) {
+    (void)slope;
+    (void)t;
+    return v;
+  } else {
+    return T(v) + slope * (t - T(value_of(t)));
+  }
+}
+
+// The six table functions at t, lifted to T.
+template <class T>
+void law_functions(const PiecewiseChebyshev& table, const T& t, T* g) {
+  if constexpr (std::is_arithmetic_v<T>) {
+    evaluate_chebyshev_fast(table, t, g);
+  } else {
+    double v[kLawFunctions], s[kLawFunctions];
+    evaluate_chebyshev_fast(table, value_of(t), v, s);
+    for (int i = 0; i < kLawFunctions; ++i) g[i] = lift(v[i], s[i], t);
+  }
+}
+
+// The piece j of a = 1 + z (a in [2^(jW), 2^((j+1)W)), W = kSlipOctaves, z >= 0) and its local
+// variable, the Moebius map x = (a - c) / (a + c) / x_max with c = 2^(jW + W/2) (the geometric
+// mean of the ends), which maps the half plane Re a > 0, where the functions are bounded, onto
+// a disk: the Chebyshev series converge like (x_max / (1 + sqrt(1 - x_max^2)))^n. From the bits
+// of the double; -1 beyond the table.
+inline int octave_of(const SlipSpeedTable& s, double z, double& x, double& dxdz) {
+  constexpr int W = kSlipOctaves;
+  constexpr double r = W == 1 ? 1.4142135623730951 : (W == 2 ? 2.0 : 2.8284271247461903);
+  constexpr double x_max = (r - 1.0) / (r + 1.0);  // at a = 2^(jW + W) (and -x_max at 2^(jW))
+  const double a = 1.0 + z;
+  const std::uint64_t bits = std::bit_cast<std::uint64_t>(a);
+  const int e = static_cast<int>(bits >> 52) - 1023;
+  if (e < 0) return -1;
+  const int j = e / W;
+  if (j >= static_cast<int>(s.octaves.size())) return -1;
+  const double c = std::ldexp(r, j * W), den = 1.0 / (a + c);
+  x = (a - c) * den * (1.0 / x_max);
+  dxdz = 2.0 * c * den * den * (1.0 / x_max);
+  return j;
+}
+
+// The points a = 1 + z of piece j at local variables x (the inverse of octave_of's map).
+inline double octave_point(int j, double x) {
+  constexpr int W = kSlipOctaves;
+  constexpr double r = W == 1 ? 1.4142135623730951 : (W == 2 ? 2.0 : 2.8284271247461903);
+  constexpr double x_max = (r - 1.0) / (r + 1.0);
+  const double c = std::ldexp(r, j * W), u = x * x_max;
+  return c * (1.0 + u) / (1.0 - u);
+}
+
+// The falling part's six functions at (t, z) and, if Slope, their derivatives in t and z.
+template <bool Slope>
+void falling_values(const SlipSpeedTable& s, double t, double z, double* g, double* gt,
+                    double* gz) {
+  constexpr int NZ = kSlipDegreeZ, M = kLawFunctions * (NZ + 1);
+  double x, dxdz;
+  const int j = octave_of(s, z, x, dxdz);
+  for (int i = 0; i < kLawFunctions; ++i) g[i] = 0.0;
+  if constexpr (Slope)
+    for (int i = 0; i < kLawFunctions; ++i) gt[i] = gz[i] = 0.0;
+  if (j < 0) return;
+  double B[M], dB[M], T[NZ + 1], D[NZ + 1];
+  if constexpr (Slope)
+    evaluate_chebyshev_fast(s.octaves[j], t, B, dB);
+  else
+    evaluate_chebyshev_fast(s.octaves[j], t, B);
+  chebyshev_basis<NZ, Slope>(x, T, D);
+  for (int k = 0; k <= NZ; ++k)
+    for (int i = 0; i < kLawFunctions; ++i) {
+      g[i] += B[k * kLawFunctions + i] * T[k];
+      if constexpr (Slope) {
+        gt[i] += dB[k * kLawFunctions + i] * T[k];
+        gz[i] += B[k * kLawFunctions + i] * D[k] * dxdz;
+      }
+    }
+}
+
+// G_i = f g_i (constant friction), or f_k g_i(t) + (f_s - f_k) h_i(t, z) with z = (S / w_s)^delta
+// (S = |v| + |omega| R [m/s]), as the product type R of the parameters P and kinematics K.
+template <class R, class P, class K>
+void friction_functions(const ExactLaw& law, const ExactLawParameters<P>& p, const K& t,
+                        const K& speed, R* G) {
+  using std::pow;
+  K g[kLawFunctions];
+  law_functions(law.table, t, g);
+  if (!p.slip_speed) {
+    for (int i = 0; i < kLawFunctions; ++i) G[i] = p.friction * g[i];
+    return;
+  }
+  const SlipSpeedFriction<P>& f = *p.slip_speed;
+  const R q = speed / f.reference_speed;
+  const R z = law.falling->exponent == 1.0 ? q : R(pow(q, law.falling->exponent));
+  const P fall = f.static_coefficient - f.kinetic_coefficient;
+  double h[kLawFunctions], ht[kLawFunctions], hz[kLawFunctions];
+  if constexpr (std::is_arithmetic_v<R>) {
+    falling_values<false>(*law.falling, t, z, h, ht, hz);
+    for (int i = 0; i < kLawFunctions; ++i) G[i] = f.kinetic_coefficient * g[i] + fall * h[i];
+  } else {
+    falling_values<true>(*law.falling, value_of(t), value_of(z), h, ht, hz);
+    const R dt = R(t) - R(value_of(t)), dz = z - R(value_of(z));
+    for (int i = 0; i < kLawFunctions; ++i)
+      G[i] = f.kinetic_coefficient * g[i] + fall * (R(h[i]) + ht[i] * dt + hz[i] * dz);
+  }
+}
+
+}  // namespace detail
+
+// Fx, Fy, Mz of the law at kinematics k with parameters p (exact_law.hpp header). Zero at
+// v = omega = 0 (Coulomb friction is set-valued there; 0 is in the set). Throws InvalidArgument
+// for non-finite kinematics. The parameters and the kinematics may have different scalar types
+// (double parameters with differentiated kinematics for a Jacobian; differentiated parameters
+// with measured kinematics in a fit); the result has the type of their product.
+template <class P, class K>
+auto exact_law_resultants(const ExactLaw& law, const ExactLawParameters<P>& p,
+                          const Kinematics<K>& k) {
+  using std::sqrt;
+  using R = decltype(std::declval<P>() * std::declval<K>());
+  require_finite("vx", value_of(k.vx));
+  require_finite("vy", value_of(k.vy));
+  require_finite("omega", value_of(k.omega));
+  const double radius = law.radius;
+  // Scaled velocities (the functions depend on ratios only): no square over- or underflows.
+  const double scale = std::max(
+      {std::abs(value_of(k.vx)), std::abs(value_of(k.vy)), std::abs(value_of(k.omega)) * radius});
+  if (!(scale > 0.0)) return Resultants<R>{R(0.0), R(0.0), R(0.0)};
+  // (1 / scale overflows for a subnormal scale: divide then.)
+  const double inv = 1.0 / scale;
+  const bool tiny = !(inv < 1e300);
+  const K vx = tiny ? K(k.vx / scale) : K(k.vx * inv), vy = tiny ? K(k.vy / scale) : K(k.vy * inv);
+  const K w = tiny ? K(k.omega * radius / scale) : K(k.omega * (radius * inv));
+  // e = v/|v|; at |v| = 0 (or below 1e-150 of the scale) any direction: every term that
+  // depends on it vanishes there.
+  const double vxv = value_of(vx), vyv = value_of(vy);
+  K ex, ey, v;
+  if (vxv * vxv + vyv * vyv > 1e-300) {
+    v = sqrt(vx * vx + vy * vy);
+    const K iv = 1.0 / v;
+    ex = vx * iv;
+    ey = vy * iv;
+  } else {
+    ex = K(1.0);
+    ey = K(0.0);
+    v = vxv < 0.0 ? -vx : vx;  // |v| to first order along e = x
+  }
+  const double sgn = value_of(w) < 0.0 ? -1.0 : 1.0;
+  const K S = v + sgn * w;
+  const K sigma = v / S;  // t = 2 sigma - 1
+  R G[kLawFunctions];
+  detail::friction_functions(law, p, K(2.0 * sigma - 1.0), K(S * scale), G);
+  // With xi = v / S (sigma e: smooth at v = 0) and the terms whose coefficients vanish at v = 0
+  // (a + b, and (c + d) - (alpha - c)) kept with e (f folded into G; z x k = (-ky, kx)):
+  //   F = -p* R^2 L D [A/sigma xi + s (a (z x k) + (a + b)/sigma k_perp xi)]
+  const K xi_x = vx / S, xi_y = vy / S;
+  const R kperp = p.ky * ex - p.kx * ey;
+  const R along = G[kLawSlide] + sgn * G[kLawSpinSum] * kperp;
+  const R spin = sgn * G[kLawSpin];
+  const P pN = p.pressure * (radius * radius * law.load_area);
+  Resultants<R> r;
+  r.Fx = -pN * (along * xi_x - spin * p.ky);
+  r.Fy = -pN * p.kappa * (along * xi_y + spin * p.kx);
+  //   Mz = -p* R^3 L [s (a (1 + kappa) - (a + b)/sigma xi'D e) + (1 + kappa)/2 (c - d)/sigma
+  //        (ky xi_x - kx xi_y) + (kappa - 1)/2 ((alpha - c)/sigma (kx xi_y + ky xi_x)
+  //        + ((c + d) - (alpha - c))/sigma (xi_x e_x - xi_y e_y) k_perp)]
+  // (the kappa - 1 terms of the header combined: e_x e_y k_par + (e_x^2 - e_y^2) k_perp / 2 =
+  // (kx e_y + ky e_x) / 2).
+  const R spin_torque =
+      spin * (1.0 + p.kappa) - sgn * G[kLawSpinSum] * (xi_x * ex + p.kappa * (xi_y * ey));
+  const R shift_torque =
+      0.5 * (1.0 + p.kappa) * G[kLawShiftDiff] * (p.ky * xi_x - p.kx * xi_y) +
+      0.5 * (p.kappa - 1.0) *
+          (G[kLawShiftCross] * (p.kx * xi_y + p.ky * xi_x) +
+           (G[kLawShiftSum] - G[kLawShiftCross]) * (xi_x * ex - xi_y * ey) * kperp);
+  r.Mz = -pN * radius * (spin_torque + shift_torque);
+  return r;
+}
+
+// The law at the parameters of the model it was built from.
+inline Resultants<double> exact_law_resultants(const ExactLaw& law, const Kinematics<double>& k) {
+  return exact_law_resultants(law, law.parameters, k);
+}
+
+// The law and its Jacobian d(Fx, Fy, Mz)/d(vx, vy, omega), the exact derivative of the
+// interpolant (continuous, finite at every finite input; at v = 0 and omega = 0 the limits).
+struct ExactLawWithJacobian {
+  Resultants<double> resultants;
+  Eigen::Matrix3d jacobian;  // rows Fx, Fy, Mz; columns vx, vy, omega
+};
+ExactLawWithJacobian exact_law_resultants_with_jacobian(const ExactLaw& law,
+                                                        const Kinematics<double>& k);
+
+}  // namespace contensou

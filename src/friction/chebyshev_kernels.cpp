@@ -1,0 +1,38 @@
+// The dispatch of the unrolled Chebyshev kernels (piecewise_chebyshev.hpp): the baseline build
+// here, the AVX2 + FMA build in chebyshev_kernels_avx2.cpp, chosen once from the CPU.
+#include "chebyshev_kernels.hpp"
+
+namespace contensou::detail {
+
+namespace baseline {
+#include "chebyshev_kernels.inc"
+}  // namespace baseline
+
+namespace {
+
+const KernelTable& kernels() {
+  static const KernelTable table = [] {
+    KernelTable t{};
+#if CONTENSOU_HAVE_AVX2_KERNELS
+    if (__builtin_cpu_supports("avx2") && __builtin_cpu_supports("fma")) {
+      avx2::register_kernels(t);
+      return t;
+    }
+#endif
+    baseline::register_kernels(t);
+    return t;
+  }();
+  return table;
+}
+
+}  // namespace
+
+ChebyshevKernel chebyshev_kernel(int functions, int degree, bool slope) {
+  const int which = functions == kLawFunctions                        ? 0
+                    : functions == kLawFunctions * (kSlipDegreeZ + 1) ? 1
+                                                                      : -1;
+  if (which < 0 || degree < 8 || degree > 16 || degree % 2) return nullptr;
+  return kernels()[which][(degree - 8) / 2][slope ? 1 : 0];
+}
+
+}  // namespace contensou::detail

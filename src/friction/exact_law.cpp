@@ -1,0 +1,214 @@
+// The exact law's tables (exact_law.hpp): the six functions of t sampled from the adaptive
+// integrator and interpolated piecewise.
+#include "contensou/friction/exact_law.hpp"
+
+#include <cmath>
+#include <numbers>
+
+#include "contensou/friction/forward_derivative.hpp"
+#include "exact_law_sampling.hpp"
+
+namespace contensou {
+
+namespace {
+
+// Bound on the resultants' error (relative to f N, f N R) from errors e[i] of the functions,
+// for kappa and shift k (the formulas of exact_law.hpp, each term at its largest).
+double resultant_error_bound(const double* e, double kappa, double k) {
+  const double km = std::max(1.0, kappa);
+  const double force = km * (e[kLawSlide] + k * (e[kLawSpin] + e[kLawSpinSum]));
+  const double torque = e[kLawSpin] * (1.0 + kappa) + e[kLawSpinSum] * km +
+                        k * (0.5 * (1.0 + kappa) * e[kLawShiftDiff] +
+                             std::abs(kappa - 1.0) * (e[kLawShiftCross] + e[kLawShiftSum]));
+  return std::max(force, torque);
+}
+
+// Coefficients of T_k(x), k = 0..n, from values at the Lobatto points x_k = cos(k pi / n)
+// (values[k * stride]).
+void lobatto_to_chebyshev(int n, const double* values, int stride, double* c) {
+  for (int k = 0; k <= n; ++k) {
+    double s = 0.0;
+    for (int j = 0; j <= n; ++j)
+      s += (j == 0 || j == n ? 0.5 : 1.0) * values[j * stride] *
+           std::cos(std::numbers::pi * j * k / n);
+    c[k] = (k == 0 || k == n ? 1.0 : 2.0) * s / n;
+  }
+}
+
+// Turns each (t-coefficient, piece) block of values at the z Lobatto points into Chebyshev
+// coefficients in z (the layout [k_z][function] within a block stays).
+void values_to_z_coefficients(PiecewiseChebyshev& table) {
+  constexpr int NZ = kSlipDegreeZ, M = kLawFunctions * (NZ + 1);
+  for (std::size_t block = 0; block + M <= table.coefficients.size(); block += M) {
+    double* v = table.coefficients.data() + block;
+    double out[M];
+    for (int i = 0; i < kLawFunctions; ++i) {
+      double c[NZ + 1];
+      lobatto_to_chebyshev(NZ, v + i, kLawFunctions, c);
+      for (int k = 0; k <= NZ; ++k) out[k * kLawFunctions + i] = c[k];
+    }
+    std::copy(out, out + M, v);
+  }
+}
+
+// The table of the falling part (exact_law.hpp, SlipSpeedTable): octave by octave of 1 + z, an
+// adaptive table in t whose functions are the Chebyshev coefficients in z of the six functions
+// at the octave's Lobatto points; the z-interpolation is checked at the points between them at
+// every sampled t. Octaves are added until the functions at the top of the last one are below a
+// half the tolerance at a set of t (beyond it they are taken as 0: the tail).
+struct FallingBuild {
+  SlipSpeedTable table;
+  double achieved = 0.0;  // largest error found (t-interpolation, z-interpolation, tail)
+  bool reached = true;
+  int samples = 0;
+};
+
+FallingBuild build_falling(const ExactModel<double>& model, double delta, double tolerance,
+                           const PiecewiseChebyshevOptions& base) {
+  constexpr int NZ = kSlipDegreeZ, M = kLawFunctions * (NZ + 1);
+  constexpr int kMaxOctaves = 40;
+  const double largest_q = 1e6;
+  detail::FallingSampler sampler(model, delta, largest_q);
+  FallingBuild out;
+  out.table.exponent = delta;
+  // Octaves: until |functions| < tolerance / 10 at the top z = 2^J - 1 (and q <= largest_q).
+  constexpr int W = kSlipOctaves;
+  auto top_z = [&](int pieces) { return std::ldexp(1.0, pieces * W) - 1.0; };
+  int J = 1;
+  const std::vector<double> probe_t{-1.0, -0.9, -0.5, -0.1, -1e-3, 0.0, 1e-3, 0.1, 0.5, 0.99};
+  for (; J < kMaxOctaves / W && std::pow(top_z(J), 1.0 / delta) < largest_q; ++J) {
+    double top = 0.0, g[kLawFunctions];
+    for (double t : probe_t) {
+      sampler(t, {top_z(J)}, g);
+      for (double v : g) top = std::max(top, std::abs(v));
+    }
+    if (top < 0.5 * tolerance) break;
+  }
+  double z_error = 0.0, tail = 0.0;
+  for (int j = 0; j < J; ++j) {
+    std::vector<double> zs;  // Lobatto points of the octave, then the points between them
+    for (int k = 0; k <= NZ; ++k)
+      zs.push_back(detail::octave_point(j, std::cos(std::numbers::pi * k / NZ)) - 1.0);
+    for (int k = 0; k < NZ; ++k)
+      zs.push_back(detail::octave_point(j, std::cos(std::numbers::pi * (k + 0.5) / NZ)) - 1.0);
+    // The table in t holds the values at the z points (their interpolation error is checked
+    // directly); afterwards each block of values becomes Chebyshev coefficients in z.
+    auto sample = [&](double t, double* values) {
+      std::vector<double> v(6 * zs.size());
+      sampler(t, zs, v.data());
+      std::copy(v.begin(), v.begin() + M, values);
+      for (int i = 0; i < kLawFunctions; ++i) {
+        double c[NZ + 1];
+        lobatto_to_chebyshev(NZ, v.data() + i, kLawFunctions, c);
+        for (int k = 0; k < NZ; ++k) {  // the z-interpolation between the points
+          const double x = std::cos(std::numbers::pi * (k + 0.5) / NZ);
+          double s = c[0] + c[1] * x, tp = 1.0, tc = x;
+          for (int m = 2; m <= NZ; ++m) {
+            const double tn = 2.0 * x * tc - tp;
+            s += c[m] * tn;
+            tp = tc;
+            tc = tn;
+          }
+          z_error = std::max(z_error, std::abs(s - v[(NZ + 1 + k) * kLawFunctions + i]));
+        }
+        if (j == J - 1) tail = std::max(tail, std::abs(v[i]));  // z at the top (x = 1)
+      }
+    };
+    PiecewiseChebyshevOptions o = base;
+    o.tolerance = base.tolerance / 3.0;  // the Lebesgue constant of the z points is below 3
+    o.breaks = graded_breaks(2);
+    PiecewiseChebyshevBuild b = build_piecewise_chebyshev(M, sample, o);
+    values_to_z_coefficients(b.table);
+    out.table.octaves.push_back(b.table);
+    out.achieved = std::max(out.achieved, 3.0 * b.achieved);
+    out.reached = out.reached && b.reached;
+    out.samples += b.samples;
+  }
+  out.table.tail = tail;
+  out.achieved = std::max({out.achieved, z_error, tail});
+  out.reached = out.reached && out.achieved <= base.tolerance * 2.0;
+  return out;
+}
+
+}  // namespace
+
+ExactLaw make_exact_law(const ExactModel<double>& model, const ExactLawOptions& options) {
+  if (!(options.tolerance > 1e-14 && options.tolerance < 1e-2))
+    throw InvalidArgument("tolerance", format_value(options.tolerance),
+                          "must lie in (1e-14, 1e-2)");
+  for (const auto& [name, d] :
+       {std::pair{"degree", options.degree}, std::pair{"falling_degree", options.falling_degree}})
+    if (d != 8 && d != 10 && d != 12 && d != 14 && d != 16)
+      throw InvalidArgument(name, std::to_string(d), "must be one of 8, 10, 12, 14, 16");
+  if (model.associated_orthotropy && model.kappa != 1.0)
+    throw InvalidArgument("kappa", format_value(model.kappa),
+                          "the associated orthotropic law is tabulated for kappa = 1 only");
+  if (!(model.radius > 0.0) || !(model.load_area > 0.0))
+    throw InvalidArgument("radius", format_value(model.radius), "the model is not built");
+  ExactLaw law;
+  law.radius = model.radius;
+  law.parameters = {model.pressure, model.friction, model.kappa,
+                    model.kx,       model.ky,       model.slip_speed};
+  law.tolerance = options.tolerance;
+  // The functions are certified to a share of the tolerance that leaves room for the shift and
+  // kappa of the model (resultant_error_bound) and the integrator's own error.
+  const double k = std::hypot(model.kx, model.ky);
+  double unit[kLawFunctions];
+  std::fill(unit, unit + kLawFunctions, 1.0);
+  const double per_function = options.tolerance / resultant_error_bound(unit, model.kappa, k);
+  detail::ConstantSampler sampler(model, std::min(1e-3 * per_function, 1e-11));
+  law.load_area = sampler.load();
+  PiecewiseChebyshevOptions o;
+  o.degree = options.degree;
+  o.tolerance = 0.5 * per_function;
+  o.breaks = graded_breaks(6);
+  const PiecewiseChebyshevBuild b = build_piecewise_chebyshev(
+      kLawFunctions, [&](double t, double* g) { sampler(t, g); }, o);
+  law.table = b.table;
+  double err[kLawFunctions];
+  std::fill(err, err + kLawFunctions, b.achieved + 1e-3 * per_function);
+  law.achieved = resultant_error_bound(err, model.kappa, k);
+  law.reached = b.reached;
+  law.samples = b.samples;
+  if (model.slip_speed) {
+    // Relative to f_s N: the constant part carries f_k, the falling part f_s - f_k, so the falling
+    // table needs f_s / |f_s - f_k| times less accuracy.
+    const SlipSpeedFriction<double>& f = *model.slip_speed;
+    const double fs = std::max(f.static_coefficient, f.kinetic_coefficient);
+    const double fall = std::abs(f.static_coefficient - f.kinetic_coefficient);
+    if (fall == 0.0) {  // constant after all
+      law.parameters.slip_speed.reset();
+      law.parameters.friction = f.kinetic_coefficient;
+    } else {
+      PiecewiseChebyshevOptions of = o;
+      of.degree = options.falling_degree;
+      const double budget = std::min(0.5 * per_function * fs / fall, 1e-3);
+      const FallingBuild fb = build_falling(model, f.exponent, budget, of);
+      law.falling = fb.table;
+      std::fill(err, err + kLawFunctions, fb.achieved);
+      law.achieved = (f.kinetic_coefficient * law.achieved +
+                      fall * resultant_error_bound(err, model.kappa, k)) /
+                     fs;
+      law.reached = law.reached && fb.reached;
+      law.samples += fb.samples;
+    }
+  }
+  law.achieved += model.representation_error * std::numbers::pi / law.load_area;
+  law.reached = law.reached && law.achieved <= options.tolerance;
+  return law;
+}
+
+ExactLawWithJacobian exact_law_resultants_with_jacobian(const ExactLaw& law,
+                                                        const Kinematics<double>& k) {
+  using D = ForwardDerivative<3>;
+  const Resultants<D> r = exact_law_resultants(
+      law, law.parameters, Kinematics<D>{D(k.vx, 0), D(k.vy, 1), D(k.omega, 2)});
+  ExactLawWithJacobian out;
+  out.resultants = {r.Fx.a, r.Fy.a, r.Mz.a};
+  out.jacobian.row(0) = r.Fx.v.transpose();
+  out.jacobian.row(1) = r.Fy.v.transpose();
+  out.jacobian.row(2) = r.Mz.v.transpose();
+  return out;
+}
+
+}  // namespace contensou

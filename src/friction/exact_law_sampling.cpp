@@ -1,0 +1,184 @@
+// Samplers of the exact law's tables (exact_law_sampling.hpp).
+#include "exact_law_sampling.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+#include <numeric>
+
+#include "contensou/friction/quadrature.hpp"
+
+namespace contensou::detail {
+
+namespace {
+constexpr double kPi = std::numbers::pi;
+}  // namespace
+
+double profile_integral(const ExactModel<double>& m, const std::function<double(double)>& h,
+                        double layer) {
+  // Panels in x (x = rho, or theta with rho = sin(theta) for a Hertz edge), graded towards 0.
+  const double top = m.sqrt_edge ? 0.5 * kPi : 1.0;
+  std::vector<double> cuts{0.0};
+  for (double x = std::min(layer, top); x < top; x *= 2.0) cuts.push_back(x);
+  if (!m.piece.empty())
+    for (std::size_t k = 1; k + 1 < m.knot.size(); ++k) cuts.push_back(std::sqrt(m.knot[k]));
+  cuts.push_back(top);
+  std::sort(cuts.begin(), cuts.end());
+  cuts.erase(std::unique(cuts.begin(), cuts.end()), cuts.end());
+  const int nodes = m.piece.empty() ? static_cast<int>(m.chebyshev.size()) + 16 : 8;
+  const GaussLegendreRule g = gauss_legendre(nodes);
+  double sum = 0.0;
+  for (std::size_t j = 0; j + 1 < cuts.size(); ++j) {
+    const double a = cuts[j], b = cuts[j + 1];
+    for (std::size_t i = 0; i < g.nodes.size(); ++i) {
+      const double x = 0.5 * (a + b) + 0.5 * (b - a) * g.nodes[i];
+      const double w = 0.5 * (b - a) * g.weights[i];
+      const double rho = m.sqrt_edge ? std::sin(x) : x;
+      const double jac = m.sqrt_edge ? std::cos(x) : 1.0;
+      double p = profile_at(m, rho * rho);
+      if (m.sqrt_edge) p *= std::sqrt(std::max(0.0, 1.0 - rho * rho));
+      sum += w * jac * p * h(rho);
+    }
+  }
+  return sum;
+}
+
+ExactModel<double> unit_model(const ExactModel<double>& model) {
+  ExactModel<double> unit = model;
+  unit.radius = 1.0;
+  unit.pressure = 1.0;
+  unit.friction = 1.0;
+  unit.slip_speed.reset();
+  unit.kx = unit.ky = 0.0;
+  unit.kappa = 1.0;
+  unit.associated_orthotropy = false;
+  unit.load_area = model.load_area / (model.radius * model.radius);
+  unit.friction_scale = 1.0;
+  return unit;
+}
+
+void law_functions_from_moments(const SlipMoments& raw, double sigma, double load, double* g) {
+  const auto [A, a, b, alpha, c, d] = raw;
+  const double den = sigma * load;
+  g[kLawSlide] = A / den;
+  g[kLawSpin] = a / load;
+  g[kLawSpinSum] = (a + b) / den;
+  g[kLawShiftCross] = (alpha - c) / den;
+  g[kLawShiftDiff] = (c - d) / den;
+  g[kLawShiftSum] = (c + d) / den;
+}
+
+// Samples the six functions of t from five adaptive integrals of the unit model in the sliding
+// frame, v = sigma x, omega = eta > 0 (sigma + eta = 1):
+//   P1 kappa = 1, k = 0:            Fx = -A,  Mz = -(a - b)
+//   P2 kappa = 2, k = 0:            Mz = -(2a - b)
+//   P3 kappa = 1, k = (0, 1):       Mz = -(a - b) - (c - d)
+//   P4 kappa = 2, k = (0, 1):       Mz = -(2a - b) - 3/2 (c - d) - 1/2 (c + d)
+//   P5 kappa = 2, k = e = 45 deg:   Mz = -(3a - 3/2 (a + b)) - 1/2 (alpha - c)
+// At t = -1 the limits of exact_law.hpp (moments A^0, A^1, A^2 of the representation).
+ConstantSampler::ConstantSampler(const ExactModel<double>& model, double tolerance)
+    : unit_(unit_model(model)), tol_(tolerance), load_(unit_.load_area) {
+  const double A0 = profile_integral(unit_, [](double) { return 1.0; });
+  const double A1 = profile_integral(unit_, [](double r) { return r; });
+  const double A2 = profile_integral(unit_, [](double r) { return r * r; });
+  slide_limit_ = A0 / (2.0 * A1);
+  shift_limit_ = A2 / (4.0 * A1);
+}
+
+Resultants<double> ConstantSampler::probe(double kappa, double kx, double ky,
+                                          const Kinematics<double>& k) {
+  unit_.kappa = kappa;
+  unit_.kx = kx;
+  unit_.ky = ky;
+  return exact_resultants(unit_, k, {tol_}).resultants;
+}
+
+void ConstantSampler::operator()(double t, double* g) {
+  const double sigma = 0.5 * (1.0 + t), eta = 0.5 * (1.0 - t), h = std::sqrt(0.5);
+  const Resultants<double> p1 = probe(1.0, 0.0, 0.0, {sigma, 0.0, eta});
+  const double Mz2 = probe(2.0, 0.0, 0.0, {sigma, 0.0, eta}).Mz;
+  const double Mz3 = probe(1.0, 0.0, 1.0, {sigma, 0.0, eta}).Mz;
+  const double Mz4 = probe(2.0, 0.0, 1.0, {sigma, 0.0, eta}).Mz;
+  const double Mz5 = probe(2.0, h, h, {h * sigma, h * sigma, eta}).Mz;
+  const double a = p1.Mz - Mz2, b = a + p1.Mz;
+  const double cd_diff = -(Mz3 - p1.Mz);
+  const double cd_sum = -2.0 * (Mz4 - Mz2) - 3.0 * cd_diff;
+  const double cross = -2.0 * Mz5 - 6.0 * a + 3.0 * (a + b);
+  if (sigma == 0.0) {  // pure spin: the limits (exact_law.hpp)
+    g[kLawSpin] = a / load_;
+    g[kLawSlide] = slide_limit_;
+    g[kLawShiftCross] = g[kLawShiftSum] = shift_limit_;
+    g[kLawSpinSum] = g[kLawShiftDiff] = 0.0;
+    return;
+  }
+  // alpha - c and c + d are what the probes give; write them as alpha, c, d with c = (cd_sum +
+  // cd_diff) / 2, d = (cd_sum - cd_diff) / 2, alpha = cross + c.
+  const double c = 0.5 * (cd_sum + cd_diff), d = 0.5 * (cd_sum - cd_diff);
+  law_functions_from_moments({-p1.Fx, a, b, cross + c, c, d}, sigma, load_, g);
+}
+
+FallingSampler::FallingSampler(const ExactModel<double>& model, double delta, double largest_q)
+    : unit_(unit_model(model)), delta_(delta), load_(unit_.load_area) {
+  options_.largest_q = largest_q;
+}
+
+const FallingSampler::Rule& FallingSampler::rule_at(double t) {
+  auto it = cache_.find(t);
+  if (it != cache_.end()) return it->second;
+  const SlipSpeedMeasure m = slip_speed_measure(unit_, t, options_);
+  std::vector<std::size_t> order(m.nu.size());
+  std::iota(order.begin(), order.end(), 0);
+  std::sort(order.begin(), order.end(), [&](auto i, auto j) { return m.nu[i] < m.nu[j]; });
+  Rule r;
+  for (std::size_t i : order) {
+    r.mu.push_back(std::pow(m.nu[i], delta_));
+    r.weight.push_back(m.weight[i]);
+  }
+  return cache_.emplace(t, std::move(r)).first->second;
+}
+
+// At t = -1 (v = 0) with G(rho) = exp(-z rho^delta) (the weight at |vc| = omega rho, unit
+// speed), the first-order turn of the slip direction and of |vc| about r_c = (0, eps) gives
+//   A / sigma -> pi int p G (1 - delta z rho^delta),   a -> pi int p G rho^2,
+//   (alpha - c) / sigma = (c + d) / sigma -> pi/2 int p rho^2 G (1 - delta z rho^delta),
+//   (c - d) / sigma -> pi delta z int p rho^(2 + delta) G,   (a + b) / sigma -> 0
+// (integrals d rho over [0, 1]; z = 0 gives the constant-friction limits).
+void FallingSampler::spin_limits(double z, double* g) const {
+  // Panels graded towards rho = 0 (the layer of G for large z, and rho^delta).
+  const double d = delta_, layer = 1e-6 * std::min(1.0, std::pow(std::max(z, 1e-300), -1.0 / d));
+  auto G = [&](double r) { return std::exp(-z * std::pow(r, d)); };
+  const double slide = profile_integral(
+      unit_, [&](double r) { return G(r) * (1.0 - d * z * std::pow(r, d)); }, layer);
+  const double spin = profile_integral(
+      unit_, [&](double r) { return G(r) * r * r; }, layer);
+  const double shift = profile_integral(
+      unit_, [&](double r) { return r * r * G(r) * (1.0 - d * z * std::pow(r, d)); }, layer);
+  const double diff = profile_integral(
+      unit_, [&](double r) { return std::pow(r, 2.0 + d) * G(r); }, layer);
+  g[kLawSlide] = kPi * slide / load_;
+  g[kLawSpin] = kPi * spin / load_;
+  g[kLawSpinSum] = 0.0;
+  g[kLawShiftCross] = g[kLawShiftSum] = 0.5 * kPi * shift / load_;
+  g[kLawShiftDiff] = kPi * d * z * diff / load_;
+}
+
+void FallingSampler::operator()(double t, const std::vector<double>& zs, double* out) {
+  if (t <= -1.0) {
+    for (std::size_t k = 0; k < zs.size(); ++k) spin_limits(zs[k], out + 6 * k);
+    return;
+  }
+  const Rule& r = rule_at(t);
+  const double sigma = 0.5 * (1.0 + t);
+  for (std::size_t k = 0; k < zs.size(); ++k) {
+    SlipMoments sum{};
+    for (std::size_t i = 0; i < r.mu.size(); ++i) {
+      const double x = zs[k] * r.mu[i];
+      if (x > 46.0) break;  // exp(-46) < 1e-20; mu increases
+      const double e = std::exp(-x);
+      for (int c = 0; c < 6; ++c) sum[c] += r.weight[i][c] * e;
+    }
+    law_functions_from_moments(sum, sigma, load_, out + 6 * k);
+  }
+}
+
+}  // namespace contensou::detail

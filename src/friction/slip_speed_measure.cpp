@@ -1,0 +1,246 @@
+// The slip-speed quadrature of a patch (slip_speed_measure.hpp).
+#include "contensou/friction/slip_speed_measure.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+
+#include "contensou/friction/adaptive_integration.hpp"
+#include "contensou/friction/quadrature.hpp"
+
+namespace contensou {
+
+namespace {
+
+constexpr double kPi = std::numbers::pi;
+constexpr int kRingCapacity = 640;
+
+// The profile at n points t (with its Hertz edge).
+void profile_at(const ExactModel<double>& m, const double* t, int n, double* p) {
+  detail::profile_batch(m, t, n, m.chebyshev.size(), p);
+  if (m.sqrt_edge)
+    for (int i = 0; i < n; ++i) p[i] *= std::sqrt(std::max(0.0, 1.0 - t[i]));
+}
+
+// The six ring weights at a point of the half ring with cos(phi) = c, sin^2(phi) = s2 and
+// y = eps - s cos(phi), times w: cos(phi), s sin^2(phi), y cos(phi), s^2 sin^2(phi) cos(phi),
+// s y sin^2(phi), y^2 cos(phi) (slip_speed_measure.hpp).
+void add_ring_point(double w, double c, double s2, double y, double s, SlipMoments& out) {
+  out[0] += w * c;
+  out[1] += w * s * s2;
+  out[2] += w * y * c;
+  out[3] += w * s * s * s2 * c;
+  out[4] += w * s * y * s2;
+  out[5] += w * y * y * c;
+}
+
+// The half ring of a table in the variable t = |r|^2 = C - D cos(phi) (C = s^2 + eps^2,
+// D = 2 eps s), broken at the knots, where the profile is a cubic: d phi = dt / sqrt((t - t_min)
+// (t_max - t)), t_min = (s - eps)^2, t_max = (s + eps)^2; the square roots at t_min (and at
+// t_max for a ring inside the disk) are removed by t = t_min + w u^2 on the end pieces.
+SlipMoments half_ring_table(const ExactModel<double>& m, double s, double eps,
+                            const GaussLegendreRule& g) {
+  const double t_min = (s - eps) * (s - eps), t_max = (s + eps) * (s + eps);
+  const double t_end = std::min(1.0, t_max), D = 2.0 * eps * s;
+  std::vector<double> cuts{t_min};
+  const auto first = std::upper_bound(m.knot.begin(), m.knot.end(), t_min);
+  for (auto it = first; it != m.knot.end() && *it < t_end; ++it) cuts.push_back(*it);
+  cuts.push_back(t_end);
+  SlipMoments out{};
+  const int n = static_cast<int>(g.nodes.size());
+  std::vector<double> tt(n), ww(n), pp(n), lo(n), hi(n);
+  for (std::size_t j = 0; j + 1 < cuts.size(); ++j) {
+    const double a = cuts[j], b = cuts[j + 1];
+    if (!(b > a)) continue;
+    const bool whole = j == 0 && j + 2 == cuts.size() && t_end == t_max;
+    // v = sqrt(t - t_min) on the lower half of the ring's range, sqrt(t_max - t) on the upper
+    // half: dt / sqrt(t - t_min) = 2 dv, no square root left near either end.
+    const bool lower = (a - t_min) <= (t_max - b);
+    const double va = lower ? std::sqrt(a - t_min) : std::sqrt(t_max - b);
+    const double vb = lower ? std::sqrt(b - t_min) : std::sqrt(t_max - a);
+    for (int i = 0; i < n; ++i) {
+      const double u = 0.5 * (1.0 + g.nodes[i]);
+      if (whole) {  // one piece from t_min to t_max: t = C - D cos(phi), dt / root = d phi
+        const double phi = std::numbers::pi * u, h = std::sin(0.5 * phi);
+        lo[i] = (t_max - t_min) * h * h;
+        hi[i] = (t_max - t_min) - lo[i];
+        ww[i] = 0.5 * g.weights[i] * std::numbers::pi * std::sqrt(lo[i] * hi[i]);
+      } else {
+        const double v = va + (vb - va) * u;
+        lo[i] = lower ? v * v : (t_max - t_min) - v * v;
+        hi[i] = lower ? (t_max - t_min) - v * v : v * v;
+        ww[i] = 0.5 * g.weights[i] * (vb - va) * 2.0 * v;  // dt = 2 v dv
+      }
+      tt[i] = std::clamp(t_min + lo[i], a, b);
+    }
+    profile_at(m, tt.data(), n, pp.data());
+    for (int i = 0; i < n; ++i) {
+      const double s2 = lo[i] * hi[i] / (D * D);  // sin^2(phi)
+      const double c = 1.0 - lo[i] / D;           // cos(phi) = (C - t) / D
+      const double root = std::sqrt(lo[i] * hi[i]);
+      if (!(root > 0.0)) continue;
+      // y = eps - s cos(phi) = (eps - s) + s (1 - cos(phi)), 1 - cos(phi) = (t - t_min) / D.
+      add_ring_point(ww[i] * pp[i] / root, c, s2, (eps - s) + s * lo[i] / D, s, out);
+    }
+  }
+  return out;
+}
+
+// m_i(s) / (2 s): the half-ring integral over phi = beta + pi/2 in [0, theta_w] of p(|r|^2)
+// times the ring weights (add_ring_point), with |r|^2 = (s - eps)^2 + 4 eps s sin^2(phi/2) and
+// y = (eps - s) + 2 s sin^2(phi/2) (no cancellation for a far centre). A table whose knots the
+// ring crosses goes to half_ring_table.
+SlipMoments half_ring(const ExactModel<double>& m, double s, double eps, double tol,
+                      const GaussLegendreRule& g) {
+  const double dsq = (s - eps) * (s - eps);
+  SlipMoments out{};
+  if (!(dsq < 1.0)) return out;
+  const double four_es = 4.0 * eps * s;
+  if (!(four_es > 0.0)) {  // a ring about O: |r| = s (only a and b survive)
+    double t = s * s, p = 0.0;
+    profile_at(m, &t, 1, &p);
+    out[1] = p * s * 0.5 * kPi;
+    out[2] = -p * s * 0.5 * kPi;
+    return out;
+  }
+  if (!m.piece.empty() && four_es > 1e-6) {
+    const double t_end = std::min(1.0, (s + eps) * (s + eps));
+    const auto it = std::upper_bound(m.knot.begin(), m.knot.end(), dsq);
+    if (it != m.knot.end() && *it < t_end) return half_ring_table(m, s, eps, g);
+  }
+  // Arc end: |r|^2 = 1 at sin^2(theta_w / 2) = (1 - dsq) / (4 eps s).
+  const double theta_w =
+      four_es <= 1.0 - dsq ? kPi : 2.0 * std::asin(std::sqrt((1.0 - dsq) / four_es));
+  const bool edge = m.sqrt_edge && theta_w < kPi;  // sqrt(1 - |r|^2) at the arc end
+  auto f = [&](const double* x, int n, int, detail::Sample<double, 6>* values) {
+    double tr[detail::kKronrodPoints], p[detail::kKronrodPoints], phi[detail::kKronrodPoints],
+        jac[detail::kKronrodPoints];
+    for (int i = 0; i < n; ++i) {
+      // phi = theta_w sin(psi) removes the square root of a Hertz edge at the arc end.
+      phi[i] = edge ? theta_w * std::sin(x[i]) : x[i];
+      jac[i] = edge ? theta_w * std::cos(x[i]) : 1.0;
+      const double h = std::sin(0.5 * phi[i]);
+      tr[i] = std::min(1.0, dsq + four_es * h * h);
+    }
+    profile_at(m, tr, n, p);
+    for (int i = 0; i < n; ++i) {
+      const double h = std::sin(0.5 * phi[i]), sn = std::sin(phi[i]);
+      SlipMoments v{};
+      add_ring_point(p[i] * jac[i], std::cos(phi[i]), sn * sn, (eps - s) + 2.0 * s * h * h, s, v);
+      values[i].value = v;
+    }
+  };
+  const detail::TaggedInterval whole{0.0, edge ? 0.5 * kPi : theta_w, 0};
+  const std::array<double, 6> t6{tol, tol, tol, tol, tol, tol};
+  return detail::integrate_adaptive_batch<double, 6, kRingCapacity, detail::kGK21>(f, &whole, 1, t6)
+      .value;
+}
+
+struct Panel {
+  double a, b;
+  int squeeze;  // -1: nu = a + w u^2 (towards a), +1: nu = b - w u^2 (towards b), 0: plain
+};
+
+// Panels on [a, b] graded by halving towards a down to width min_a (and towards b down to
+// min_b); the innermost panels squeeze their rule towards the end point.
+void graded_panels(double a, double b, double min_a, double min_b, std::vector<Panel>& out) {
+  if (!(b > a)) return;
+  const double mid = 0.5 * (a + b);
+  std::vector<double> left{mid}, right{mid};
+  for (double h = 0.5 * (mid - a); h > min_a && left.size() < 60; h *= 0.5) left.push_back(a + h);
+  for (double h = 0.5 * (b - mid); h > min_b && right.size() < 60; h *= 0.5) right.push_back(b - h);
+  std::vector<double> pts{a};
+  for (std::size_t i = left.size(); i-- > 0;) pts.push_back(left[i]);
+  for (std::size_t i = 1; i < right.size(); ++i) pts.push_back(right[i]);
+  pts.push_back(b);
+  for (std::size_t i = 0; i + 1 < pts.size(); ++i) {
+    const int squeeze = i == 0 ? -1 : (i + 2 == pts.size() ? 1 : 0);
+    if (pts[i + 1] > pts[i]) out.push_back({pts[i], pts[i + 1], squeeze});
+  }
+}
+
+// The panels split at the given points (a split panel keeps its squeeze on its outer end only).
+std::vector<Panel> split_panels(const std::vector<Panel>& panels, std::vector<double> cuts) {
+  std::sort(cuts.begin(), cuts.end());
+  std::vector<Panel> out;
+  for (const Panel& p : panels) {
+    auto lo = std::upper_bound(cuts.begin(), cuts.end(), p.a);
+    auto hi = std::lower_bound(cuts.begin(), cuts.end(), p.b);
+    double a = p.a;
+    for (auto it = lo; it != hi; ++it) {
+      if (*it - a < 1e-12 * (p.b - p.a)) continue;
+      out.push_back({a, *it, a == p.a && p.squeeze < 0 ? -1 : 0});
+      a = *it;
+    }
+    out.push_back({a, p.b, a == p.a ? p.squeeze : (p.squeeze > 0 ? 1 : 0)});
+  }
+  return out;
+}
+
+}  // namespace
+
+SlipSpeedMeasure slip_speed_measure(const ExactModel<double>& model, double t,
+                                    const SlipSpeedMeasureOptions& o) {
+  SlipSpeedMeasure out;
+  const double sigma = 0.5 * (1.0 + t), eta = 0.5 * (1.0 - t);
+  const double load = model.load_area / (model.radius * model.radius);
+  if (!(eta > 0.0)) {  // pure sliding: u_hat = x everywhere, |vc| = |v|
+    // A = integral p = L, alpha = d = integral p x^2 = L A^3 / (2 A^1); a = b = c = 0.
+    const auto A = detail::representation_moments(model);
+    const double second = kPi * value_of(A[1]);
+    out.nu.push_back(1.0);
+    out.weight.push_back({load, 0.0, 0.0, second, 0.0, second});
+    return out;
+  }
+  const double eps = sigma / eta;
+  const double layer = 1e-3 / o.largest_q;  // panels this narrow at the smallest slip speed
+  // Structural points (nu = 0 or t, |t|, 1) with their grading, then the knot tangencies of a
+  // table (nu = eta |rho_k - eps| and eta (rho_k + eps), where m(s) is only C2).
+  std::vector<Panel> panels;
+  if (t < 0.0) {  // centre inside: nu from 0; the ring touches the rim from inside at -t
+    graded_panels(0.0, -t, layer, 1e-3 * (-t), panels);
+    graded_panels(-t, 1.0, 1e-3 * (1.0 + t), 1e-3 * (1.0 + t), panels);
+  } else {  // centre on or outside the rim: nu from t (the ring touches the rim from outside)
+    graded_panels(t, 1.0, layer, 1e-3 * (1.0 - t), panels);
+  }
+  if (!model.piece.empty()) {
+    std::vector<double> cuts;
+    for (std::size_t k = 1; k + 1 < model.knot.size(); ++k) {
+      const double rho = std::sqrt(model.knot[k]);
+      cuts.push_back(eta * std::abs(rho - eps));
+      cuts.push_back(eta * (rho + eps));
+    }
+    panels = split_panels(panels, cuts);
+  }
+  const GaussLegendreRule g = gauss_legendre(o.nodes);
+  const GaussLegendreRule ring_rule = gauss_legendre(o.ring_nodes);
+  const double tol = o.ring_tolerance * load;
+  for (const Panel& p : panels) {
+    const double w = p.b - p.a;
+    for (std::size_t i = 0; i < g.nodes.size(); ++i) {
+      const double u = 0.5 * (1.0 + g.nodes[i]);
+      double nu, dnu;
+      if (p.squeeze < 0) {
+        nu = p.a + w * u * u;
+        dnu = 2.0 * w * u;
+      } else if (p.squeeze > 0) {
+        nu = p.b - w * u * u;
+        dnu = 2.0 * w * u;
+      } else {
+        nu = p.a + w * u;
+        dnu = w;
+      }
+      const double s = nu / eta;
+      const SlipMoments ring = half_ring(model, s, eps, tol, ring_rule);
+      // W = integral G(nu) 2 s ring(s) ds, ds = d nu / eta.
+      const double weight = 0.5 * g.weights[i] * dnu * 2.0 * s / eta;
+      SlipMoments wk;
+      for (int c = 0; c < 6; ++c) wk[c] = weight * ring[c];
+      out.nu.push_back(nu);
+      out.weight.push_back(wk);
+    }
+  }
+  return out;
+}
+
+}  // namespace contensou
