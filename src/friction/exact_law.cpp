@@ -7,6 +7,7 @@
 
 #include "contensou/friction/forward_derivative.hpp"
 #include "exact_law_sampling.hpp"
+#include "parallel_for.hpp"
 
 namespace contensou {
 
@@ -51,11 +52,35 @@ void values_to_z_coefficients(PiecewiseChebyshev& table) {
   }
 }
 
-// The table of the falling part (exact_law.hpp, SlipSpeedTable): octave by octave of 1 + z, an
-// adaptive table in t whose functions are the Chebyshev coefficients in z of the six functions
-// at the octave's Lobatto points; the z-interpolation is checked at the points between them at
-// every sampled t. Octaves are added until the functions at the top of the last one are below a
-// half the tolerance at a set of t (beyond it they are taken as 0: the tail).
+// The largest |value| of the z-interpolation error of one function at the NZ points between its
+// Lobatto points, from its values v[k * stride] at all 2 NZ + 1 points (Lobatto points first).
+double z_interpolation_error(const double* v, int stride) {
+  constexpr int NZ = kSlipDegreeZ;
+  double c[NZ + 1], worst = 0.0;
+  lobatto_to_chebyshev(NZ, v, stride, c);
+  for (int k = 0; k < NZ; ++k) {
+    const double x = std::cos(std::numbers::pi * (k + 0.5) / NZ);
+    double s = c[0] + c[1] * x, tp = 1.0, tc = x;
+    for (int m = 2; m <= NZ; ++m) {
+      const double tn = 2.0 * x * tc - tp;
+      s += c[m] * tn;
+      tp = tc;
+      tc = tn;
+    }
+    worst = std::max(worst, std::abs(s - v[(NZ + 1 + k) * stride]));
+  }
+  return worst;
+}
+
+// The table of the falling part (exact_law.hpp, SlipSpeedTable). Pieces of 1 + z are added until
+// the functions at the top of the last one are below half the tolerance at a set of t (beyond
+// it they are taken as 0: the tail). Then one adaptive build in t for all pieces at once (one
+// slip-speed quadrature a sampled t, on `threads` threads): its functions are the six functions'
+// values at every piece's Lobatto points in z, checked between the t nodes; at every sampled t
+// the z-interpolation is checked at the points between the z nodes. Finally each piece's values
+// become Chebyshev coefficients in z.
+constexpr int kMaxFallingPieces = 128;
+
 struct FallingBuild {
   SlipSpeedTable table;
   double achieved = 0.0;  // largest error found (t-interpolation, z-interpolation, tail)
@@ -63,70 +88,87 @@ struct FallingBuild {
   int samples = 0;
 };
 
-FallingBuild build_falling(const ExactModel<double>& model, double delta, double tolerance,
-                           const PiecewiseChebyshevOptions& base) {
-  constexpr int NZ = kSlipDegreeZ, M = kLawFunctions * (NZ + 1);
-  constexpr int kMaxOctaves = 40;
-  const double largest_q = 1e6;
-  detail::FallingSampler sampler(model, delta, largest_q);
-  FallingBuild out;
-  out.table.exponent = delta;
-  // Octaves: until |functions| < tolerance / 10 at the top z = 2^J - 1 (and q <= largest_q).
-  constexpr int W = kSlipOctaves;
-  auto top_z = [&](int pieces) { return std::ldexp(1.0, pieces * W) - 1.0; };
-  int J = 1;
+int falling_pieces(const ExactModel<double>& unit, double delta,
+                   const SlipSpeedMeasureOptions& measure, double tolerance, unsigned threads) {
+  constexpr int W = kSlipOctaves, kMaxPieces = 40 / W;
   const std::vector<double> probe_t{-1.0, -0.9, -0.5, -0.1, -1e-3, 0.0, 1e-3, 0.1, 0.5, 0.99};
-  for (; J < kMaxOctaves / W && std::pow(top_z(J), 1.0 / delta) < largest_q; ++J) {
-    double top = 0.0, g[kLawFunctions];
-    for (double t : probe_t) {
-      sampler(t, {top_z(J)}, g);
-      for (double v : g) top = std::max(top, std::abs(v));
-    }
-    if (top < 0.5 * tolerance) break;
+  std::vector<double> zs;
+  for (int J = 1; J <= kMaxPieces; ++J) zs.push_back(std::ldexp(1.0, J * W) - 1.0);
+  std::vector<double> top(probe_t.size() * zs.size() * kLawFunctions);
+  detail::parallel_for(probe_t.size(), threads, [&](std::size_t i) {
+    detail::falling_functions(unit, delta, measure, probe_t[i], zs,
+                              top.data() + i * zs.size() * kLawFunctions);
+  });
+  for (int J = 1; J <= kMaxPieces; ++J) {
+    if (std::pow(zs[J - 1], 1.0 / delta) >= measure.largest_q) return J;
+    double worst = 0.0;
+    for (std::size_t i = 0; i < probe_t.size(); ++i)
+      for (int c = 0; c < kLawFunctions; ++c)
+        worst = std::max(worst, std::abs(top[(i * zs.size() + J - 1) * kLawFunctions + c]));
+    if (worst < 0.5 * tolerance) return J;
   }
-  double z_error = 0.0, tail = 0.0;
+  return kMaxPieces;
+}
+
+FallingBuild build_falling(const ExactModel<double>& model, double delta, double tolerance,
+                           const PiecewiseChebyshevOptions& base, unsigned threads) {
+  constexpr int NZ = kSlipDegreeZ, M = kLawFunctions * (NZ + 1);
+  const ExactModel<double> unit = detail::unit_model(model);
+  SlipSpeedMeasureOptions measure;
+  measure.largest_q = 1e6;
+  const int J = falling_pieces(unit, delta, measure, tolerance, threads);
+  // Per piece: its NZ + 1 Lobatto points in z, then the NZ points between them.
+  std::vector<double> zs;
   for (int j = 0; j < J; ++j) {
-    std::vector<double> zs;  // Lobatto points of the octave, then the points between them
     for (int k = 0; k <= NZ; ++k)
       zs.push_back(detail::octave_point(j, std::cos(std::numbers::pi * k / NZ)) - 1.0);
     for (int k = 0; k < NZ; ++k)
       zs.push_back(detail::octave_point(j, std::cos(std::numbers::pi * (k + 0.5) / NZ)) - 1.0);
-    // The table in t holds the values at the z points (their interpolation error is checked
-    // directly); afterwards each block of values becomes Chebyshev coefficients in z.
-    auto sample = [&](double t, double* values) {
-      std::vector<double> v(6 * zs.size());
-      sampler(t, zs, v.data());
-      std::copy(v.begin(), v.begin() + M, values);
-      for (int i = 0; i < kLawFunctions; ++i) {
-        double c[NZ + 1];
-        lobatto_to_chebyshev(NZ, v.data() + i, kLawFunctions, c);
-        for (int k = 0; k < NZ; ++k) {  // the z-interpolation between the points
-          const double x = std::cos(std::numbers::pi * (k + 0.5) / NZ);
-          double s = c[0] + c[1] * x, tp = 1.0, tc = x;
-          for (int m = 2; m <= NZ; ++m) {
-            const double tn = 2.0 * x * tc - tp;
-            s += c[m] * tn;
-            tp = tc;
-            tc = tn;
-          }
-          z_error = std::max(z_error, std::abs(s - v[(NZ + 1 + k) * kLawFunctions + i]));
-        }
-        if (j == J - 1) tail = std::max(tail, std::abs(v[i]));  // z at the top (x = 1)
-      }
-    };
-    PiecewiseChebyshevOptions o = base;
-    o.tolerance = base.tolerance / 3.0;  // the Lebesgue constant of the z points is below 3
-    o.breaks = graded_breaks(2);
-    PiecewiseChebyshevBuild b = build_piecewise_chebyshev(M, sample, o);
-    values_to_z_coefficients(b.table);
-    out.table.octaves.push_back(b.table);
-    out.achieved = std::max(out.achieved, 3.0 * b.achieved);
-    out.reached = out.reached && b.reached;
-    out.samples += b.samples;
   }
+  const std::size_t per_t = zs.size() * kLawFunctions;
+  double z_error = 0.0, tail = 0.0;
+  auto sample = [&](const std::vector<double>& ts, double* values) {
+    std::vector<double> all(ts.size() * per_t);
+    detail::parallel_for(ts.size(), threads, [&](std::size_t i) {
+      detail::falling_functions(unit, delta, measure, ts[i], zs, all.data() + i * per_t);
+    });
+    for (std::size_t i = 0; i < ts.size(); ++i) {
+      const double* v = all.data() + i * per_t;
+      for (int j = 0; j < J; ++j) {
+        const double* piece = v + j * (2 * NZ + 1) * kLawFunctions;
+        std::copy(piece, piece + M, values + (i * J + j) * M);
+        for (int c = 0; c < kLawFunctions; ++c) {
+          z_error = std::max(z_error, z_interpolation_error(piece + c, kLawFunctions));
+          if (j == J - 1) tail = std::max(tail, std::abs(piece[c]));  // the top: x = 1
+        }
+      }
+    }
+  };
+  PiecewiseChebyshevOptions o = base;
+  o.tolerance = tolerance / 3.0;  // the Lebesgue constant of the z points is below 3
+  // A table's profile makes the falling part wiggle at large q where the centre of sliding
+  // crosses its knots (jumps of p''): there the build stops at a bounded number of pieces and
+  // reports what it reached.
+  o.max_pieces = kMaxFallingPieces;
+  const PiecewiseChebyshevBuild b = build_piecewise_chebyshev_batch(J * M, sample, o);
+  FallingBuild out;
+  out.table.exponent = delta;
   out.table.tail = tail;
-  out.achieved = std::max({out.achieved, z_error, tail});
-  out.reached = out.reached && out.achieved <= base.tolerance * 2.0;
+  for (int j = 0; j < J; ++j) {  // the functions of piece j, values -> coefficients in z
+    PiecewiseChebyshev t;
+    t.functions = M;
+    t.degree = b.table.degree;
+    t.breaks = b.table.breaks;
+    for (std::size_t row = 0; row < b.table.coefficients.size(); row += J * M)
+      t.coefficients.insert(t.coefficients.end(), b.table.coefficients.begin() + row + j * M,
+                            b.table.coefficients.begin() + row + (j + 1) * M);
+    values_to_z_coefficients(t);
+    index_pieces(t);
+    out.table.octaves.push_back(std::move(t));
+  }
+  out.achieved = std::max({3.0 * b.achieved, z_error, tail});
+  out.reached = b.reached && out.achieved <= 2.0 * tolerance;
+  out.samples = b.samples;
   return out;
 }
 
@@ -156,14 +198,19 @@ ExactLaw make_exact_law(const ExactModel<double>& model, const ExactLawOptions& 
   double unit[kLawFunctions];
   std::fill(unit, unit + kLawFunctions, 1.0);
   const double per_function = options.tolerance / resultant_error_bound(unit, model.kappa, k);
-  detail::ConstantSampler sampler(model, std::min(1e-3 * per_function, 1e-11));
+  const detail::ConstantSampler sampler(model, std::min(1e-3 * per_function, 1e-11));
   law.load_area = sampler.load();
   PiecewiseChebyshevOptions o;
   o.degree = options.degree;
   o.tolerance = 0.5 * per_function;
   o.breaks = graded_breaks(6);
-  const PiecewiseChebyshevBuild b = build_piecewise_chebyshev(
-      kLawFunctions, [&](double t, double* g) { sampler(t, g); }, o);
+  const PiecewiseChebyshevBuild b = build_piecewise_chebyshev_batch(
+      kLawFunctions,
+      [&](const std::vector<double>& ts, double* g) {
+        detail::parallel_for(ts.size(), options.threads,
+                             [&](std::size_t i) { sampler(ts[i], g + i * kLawFunctions); });
+      },
+      o);
   law.table = b.table;
   double err[kLawFunctions];
   std::fill(err, err + kLawFunctions, b.achieved + 1e-3 * per_function);
@@ -183,7 +230,7 @@ ExactLaw make_exact_law(const ExactModel<double>& model, const ExactLawOptions& 
       PiecewiseChebyshevOptions of = o;
       of.degree = options.falling_degree;
       const double budget = std::min(0.5 * per_function * fs / fall, 1e-3);
-      const FallingBuild fb = build_falling(model, f.exponent, budget, of);
+      const FallingBuild fb = build_falling(model, f.exponent, budget, of, options.threads);
       law.falling = fb.table;
       std::fill(err, err + kLawFunctions, fb.achieved);
       law.achieved = (f.kinetic_coefficient * law.achieved +

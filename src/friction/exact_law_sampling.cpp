@@ -77,7 +77,7 @@ void law_functions_from_moments(const SlipMoments& raw, double sigma, double loa
 //   P5 kappa = 2, k = e = 45 deg:   Mz = -(3a - 3/2 (a + b)) - 1/2 (alpha - c)
 // At t = -1 the limits of exact_law.hpp (moments A^0, A^1, A^2 of the representation).
 ConstantSampler::ConstantSampler(const ExactModel<double>& model, double tolerance)
-    : unit_(unit_model(model)), tol_(tolerance), load_(unit_.load_area) {
+    : unit_(unit_model(model)), tol_(tolerance) {
   const double A0 = profile_integral(unit_, [](double) { return 1.0; });
   const double A1 = profile_integral(unit_, [](double r) { return r; });
   const double A2 = profile_integral(unit_, [](double r) { return r * r; });
@@ -86,14 +86,16 @@ ConstantSampler::ConstantSampler(const ExactModel<double>& model, double toleran
 }
 
 Resultants<double> ConstantSampler::probe(double kappa, double kx, double ky,
-                                          const Kinematics<double>& k) {
-  unit_.kappa = kappa;
-  unit_.kx = kx;
-  unit_.ky = ky;
-  return exact_resultants(unit_, k, {tol_}).resultants;
+                                          const Kinematics<double>& k) const {
+  // The model's coefficients are shared read-only (promote copies them for a new scalar only).
+  ExactModel<double> m = unit_;
+  m.kappa = kappa;
+  m.kx = kx;
+  m.ky = ky;
+  return exact_resultants(m, k, {tol_}).resultants;
 }
 
-void ConstantSampler::operator()(double t, double* g) {
+void ConstantSampler::operator()(double t, double* g) const {
   const double sigma = 0.5 * (1.0 + t), eta = 0.5 * (1.0 - t), h = std::sqrt(0.5);
   const Resultants<double> p1 = probe(1.0, 0.0, 0.0, {sigma, 0.0, eta});
   const double Mz2 = probe(2.0, 0.0, 0.0, {sigma, 0.0, eta}).Mz;
@@ -105,7 +107,7 @@ void ConstantSampler::operator()(double t, double* g) {
   const double cd_sum = -2.0 * (Mz4 - Mz2) - 3.0 * cd_diff;
   const double cross = -2.0 * Mz5 - 6.0 * a + 3.0 * (a + b);
   if (sigma == 0.0) {  // pure spin: the limits (exact_law.hpp)
-    g[kLawSpin] = a / load_;
+    g[kLawSpin] = a / unit_.load_area;
     g[kLawSlide] = slide_limit_;
     g[kLawShiftCross] = g[kLawShiftSum] = shift_limit_;
     g[kLawSpinSum] = g[kLawShiftDiff] = 0.0;
@@ -114,28 +116,10 @@ void ConstantSampler::operator()(double t, double* g) {
   // alpha - c and c + d are what the probes give; write them as alpha, c, d with c = (cd_sum +
   // cd_diff) / 2, d = (cd_sum - cd_diff) / 2, alpha = cross + c.
   const double c = 0.5 * (cd_sum + cd_diff), d = 0.5 * (cd_sum - cd_diff);
-  law_functions_from_moments({-p1.Fx, a, b, cross + c, c, d}, sigma, load_, g);
+  law_functions_from_moments({-p1.Fx, a, b, cross + c, c, d}, sigma, unit_.load_area, g);
 }
 
-FallingSampler::FallingSampler(const ExactModel<double>& model, double delta, double largest_q)
-    : unit_(unit_model(model)), delta_(delta), load_(unit_.load_area) {
-  options_.largest_q = largest_q;
-}
-
-const FallingSampler::Rule& FallingSampler::rule_at(double t) {
-  auto it = cache_.find(t);
-  if (it != cache_.end()) return it->second;
-  const SlipSpeedMeasure m = slip_speed_measure(unit_, t, options_);
-  std::vector<std::size_t> order(m.nu.size());
-  std::iota(order.begin(), order.end(), 0);
-  std::sort(order.begin(), order.end(), [&](auto i, auto j) { return m.nu[i] < m.nu[j]; });
-  Rule r;
-  for (std::size_t i : order) {
-    r.mu.push_back(std::pow(m.nu[i], delta_));
-    r.weight.push_back(m.weight[i]);
-  }
-  return cache_.emplace(t, std::move(r)).first->second;
-}
+namespace {
 
 // At t = -1 (v = 0) with G(rho) = exp(-z rho^delta) (the weight at |vc| = omega rho, unit
 // speed), the first-order turn of the slip direction and of |vc| about r_c = (0, eps) gives
@@ -143,41 +127,54 @@ const FallingSampler::Rule& FallingSampler::rule_at(double t) {
 //   (alpha - c) / sigma = (c + d) / sigma -> pi/2 int p rho^2 G (1 - delta z rho^delta),
 //   (c - d) / sigma -> pi delta z int p rho^(2 + delta) G,   (a + b) / sigma -> 0
 // (integrals d rho over [0, 1]; z = 0 gives the constant-friction limits).
-void FallingSampler::spin_limits(double z, double* g) const {
+void spin_limits(const ExactModel<double>& unit, double d, double z, double* g) {
   // Panels graded towards rho = 0 (the layer of G for large z, and rho^delta).
-  const double d = delta_, layer = 1e-6 * std::min(1.0, std::pow(std::max(z, 1e-300), -1.0 / d));
+  const double layer = 1e-6 * std::min(1.0, std::pow(std::max(z, 1e-300), -1.0 / d));
   auto G = [&](double r) { return std::exp(-z * std::pow(r, d)); };
+  auto slope = [&](double r) { return 1.0 - d * z * std::pow(r, d); };
   const double slide = profile_integral(
-      unit_, [&](double r) { return G(r) * (1.0 - d * z * std::pow(r, d)); }, layer);
+      unit, [&](double r) { return G(r) * slope(r); }, layer);
   const double spin = profile_integral(
-      unit_, [&](double r) { return G(r) * r * r; }, layer);
+      unit, [&](double r) { return G(r) * r * r; }, layer);
   const double shift = profile_integral(
-      unit_, [&](double r) { return r * r * G(r) * (1.0 - d * z * std::pow(r, d)); }, layer);
+      unit, [&](double r) { return r * r * G(r) * slope(r); }, layer);
   const double diff = profile_integral(
-      unit_, [&](double r) { return std::pow(r, 2.0 + d) * G(r); }, layer);
-  g[kLawSlide] = kPi * slide / load_;
-  g[kLawSpin] = kPi * spin / load_;
+      unit, [&](double r) { return std::pow(r, 2.0 + d) * G(r); }, layer);
+  const double L = unit.load_area;
+  g[kLawSlide] = kPi * slide / L;
+  g[kLawSpin] = kPi * spin / L;
   g[kLawSpinSum] = 0.0;
-  g[kLawShiftCross] = g[kLawShiftSum] = 0.5 * kPi * shift / load_;
-  g[kLawShiftDiff] = kPi * d * z * diff / load_;
+  g[kLawShiftCross] = g[kLawShiftSum] = 0.5 * kPi * shift / L;
+  g[kLawShiftDiff] = kPi * d * z * diff / L;
 }
 
-void FallingSampler::operator()(double t, const std::vector<double>& zs, double* out) {
+}  // namespace
+
+void falling_functions(const ExactModel<double>& unit, double delta,
+                       const SlipSpeedMeasureOptions& options, double t,
+                       const std::vector<double>& zs, double* out) {
   if (t <= -1.0) {
-    for (std::size_t k = 0; k < zs.size(); ++k) spin_limits(zs[k], out + 6 * k);
+    for (std::size_t k = 0; k < zs.size(); ++k) spin_limits(unit, delta, zs[k], out + 6 * k);
     return;
   }
-  const Rule& r = rule_at(t);
+  const SlipSpeedMeasure m = slip_speed_measure(unit, t, options);
+  // nu^delta in increasing order, so that the sums stop where exp(-z nu^delta) < 1e-20.
+  std::vector<std::size_t> order(m.nu.size());
+  std::iota(order.begin(), order.end(), 0);
+  std::sort(order.begin(), order.end(), [&](auto i, auto j) { return m.nu[i] < m.nu[j]; });
+  std::vector<double> mu(order.size());
+  for (std::size_t i = 0; i < order.size(); ++i) mu[i] = std::pow(m.nu[order[i]], delta);
   const double sigma = 0.5 * (1.0 + t);
   for (std::size_t k = 0; k < zs.size(); ++k) {
     SlipMoments sum{};
-    for (std::size_t i = 0; i < r.mu.size(); ++i) {
-      const double x = zs[k] * r.mu[i];
-      if (x > 46.0) break;  // exp(-46) < 1e-20; mu increases
+    for (std::size_t i = 0; i < order.size(); ++i) {
+      const double x = zs[k] * mu[i];
+      if (x > 46.0) break;
       const double e = std::exp(-x);
-      for (int c = 0; c < 6; ++c) sum[c] += r.weight[i][c] * e;
+      const SlipMoments& w = m.weight[order[i]];
+      for (int c = 0; c < 6; ++c) sum[c] += w[c] * e;
     }
-    law_functions_from_moments(sum, sigma, load_, out + 6 * k);
+    law_functions_from_moments(sum, sigma, unit.load_area, out + 6 * k);
   }
 }
 

@@ -47,27 +47,32 @@ double clenshaw(const double* c, int n, double x) {
 
 class Builder {
  public:
-  Builder(int m, const ChebyshevSampler& sample, const PiecewiseChebyshevOptions& o)
-      : m_(m), n_(o.degree), sample_(sample), o_(o), scale_(o.scale) {
+  Builder(int m, const ChebyshevBatchSampler& sample, const PiecewiseChebyshevOptions& o)
+      : m_(m), n_(o.degree), sample_(sample), scale_(o.scale) {
     if (scale_.empty()) scale_.assign(m, 1.0);
   }
 
-  // The values at t, sampled once.
-  const std::vector<double>& at(double t) {
-    auto it = cache_.find(t);
-    if (it != cache_.end()) return it->second;
-    std::vector<double> v(m_);
-    sample_(t, v.data());
-    ++samples_;
-    return cache_.emplace(t, std::move(v)).first->second;
-  }
-
+  // Fits [a, b] from its Lobatto points (the ends sampled once for both neighbours) and checks
+  // it at the points between them; one batch call of the sampler for all new points.
   Piece fit(double a, double b) {
     const double mid = 0.5 * (a + b), half = 0.5 * (b - a);
+    std::vector<double> nodes(n_ + 1), wanted;
+    for (int j = 0; j <= n_; ++j) {
+      nodes[j] = j == 0 ? b : j == n_ ? a : mid + half * std::cos(std::numbers::pi * j / n_);
+      if (!cache_.contains(nodes[j])) wanted.push_back(nodes[j]);
+    }
+    for (int j = 0; j < n_; ++j)
+      wanted.push_back(mid + half * std::cos(std::numbers::pi * (j + 0.5) / n_));
+    std::vector<double> sampled(wanted.size() * m_);
+    sample_(wanted, sampled.data());
+    samples_ += static_cast<int>(wanted.size());
+    const std::size_t checks = wanted.size() - n_;
+    for (std::size_t k = 0; k < checks; ++k)
+      cache_.emplace(wanted[k],
+                     std::vector<double>(sampled.begin() + k * m_, sampled.begin() + (k + 1) * m_));
     std::vector<double> values((n_ + 1) * m_);
     for (int j = 0; j <= n_; ++j) {
-      const double t = j == 0 ? b : j == n_ ? a : mid + half * std::cos(std::numbers::pi * j / n_);
-      const std::vector<double>& v = at(t);
+      const std::vector<double>& v = cache_.at(nodes[j]);
       std::copy(v.begin(), v.end(), values.begin() + j * m_);
     }
     Piece p{a, b, std::vector<double>((n_ + 1) * m_), 0.0, mid};
@@ -75,16 +80,13 @@ class Builder {
       lobatto_coefficients(n_, values.data() + i, m_, p.coefficients.data() + i * (n_ + 1));
     for (int j = 0; j < n_; ++j) {
       const double x = std::cos(std::numbers::pi * (j + 0.5) / n_);
-      const double t = mid + half * x;
-      std::vector<double> v(m_);
-      sample_(t, v.data());
-      ++samples_;
+      const double* v = sampled.data() + (checks + j) * m_;
       for (int i = 0; i < m_; ++i) {
         const double e =
             std::abs(clenshaw(p.coefficients.data() + i * (n_ + 1), n_, x) - v[i]) / scale_[i];
         if (!(e <= p.error)) {  // also catches NaN
           p.error = std::isnan(e) ? INFINITY : e;
-          p.worst_t = t;
+          p.worst_t = mid + half * x;
         }
       }
     }
@@ -95,8 +97,7 @@ class Builder {
 
  private:
   int m_, n_;
-  const ChebyshevSampler& sample_;
-  const PiecewiseChebyshevOptions& o_;
+  const ChebyshevBatchSampler& sample_;
   std::vector<double> scale_;
   std::map<double, std::vector<double>> cache_;
   int samples_ = 0;
@@ -115,6 +116,16 @@ std::vector<double> graded_breaks(int levels) {
 
 PiecewiseChebyshevBuild build_piecewise_chebyshev(int m, const ChebyshevSampler& sample,
                                                   const PiecewiseChebyshevOptions& o) {
+  return build_piecewise_chebyshev_batch(
+      m,
+      [&](const std::vector<double>& ts, double* values) {
+        for (std::size_t k = 0; k < ts.size(); ++k) sample(ts[k], values + k * m);
+      },
+      o);
+}
+
+PiecewiseChebyshevBuild build_piecewise_chebyshev_batch(int m, const ChebyshevBatchSampler& sample,
+                                                        const PiecewiseChebyshevOptions& o) {
   if (m < 1) throw std::invalid_argument("piecewise Chebyshev: no functions");
   if (o.degree < 2 || o.degree > kMaxDegree)
     throw std::invalid_argument("piecewise Chebyshev: degree must lie in [2, 40]");

@@ -34,41 +34,77 @@ void add_ring_point(double w, double c, double s2, double y, double s, SlipMomen
   out[5] += w * y * y * c;
 }
 
+// The ring weights of a constant profile p_c over phi in [0, phi_end], in closed form:
+// integrals of cos, s sin^2, y cos, s^2 sin^2 cos, s y sin^2 and y^2 cos with y = eps - s cos.
+SlipMoments constant_ring(double p_c, double s, double eps, double phi_end) {
+  const double sn = std::sin(phi_end), cs = std::cos(phi_end);
+  const double s3 = sn * sn * sn;
+  const double sin2 = 0.5 * phi_end - 0.5 * sn * cs;  // integral sin^2
+  const double cos2 = 0.5 * phi_end + 0.5 * sn * cs;  // integral cos^2
+  const double cos3 = sn - s3 / 3.0;                  // integral cos^3
+  return {p_c * sn,
+          p_c * s * sin2,
+          p_c * (eps * sn - s * cos2),
+          p_c * s * s * s3 / 3.0,
+          p_c * s * (eps * sin2 - s * s3 / 3.0),
+          p_c * (eps * eps * sn - 2.0 * eps * s * cos2 + s * s * cos3)};
+}
+
 // The half ring of a table in the variable t = |r|^2 = C - D cos(phi) (C = s^2 + eps^2,
 // D = 2 eps s), broken at the knots, where the profile is a cubic: d phi = dt / sqrt((t - t_min)
 // (t_max - t)), t_min = (s - eps)^2, t_max = (s + eps)^2; the square roots at t_min (and at
 // t_max for a ring inside the disk) are removed by t = t_min + w u^2 on the end pieces.
 SlipMoments half_ring_table(const ExactModel<double>& m, double s, double eps,
-                            const GaussLegendreRule& g) {
+                            const GaussLegendreRule& coarse, const GaussLegendreRule& fine) {
   const double t_min = (s - eps) * (s - eps), t_max = (s + eps) * (s + eps);
   const double t_end = std::min(1.0, t_max), D = 2.0 * eps * s;
   std::vector<double> cuts{t_min};
   const auto first = std::upper_bound(m.knot.begin(), m.knot.end(), t_min);
   for (auto it = first; it != m.knot.end() && *it < t_end; ++it) cuts.push_back(*it);
   cuts.push_back(t_end);
-  SlipMoments out{};
-  const int n = static_cast<int>(g.nodes.size());
-  std::vector<double> tt(n), ww(n), pp(n), lo(n), hi(n);
+  // The profile's value at the middle of the ring's range, in closed form; the rule takes only
+  // the rest, p - p_c, which is O(eps s) on the ring: its error shrinks with the centre's
+  // distance from O (the functions are divided by sigma ~ eps near pure spin).
+  double p_c, t_c = std::min(s * s + eps * eps, 1.0);
+  profile_at(m, &t_c, 1, &p_c);
+  const double phi_end =
+      t_end == t_max
+          ? std::numbers::pi
+          : 2.0 * std::asin(std::sqrt(std::clamp((1.0 - t_min) / (t_max - t_min), 0.0, 1.0)));
+  SlipMoments out = constant_ring(p_c, s, eps, phi_end);
+  const int most = static_cast<int>(std::max(coarse.nodes.size(), fine.nodes.size()));
+  std::vector<double> tt(most), ww(most), pp(most), lo(most), hi(most);
   for (std::size_t j = 0; j + 1 < cuts.size(); ++j) {
     const double a = cuts[j], b = cuts[j + 1];
     if (!(b > a)) continue;
-    const bool whole = j == 0 && j + 2 == cuts.size() && t_end == t_max;
-    // v = sqrt(t - t_min) on the lower half of the ring's range, sqrt(t_max - t) on the upper
-    // half: dt / sqrt(t - t_min) = 2 dv, no square root left near either end.
+    // A piece far from both ends of the ring's range: v = sqrt(t - t_min) on the lower half,
+    // sqrt(t_max - t) on the upper half (dt / sqrt(t - t_min) = 2 dv: the near square root
+    // gone, the far one smooth). A piece near both: the angle phi itself, t = t_min + (t_max -
+    // t_min) sin^2(phi / 2), dt / sqrt((t - t_min)(t_max - t)) = d phi, with the fine rule.
+    const double span = t_max - t_min;
     const bool lower = (a - t_min) <= (t_max - b);
-    const double va = lower ? std::sqrt(a - t_min) : std::sqrt(t_max - b);
-    const double vb = lower ? std::sqrt(b - t_min) : std::sqrt(t_max - a);
+    const double far = lower ? t_max - b : a - t_min;
+    const bool angle = far < 4.0 * (b - a);
+    const GaussLegendreRule& g = angle ? fine : coarse;
+    const int n = static_cast<int>(g.nodes.size());
+    double va, vb;
+    if (angle) {  // phi at a and b: sin^2(phi / 2) = (t - t_min) / span
+      va = 2.0 * std::asin(std::sqrt(std::clamp((a - t_min) / span, 0.0, 1.0)));
+      vb = 2.0 * std::asin(std::sqrt(std::clamp((b - t_min) / span, 0.0, 1.0)));
+    } else {
+      va = lower ? std::sqrt(a - t_min) : std::sqrt(t_max - b);
+      vb = lower ? std::sqrt(b - t_min) : std::sqrt(t_max - a);
+    }
     for (int i = 0; i < n; ++i) {
-      const double u = 0.5 * (1.0 + g.nodes[i]);
-      if (whole) {  // one piece from t_min to t_max: t = C - D cos(phi), dt / root = d phi
-        const double phi = std::numbers::pi * u, h = std::sin(0.5 * phi);
-        lo[i] = (t_max - t_min) * h * h;
-        hi[i] = (t_max - t_min) - lo[i];
-        ww[i] = 0.5 * g.weights[i] * std::numbers::pi * std::sqrt(lo[i] * hi[i]);
+      const double v = va + (vb - va) * 0.5 * (1.0 + g.nodes[i]);
+      if (angle) {
+        const double h = std::sin(0.5 * v);
+        lo[i] = span * h * h;
+        hi[i] = span - lo[i];
+        ww[i] = 0.5 * g.weights[i] * (vb - va) * std::sqrt(lo[i] * hi[i]);  // dt = root d phi
       } else {
-        const double v = va + (vb - va) * u;
-        lo[i] = lower ? v * v : (t_max - t_min) - v * v;
-        hi[i] = lower ? (t_max - t_min) - v * v : v * v;
+        lo[i] = lower ? v * v : span - v * v;
+        hi[i] = lower ? span - v * v : v * v;
         ww[i] = 0.5 * g.weights[i] * (vb - va) * 2.0 * v;  // dt = 2 v dv
       }
       tt[i] = std::clamp(t_min + lo[i], a, b);
@@ -80,18 +116,23 @@ SlipMoments half_ring_table(const ExactModel<double>& m, double s, double eps,
       const double root = std::sqrt(lo[i] * hi[i]);
       if (!(root > 0.0)) continue;
       // y = eps - s cos(phi) = (eps - s) + s (1 - cos(phi)), 1 - cos(phi) = (t - t_min) / D.
-      add_ring_point(ww[i] * pp[i] / root, c, s2, (eps - s) + s * lo[i] / D, s, out);
+      add_ring_point(ww[i] * (pp[i] - p_c) / root, c, s2, (eps - s) + s * lo[i] / D, s, out);
     }
   }
   return out;
 }
+
+// The rules of a table's ring pieces (half_ring_table).
+struct RingRules {
+  GaussLegendreRule coarse, fine;
+};
 
 // m_i(s) / (2 s): the half-ring integral over phi = beta + pi/2 in [0, theta_w] of p(|r|^2)
 // times the ring weights (add_ring_point), with |r|^2 = (s - eps)^2 + 4 eps s sin^2(phi/2) and
 // y = (eps - s) + 2 s sin^2(phi/2) (no cancellation for a far centre). A table whose knots the
 // ring crosses goes to half_ring_table.
 SlipMoments half_ring(const ExactModel<double>& m, double s, double eps, double tol,
-                      const GaussLegendreRule& g) {
+                      const RingRules& g) {
   const double dsq = (s - eps) * (s - eps);
   SlipMoments out{};
   if (!(dsq < 1.0)) return out;
@@ -106,7 +147,7 @@ SlipMoments half_ring(const ExactModel<double>& m, double s, double eps, double 
   if (!m.piece.empty() && four_es > 1e-6) {
     const double t_end = std::min(1.0, (s + eps) * (s + eps));
     const auto it = std::upper_bound(m.knot.begin(), m.knot.end(), dsq);
-    if (it != m.knot.end() && *it < t_end) return half_ring_table(m, s, eps, g);
+    if (it != m.knot.end() && *it < t_end) return half_ring_table(m, s, eps, g.coarse, g.fine);
   }
   // Arc end: |r|^2 = 1 at sin^2(theta_w / 2) = (1 - dsq) / (4 eps s).
   const double theta_w =
@@ -138,7 +179,9 @@ SlipMoments half_ring(const ExactModel<double>& m, double s, double eps, double 
 
 struct Panel {
   double a, b;
-  int squeeze;  // -1: nu = a + w u^2 (towards a), +1: nu = b - w u^2 (towards b), 0: plain
+  // -1: nu = a + w u^2 (towards a), +1: nu = b - w u^2 (towards b), 2: nu = a + w (1 - cos(pi u))
+  // / 2 (towards both), 0: plain
+  int squeeze;
 };
 
 // Panels on [a, b] graded by halving towards a down to width min_a (and towards b down to
@@ -159,22 +202,86 @@ void graded_panels(double a, double b, double min_a, double min_b, std::vector<P
   }
 }
 
-// The panels split at the given points (a split panel keeps its squeeze on its outer end only).
-std::vector<Panel> split_panels(const std::vector<Panel>& panels, std::vector<double> cuts) {
-  std::sort(cuts.begin(), cuts.end());
-  std::vector<Panel> out;
-  for (const Panel& p : panels) {
-    auto lo = std::upper_bound(cuts.begin(), cuts.end(), p.a);
-    auto hi = std::lower_bound(cuts.begin(), cuts.end(), p.b);
-    double a = p.a;
-    for (auto it = lo; it != hi; ++it) {
-      if (*it - a < 1e-12 * (p.b - p.a)) continue;
-      out.push_back({a, *it, a == p.a && p.squeeze < 0 ? -1 : 0});
-      a = *it;
-    }
-    out.push_back({a, p.b, a == p.a ? p.squeeze : (p.squeeze > 0 ? 1 : 0)});
+// A point nu of a panel from u in [0, 1] (squeezed towards the end point where the panel says),
+// with d nu / du; and the inverse.
+double panel_point(const Panel& p, double u, double& dnu) {
+  const double w = p.b - p.a;
+  if (p.squeeze == 0) {
+    dnu = w;
+    return p.a + w * u;
   }
-  return out;
+  if (p.squeeze == 2) {
+    dnu = 0.5 * w * kPi * std::sin(kPi * u);
+    return p.a + 0.5 * w * (1.0 - std::cos(kPi * u));
+  }
+  dnu = 2.0 * w * u;
+  return p.squeeze < 0 ? p.a + w * u * u : p.b - w * u * u;
+}
+
+double panel_coordinate(const Panel& p, double nu) {
+  const double w = p.b - p.a;
+  if (p.squeeze == 0) return (nu - p.a) / w;
+  return std::sqrt(std::clamp(p.squeeze < 0 ? (nu - p.a) / w : (p.b - nu) / w, 0.0, 1.0));
+}
+
+// The ring weights W(G) = integral G(nu) 2 s ring(s) ds (s = nu / eta) of the points of a panel.
+void panel_rule(const ExactModel<double>& m, const Panel& p, double eps, double eta, double tol,
+                const GaussLegendreRule& g, const RingRules& ring_rule, std::vector<double>& nu,
+                std::vector<SlipMoments>& weight) {
+  for (std::size_t i = 0; i < g.nodes.size(); ++i) {
+    double dnu;
+    const double x = panel_point(p, 0.5 * (1.0 + g.nodes[i]), dnu), s = x / eta;
+    const SlipMoments ring = half_ring(m, s, eps, tol, ring_rule);
+    const double w = 0.5 * g.weights[i] * dnu * 2.0 * s / eta;
+    SlipMoments wk;
+    for (int c = 0; c < 6; ++c) wk[c] = w * ring[c];
+    nu.push_back(x);
+    weight.push_back(wk);
+  }
+}
+
+// A table's panel: its pieces between the knot tangencies in it (nu = eta |rho_k - eps| and
+// eta (rho_k + eps), where m(s) is only C2) each get a short rule, and their points are moved
+// onto `target`, a rule of the panel, by Lagrange interpolation in its coordinate u (exact for G
+// a polynomial in u of the target's degree: the panels are graded for G, the pieces for m; the
+// target has twice the nodes of the panel's own rule, as interpolation has half the order of
+// Gauss quadrature).
+void table_panel_rule(const ExactModel<double>& m, const Panel& p, const std::vector<double>& cuts,
+                      double eps, double eta, double tol, const GaussLegendreRule& g,
+                      const GaussLegendreRule& target, const GaussLegendreRule& piece_rule,
+                      const RingRules& ring_rule, std::vector<double>& nu,
+                      std::vector<SlipMoments>& weight) {
+  auto lo = std::upper_bound(cuts.begin(), cuts.end(), p.a);
+  auto hi = std::lower_bound(cuts.begin(), cuts.end(), p.b);
+  if (lo == hi) return panel_rule(m, p, eps, eta, tol, g, ring_rule, nu, weight);
+  std::vector<double> fine_nu;
+  std::vector<SlipMoments> fine_w;
+  double a = p.a;
+  for (auto it = lo; it <= hi; ++it) {
+    const double b = it == hi ? p.b : *it;
+    if (b - a <= 1e-12 * (p.b - p.a)) continue;
+    // m(s) is C2 with a (s - s_k)^(5/2) term at the tangencies: squeezed towards both ends.
+    const Panel piece{a, b, 2};
+    panel_rule(m, piece, eps, eta, tol, piece_rule, ring_rule, fine_nu, fine_w);
+    a = b;
+  }
+  const std::size_t n = target.nodes.size(), base = nu.size();
+  std::vector<double> u(n);
+  for (std::size_t j = 0; j < n; ++j) {
+    double dnu;
+    u[j] = 0.5 * (1.0 + target.nodes[j]);
+    nu.push_back(panel_point(p, u[j], dnu));
+    weight.push_back(SlipMoments{});
+  }
+  for (std::size_t k = 0; k < fine_nu.size(); ++k) {
+    const double x = panel_coordinate(p, fine_nu[k]);
+    for (std::size_t j = 0; j < n; ++j) {
+      double l = 1.0;  // the Lagrange basis polynomial of node j at x
+      for (std::size_t i = 0; i < n; ++i)
+        if (i != j) l *= (x - u[i]) / (u[j] - u[i]);
+      for (int c = 0; c < 6; ++c) weight[base + j][c] += l * fine_w[k][c];
+    }
+  }
 }
 
 }  // namespace
@@ -203,43 +310,26 @@ SlipSpeedMeasure slip_speed_measure(const ExactModel<double>& model, double t,
   } else {  // centre on or outside the rim: nu from t (the ring touches the rim from outside)
     graded_panels(t, 1.0, layer, 1e-3 * (1.0 - t), panels);
   }
-  if (!model.piece.empty()) {
-    std::vector<double> cuts;
-    for (std::size_t k = 1; k + 1 < model.knot.size(); ++k) {
-      const double rho = std::sqrt(model.knot[k]);
-      cuts.push_back(eta * std::abs(rho - eps));
-      cuts.push_back(eta * (rho + eps));
-    }
-    panels = split_panels(panels, cuts);
-  }
   const GaussLegendreRule g = gauss_legendre(o.nodes);
-  const GaussLegendreRule ring_rule = gauss_legendre(o.ring_nodes);
+  const RingRules ring_rule{gauss_legendre(o.ring_nodes), gauss_legendre(2 * o.ring_nodes + 4)};
   const double tol = o.ring_tolerance * load;
-  for (const Panel& p : panels) {
-    const double w = p.b - p.a;
-    for (std::size_t i = 0; i < g.nodes.size(); ++i) {
-      const double u = 0.5 * (1.0 + g.nodes[i]);
-      double nu, dnu;
-      if (p.squeeze < 0) {
-        nu = p.a + w * u * u;
-        dnu = 2.0 * w * u;
-      } else if (p.squeeze > 0) {
-        nu = p.b - w * u * u;
-        dnu = 2.0 * w * u;
-      } else {
-        nu = p.a + w * u;
-        dnu = w;
-      }
-      const double s = nu / eta;
-      const SlipMoments ring = half_ring(model, s, eps, tol, ring_rule);
-      // W = integral G(nu) 2 s ring(s) ds, ds = d nu / eta.
-      const double weight = 0.5 * g.weights[i] * dnu * 2.0 * s / eta;
-      SlipMoments wk;
-      for (int c = 0; c < 6; ++c) wk[c] = weight * ring[c];
-      out.nu.push_back(nu);
-      out.weight.push_back(wk);
-    }
+  if (model.piece.empty()) {
+    for (const Panel& p : panels)
+      panel_rule(model, p, eps, eta, tol, g, ring_rule, out.nu, out.weight);
+    return out;
   }
+  std::vector<double> cuts;
+  for (std::size_t k = 1; k + 1 < model.knot.size(); ++k) {
+    const double rho = std::sqrt(model.knot[k]);
+    cuts.push_back(eta * std::abs(rho - eps));
+    cuts.push_back(eta * (rho + eps));
+  }
+  std::sort(cuts.begin(), cuts.end());
+  const GaussLegendreRule piece_rule = gauss_legendre(o.piece_nodes);
+  const GaussLegendreRule target = gauss_legendre(2 * o.nodes);
+  for (const Panel& p : panels)
+    table_panel_rule(model, p, cuts, eps, eta, tol, g, target, piece_rule, ring_rule, out.nu,
+                     out.weight);
   return out;
 }
 

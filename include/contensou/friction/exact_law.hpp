@@ -54,6 +54,7 @@ struct ExactLawOptions {
   double tolerance = 1e-8;
   int degree = 12;         // of the Chebyshev pieces in t (8, 10, 12, 14 or 16)
   int falling_degree = 8;  // the same for the falling part of a slip-speed law
+  unsigned threads = 0;    // of the build (0: one a core); the law is the same for any number
 };
 
 // The table functions (exact_law.hpp header), in this order.

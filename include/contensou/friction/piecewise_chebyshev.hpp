@@ -40,6 +40,8 @@ struct PiecewiseChebyshev {
 
 // Samples the m functions at t: writes values[0..m-1].
 using ChebyshevSampler = std::function<void(double t, double* values)>;
+// Samples the m functions at every t of ts (values[k * m + i]); may work on them in parallel.
+using ChebyshevBatchSampler = std::function<void(const std::vector<double>& ts, double* values)>;
 
 struct PiecewiseChebyshevOptions {
   int degree = 16;
@@ -63,6 +65,10 @@ struct PiecewiseChebyshevBuild {
 // (x = cos((j + 1/2) pi / n)) against the sampler and bisected while it misses the tolerance.
 PiecewiseChebyshevBuild build_piecewise_chebyshev(int functions, const ChebyshevSampler& sample,
                                                   const PiecewiseChebyshevOptions& options);
+// The same with the points of each piece sampled in one call.
+PiecewiseChebyshevBuild build_piecewise_chebyshev_batch(int functions,
+                                                        const ChebyshevBatchSampler& sample,
+                                                        const PiecewiseChebyshevOptions& options);
 
 // Fills the table's map and index from its breaks (after editing breaks by hand).
 void index_pieces(PiecewiseChebyshev& table);

@@ -37,6 +37,7 @@ struct SlipSpeedMeasureOptions {
   double ring_tolerance = 1e-13;  // of each ring integral, relative to the load
   int nodes = 12;                 // Gauss-Legendre nodes a panel in nu
   int ring_nodes = 6;             // Gauss-Legendre nodes a knot piece of a table's ring
+  int piece_nodes = 10;           // ... a piece of a panel between a table's knot tangencies
 };
 
 // The rule at t in [-1, 1] (t = 1: pure sliding, one node at nu = 1). The model's radius,
