@@ -225,7 +225,8 @@ int main(int argc, char** argv) {
   std::optional<double> load, pressure;
   std::vector<std::string> fixes;
   std::vector<double> noise_scale;
-  bool no_loop = false, speed_inside = false, verbose = false, profile_clip = false;
+  bool no_loop = false, speed_inside = true, effective_speed = false, verbose = false,
+       profile_clip = false;
   int failing_point = -1, smoothing = 0;
   double alpha = 1e-3;
   app.add_option("data", data_path,
@@ -251,9 +252,13 @@ int main(int argc, char** argv) {
   app.add_flag("--no-loop", no_loop, "fit the fractional law only; do not close the loop");
   app.add_option("--alpha", alpha, "closed loop: family-wise level of the LR test per step")
       ->check(CLI::Range(1e-12, 0.5));
-  app.add_flag("--speed-inside-integrals", speed_inside,
-               "closed loop: slip-speed friction at the local speed inside the exact integrals "
-               "(exact, much slower)");
+  auto* inside = app.add_flag("--speed-inside-integrals", speed_inside,
+                              "closed loop: slip-speed friction at the local slip speed inside "
+                              "the exact integrals (the default)");
+  app.add_flag("--effective-speed", effective_speed,
+               "closed loop: slip-speed friction at the effective speed (v^2 + (2u/3)^2)^(1/2) "
+               "outside the exact integrals instead")
+      ->excludes(inside);
 
   app.add_option("--profile-smoothing", smoothing,
                  "fit the --profile CSV by a Chebyshev series in rho^2 of N terms (noisy film "
@@ -308,6 +313,7 @@ int main(int argc, char** argv) {
   } catch (const CLI::ParseError& e) {
     return app.exit(e);
   }
+  if (effective_speed) speed_inside = false;
   // Ceres logs through glog: quiet unless asked for.
   FLAGS_logtostderr = true;
   FLAGS_minloglevel = verbose ? google::GLOG_INFO : google::GLOG_FATAL;

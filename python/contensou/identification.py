@@ -222,7 +222,7 @@ def identify(
     noise_model: str = "additive",
     noise_scale: Optional[tuple[float, float, float]] = None,
     alpha: float = 1e-3,
-    speed_inside_integrals: bool = False,
+    speed_inside_integrals: bool = True,
     profile_smoothing: int = 0,
     profile_clip: bool = False,
     source: Optional[str] = None,

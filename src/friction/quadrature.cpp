@@ -13,6 +13,7 @@ GaussLegendreRule gauss_legendre(int n) {
     // Tricomi's initial guess, then Newton on P_n.
     double x = std::cos(std::numbers::pi * (i + 0.75) / (n + 0.5));
     double dp = 1.0;
+    bool close = false;  // one more step after |dx| < 1e-13: quadratic convergence does the rest
     for (int it = 0; it < 100; ++it) {
       double p0 = 1.0, p1 = x;
       for (int k = 2; k <= n; ++k) {
@@ -25,7 +26,8 @@ GaussLegendreRule gauss_legendre(int n) {
       dp = n * (x * pn - pnm1) / (x * x - 1.0);
       const double dx = pn / dp;
       x -= dx;
-      if (std::abs(dx) < 1e-17) break;
+      if (close || std::abs(dx) < 1e-17) break;
+      close = std::abs(dx) < 1e-13;
     }
     const double w = 2.0 / ((1.0 - x * x) * dp * dp);
     rule.nodes[i] = -x;

@@ -56,6 +56,7 @@ ModelSpec base_model_spec(double radius_m, std::optional<double> normal_load_n) 
   s.normal_load_n = normal_load_n;
   for (int i = 0; i < kModelParameters; ++i) s.value[i] = kInfo[i].null_value;
   for (int i : {kF0, kA, kM0, kMShape, kKx}) s.free[i] = true;
+  s.exact_laws = std::make_shared<ExactLawCache>(radius_m, std::nullopt, s.exact_tolerance);
   return s;
 }
 

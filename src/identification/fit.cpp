@@ -216,6 +216,7 @@ ModelSpec base_spec_for(const MeasuredData& data, const IdentificationOptions& o
     // 1e-6 of the profile is far below any measurement noise and keeps a tabulated profile's
     // series short (its PCHIP is only C1).
     s.profile_model = make_exact_model(patch, 1e-6);
+    s.exact_laws = std::make_shared<ExactLawCache>(o.radius_m, s.profile_model, s.exact_tolerance);
   }
   double f0 = 0.0, m0 = 0.0;
   for (const MeasuredPoint& p : data.points) {

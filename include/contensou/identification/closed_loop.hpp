@@ -65,9 +65,9 @@ struct ClosedLoopOptions {
   int folds = 5;        // k of the cross-validation
   int max_steps = 6;
   // speed_dependence with the exact integrals: f(w) at the local slip speed inside the
-  // integrals (exact; with a tabulated profile about 230 times slower, README "The closed
-  // loop"), or at the effective speed (default).
-  bool speed_inside_integrals = false;
+  // integrals (default: the exact law's table of the falling part, exact_law.hpp), or at the
+  // effective speed w = (v^2 + (2u/3)^2)^(1/2) outside them.
+  bool speed_inside_integrals = true;
   std::function<void(const std::string&)> progress;  // called with a line per stage
 };
 

@@ -13,11 +13,13 @@
 #pragma once
 
 #include <array>
+#include <memory>
 #include <optional>
 #include <string>
 
 #include "contensou/friction/exact_resultants.hpp"
 #include "contensou/friction/fractional_law.hpp"
+#include "contensou/identification/exact_law_cache.hpp"
 #include "contensou/identification/measured_data.hpp"
 
 namespace contensou {
@@ -65,10 +67,12 @@ struct ModelSpec {
   double c = 4.0, a_k = 1.0, mk_ratio = 0.375;
   // The exact integrals over the given profile (unset: the parametric profile).
   std::optional<ExactModel<double>> profile_model;
+  // The exact law of the profile (set with the profile by base_spec_for, or on first use).
+  std::shared_ptr<ExactLawCache> exact_laws;
   // The profile's asymptote-matched law constants (reported with the exact model): a, m, M0/(F0 R).
   double profile_a = 1.0, profile_m = 64.0 / 9.0, profile_m0_ratio = 2.0 / 3.0;
   bool exact_only = false;      // the law is replaced by the exact integrals (lambda = 1)
-  bool speed_in_exact = false;  // evaluate f(w) inside the exact integrals (slower)
+  bool speed_in_exact = false;  // f(w) at the local slip speed inside the exact integrals
   std::array<bool, kModelParameters> free{};     // parameters being estimated
   std::array<double, kModelParameters> value{};  // their values (start or fixed)
   double exact_tolerance = 1e-6;                 // relative to f N: far below any measurement noise

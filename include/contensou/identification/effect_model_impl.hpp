@@ -1,8 +1,10 @@
 // Implementation of evaluate_model (templated for ceres::Jet).
 #pragma once
 
+#include <array>
 #include <cmath>
 #include <numbers>
+#include <stdexcept>
 
 namespace contensou {
 
@@ -63,32 +65,32 @@ Resultants<T> evaluate_model(const ModelSpec& s, const T* th, const Kinematics<d
     y = {wl * r.Fx, wl * r.Fy, wl * r.Mz};
   }
   if (s.uses_exact()) {
-    ExactModel<T> m;
-    if (s.profile_model) {
-      m = promote<T>(*s.profile_model);
-    } else {
-      m = promote<T>(ExactModel<double>{});
-      m.radius = R;
-      m.chebyshev = {T(1.0), th[kProfileB1], th[kProfileB2]};
-      update_chord_transforms(m);
-      m.load_area = 2.0 * std::numbers::pi * R * R * 0.5;
-    }
-    const T load_area = s.profile_model
-                            ? T(s.profile_model->load_area)
-                            : 2.0 * std::numbers::pi * R * R * detail::first_moment(m.chebyshev);
-    m.friction = T(1.0);
-    m.friction_scale = 1.0;
-    m.pressure = th[kF0] / load_area;  // f p* with f folded in: F0 = f p* (N / p*)
-    m.kx = th[kKx] * (m.radius / R);
-    m.ky = th[kKy] * (m.radius / R);
-    m.kappa = th[kKappa];
+    // The exact law of the profile (exact_law_cache.hpp): one law, or the parametric profile's
+    // three basis laws with coefficients (1 - b1 - b2, b1, b2). F0 = f p* R^2 L with f folded in.
+    if (!s.exact_laws) throw std::logic_error("ModelSpec without exact laws (use base_model_spec)");
+    const std::vector<ExactLaw>& laws = s.exact_laws->laws(s.speed_in_exact);
+    std::array<T, 3> coef{T(1.0), T(0.0), T(0.0)};
+    if (laws.size() == 3) coef = {1.0 - th[kProfileB1] - th[kProfileB2], th[kProfileB1], th[kProfileB2]};
+    T load(0.0);
+    for (std::size_t i = 0; i < laws.size(); ++i) load += coef[i] * laws[i].load_area;
+    const double Rl = laws.front().radius;
+    ExactLawParameters<T> p;
+    p.pressure = th[kF0] / (Rl * Rl * load);
+    p.friction = T(1.0);
+    p.kappa = th[kKappa];
+    p.kx = th[kKx] * (Rl / R);
+    p.ky = th[kKy] * (Rl / R);
     if (s.speed_in_exact) {
       // f(w) = 1 - beta (1 - exp(-w / w_s)): the law's Stribeck form with exponent 1.
-      m.slip_speed = SlipSpeedFriction<T>{T(1.0), 1.0 - th[kSpeedDrop], th[kSpeedRef], T(1.0)};
+      p.slip_speed = SlipSpeedFriction<T>{T(1.0), 1.0 - th[kSpeedDrop], th[kSpeedRef], T(1.0)};
     }
-    const Resultants<T> r =
-        exact_resultants(m, Kinematics<T>{T(k.vx), T(k.vy), T(k.omega)}, {s.exact_tolerance})
-            .resultants;
+    Resultants<T> r{T(0.0), T(0.0), T(0.0)};
+    for (std::size_t i = 0; i < laws.size(); ++i) {
+      const Resultants<T> ri = exact_law_resultants(laws[i], p, k);
+      r.Fx += coef[i] * ri.Fx;
+      r.Fy += coef[i] * ri.Fy;
+      r.Mz += coef[i] * ri.Mz;
+    }
     // Without f(w) inside the integrals, the friction falls at the effective slip speed.
     T phi(1.0);
     if (!s.speed_in_exact) {

@@ -1,0 +1,38 @@
+// The exact laws of an identification model's profile (exact_law.hpp), built on first use and
+// shared by every spec copied from one base spec.
+//
+// A given profile has one law. The parametric profile p = 1 + b1 T1(2 t - 1) + b2 T2(2 t - 1)
+// (t = rho^2) is linear in (b1, b2), and so are the resultants: it has the laws of the basis
+// shapes phi0 = 1, phi1 = 1 + T1, phi2 = 1 + T2, with p = (1 - b1 - b2) phi0 + b1 phi1 + b2 phi2.
+// The laws for f(w) = 1 - beta (1 - exp(-w / w_s)) inside the integrals (exponent 1) carry the
+// table of its falling part, so that f(w) costs what constant friction does; they are built
+// only when asked for (a second, slower build).
+#pragma once
+
+#include <mutex>
+#include <optional>
+#include <vector>
+
+#include "contensou/friction/exact_law.hpp"
+
+namespace contensou {
+
+class ExactLawCache {
+ public:
+  // radius_m: the patch radius; profile: the model of a given profile (unset: the parametric
+  // one); tolerance: the laws' build tolerance relative to f N.
+  ExactLawCache(double radius_m, std::optional<ExactModel<double>> profile, double tolerance);
+  // The laws (one, or the three basis laws), for constant friction or with the slip-speed
+  // table, each built on the first call that asks for it (thread-safe).
+  const std::vector<ExactLaw>& laws(bool slip_speed) const;
+  // The basis coefficients of the profile at (b1, b2): {1} or {1 - b1 - b2, b1, b2}.
+  bool parametric() const { return !profile_; }
+
+ private:
+  double radius_m_, tolerance_;
+  std::optional<ExactModel<double>> profile_;
+  mutable std::once_flag once_[2];
+  mutable std::vector<ExactLaw> laws_[2];
+};
+
+}  // namespace contensou
