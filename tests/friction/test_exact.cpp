@@ -533,6 +533,68 @@ TEST(ExactResultants, TabulatedSeedSeriesReproducesTheSeries) {
   }
 }
 
+// A dense table with a kink near the rim, n points rho_i = i / (n - 1) (a finite-element
+// profile): p = 1 + 0.4 rho^2 - 0.9 rho^4 below 0.9, 0.7439 - 4 (rho - 0.9) from there (a
+// step of 0.01 at 0.9 as well: the monotone interpolant has a bump one interval wide).
+ContactPatch dense_table_patch(int n, std::vector<double>& rho) {
+  std::vector<double> pv;
+  rho.clear();
+  for (int i = 0; i < n; ++i) {
+    const double r = static_cast<double>(i) / (n - 1);
+    rho.push_back(r);
+    pv.push_back(r < 0.9 ? 1.0 + 0.4 * r * r - 0.9 * std::pow(r, 4) : 0.7439 - 4.0 * (r - 0.9));
+  }
+  ContactPatch p = seed_patch();
+  p.profile = tabulated_profile(rho, pv);
+  p.profile.kx = 0.14;
+  return p;
+}
+
+// The regimes |v| / (|omega| R) of the dense-table tests, sliding at 35 degrees.
+constexpr double kDenseRatios[] = {0.5, 0.999, 1.0, 1.001, 2.0, 100.0};
+Kinematics<double> dense_kinematics(double ratio, double R) {
+  const double w = 20.0, v = ratio * w * R;
+  return {v * std::cos(0.61), v * std::sin(0.61), w};
+}
+
+bool estimate_meets(const ExactResult<double>& r, double tol, double fN, double R) {
+  return r.error.Fx <= tol * fN && r.error.Fy <= tol * fN && r.error.Mz <= tol * fN * R;
+}
+
+// The converged flag agrees with the estimate: true exactly when every component of the
+// estimate (floor and representation error included) meets the tolerance, on dense tables in
+// every regime (a 10,001-point table at 1e-6 reported converged with an estimate of 2.3e-6 of
+// f N, a 1,001-point one at 1e-10 with 1.5e-9) and on the other profile kinds.
+TEST(ExactResultants, ConvergedFlagAgreesWithTheEstimate) {
+  std::vector<double> rho;
+  std::vector<ContactPatch> patches = {dense_table_patch(1001, rho), dense_table_patch(10001, rho),
+                                       seed_patch(), uniform_patch()};
+  ContactPatch hertz = uniform_patch();
+  hertz.profile = hertz_profile();
+  patches.push_back(hertz);
+  ContactPatch speed = seed_patch();
+  speed.slip_speed_friction = SlipSpeedFriction<double>{0.8, 0.45, 5.0, 1.0};
+  patches.push_back(speed);
+  for (const ContactPatch& p : patches) {
+    const ExactModel<double> m = make_exact_model(p);
+    const double fN = m.friction_scale * normal_load(p), R = p.radius_m;
+    for (double ratio : kDenseRatios) {
+      for (double tol : {1e-6, 1e-8, 1e-10, 1e-12}) {
+        if (p.slip_speed_friction && tol < 1e-10) continue;  // f(w) at 1e-12: slow
+        const auto r = exact_resultants(m, dense_kinematics(ratio, R), {tol});
+        EXPECT_EQ(r.converged, estimate_meets(r, tol, fN, R))
+            << describe(p.profile) << " ratio " << ratio << " tol " << tol << " estimate "
+            << r.error.Fx / fN << " " << r.error.Fy / fN << " " << r.error.Mz / (fN * R);
+      }
+    }
+    // Pure sliding and no motion: the same rule.
+    for (const Kinematics<double>& k : {Kinematics<double>{1.0, 0.5, 0.0}, Kinematics<double>{}}) {
+      const auto r = exact_resultants(m, k, {1e-12});
+      EXPECT_EQ(r.converged, estimate_meets(r, 1e-12, fN, R)) << describe(p.profile);
+    }
+  }
+}
+
 TEST(ExactResultants, BadInputNamesParameterAndValue) {
   auto message = [](const std::function<void()>& f) -> std::string {
     try {

@@ -132,7 +132,10 @@ struct ExactResult {
   Resultants<T> resultants;
   Resultants<double> error;  // estimated absolute error [N, N, N m]
   int evaluations = 0;       // rays evaluated (outer integrand evaluations)
-  bool converged = true;     // false if the interval budget ran out before the tolerance
+  // true only if every component of `error` meets the requested tolerance (tol f N, tol f N R;
+  // representation error and floor included); false if the estimate exceeds it (the interval
+  // budget ran out, or the profile's representation alone is coarser than the tolerance).
+  bool converged = true;
 };
 
 namespace detail {
@@ -679,8 +682,19 @@ std::array<T, 2> representation_moments(const ExactModel<T>& m) {
 
 }  // namespace detail
 
+namespace detail {
+
+// Whether an error estimate [N, N, N m] meets a tolerance relative to f N (forces) and f N R
+// (torque), scale_F = f N.
+inline bool within_tolerance(const Resultants<double>& e, double tol, double scale_F, double R) {
+  return e.Fx <= tol * scale_F && e.Fy <= tol * scale_F && e.Mz <= tol * scale_F * R;
+}
+
+}  // namespace detail
+
 // Exact Fx, Fy, Mz for a model and kinematics, to the requested tolerance, with an error
-// estimate. Throws InvalidArgument for non-finite velocities.
+// estimate; converged is true only if every component of that estimate meets the tolerance.
+// Throws InvalidArgument for non-finite velocities.
 template <class T>
 ExactResult<T> exact_resultants(const ExactModel<T>& m, const Kinematics<T>& k,
                                 const ExactOptions& options = {}) {
@@ -701,7 +715,10 @@ ExactResult<T> exact_resultants(const ExactModel<T>& m, const Kinematics<T>& k,
                       R * R;  // bound on the load error of the representation
   out.error = {repr, repr, repr * R};
 
-  if (speed == 0.0 && w_abs == 0.0) return out;
+  if (speed == 0.0 && w_abs == 0.0) {
+    out.converged = detail::within_tolerance(out.error, options.tolerance, scale_F, R);
+    return out;
+  }
 
   // Pure sliding, or a centre so far that the first order in eps = |omega| R / |v| (below) is
   // within a tenth of the tolerance: its remainder is at most c eps^2 f N with c = kappa_max^2
@@ -771,6 +788,7 @@ ExactResult<T> exact_resultants(const ExactModel<T>& m, const Kinematics<T>& k,
     out.error.Fx += 2.0 * remainder * eps * eps * scale_F;  // twice the remainder's bound
     out.error.Fy = out.error.Fx;
     out.error.Mz += out.error.Fx * R;
+    out.converged = detail::within_tolerance(out.error, options.tolerance, scale_F, R);
     return out;
   }
 
@@ -785,7 +803,6 @@ ExactResult<T> exact_resultants(const ExactModel<T>& m, const Kinematics<T>& k,
   const double dv = std::hypot(rcx_v, rcy_v);
   // Tolerances in integrand units (the factor -f p* is applied at the end).
   const double unit = tol * m.load_area * (m.slip_speed ? fscale : 1.0);
-  const std::array<double, 3> tol_out{unit, unit, unit * R};
   // Inner integrals are summed over at most pi of beta: keep their share small.
   const double share = 1.0 / (20.0 * std::numbers::pi);
   const std::array<double, 3> tol_inner{unit * share, unit * share * R, unit * share * R};
@@ -835,6 +852,20 @@ ExactResult<T> exact_resultants(const ExactModel<T>& m, const Kinematics<T>& k,
       out.error.Mz += dropped * R;
     }
   }
+  // Floor of the estimate: min(1e-11, tol / 10) of f N (f N R). On 10^4 random kinematics per
+  // profile kind the Kronrod heuristic's estimate fell below the achieved error only at
+  // rounding level, at most 6.6e-12 of f N (uniform pressure, tolerance 1e-8, a first
+  // partition that over-delivers); test_exact checks the bound.
+  const double floor = std::min(1e-11, 0.1 * tol) * scale_F;
+  // The outer rule gets the share of tol f N (f N R) that the terms above and the floor leave,
+  // at least half of it (a representation error beyond half the tolerance cannot converge).
+  auto room = [&](double used, double scale) {
+    const double budget = tol * scale_F * scale;
+    return budget > 0.0 ? std::clamp(1.0 - used / budget, 0.5, 1.0) : 1.0;
+  };
+  const std::array<double, 3> tol_out{unit * room(out.error.Fx + floor, 1.0),
+                                      unit * room(out.error.Fy + floor, 1.0),
+                                      unit * R * room(out.error.Mz + floor * R, R)};
 
   // Outer integrand for a batch of chords with Jacobians jac: u = sign(omega) z x e,
   // traction direction t = D u = (u_x, kappa u_y) (or D^2 u / |D u| for the associated law);
@@ -969,16 +1000,13 @@ ExactResult<T> exact_resultants(const ExactModel<T>& m, const Kinematics<T>& k,
   out.resultants.Fy = factor * res.value[1];
   out.resultants.Mz = factor * res.value[2];
   const double fabs_ = std::abs(value_of(factor));
-  // Floor of the estimate: min(1e-11, tol / 10) of f N (f N R). On 10^4 random kinematics per
-  // profile kind the Kronrod heuristic's estimate fell below the achieved error only at
-  // rounding level, at most 6.6e-12 of f N (uniform pressure, tolerance 1e-8, a first
-  // partition that over-delivers); test_exact checks the bound.
-  const double floor = std::min(1e-11, 0.1 * tol) * scale_F;
   out.error.Fx += fabs_ * res.error[0] + floor;
   out.error.Fy += fabs_ * res.error[1] + floor;
   out.error.Mz += fabs_ * res.error[2] + floor * R;
   out.evaluations = res.evaluations;
-  out.converged = res.converged;
+  // Converged: the rule met its tolerance and the whole estimate meets the requested one.
+  out.converged =
+      res.converged && detail::within_tolerance(out.error, options.tolerance, scale_F, R);
   return out;
 }
 
