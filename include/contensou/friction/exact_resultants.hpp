@@ -42,7 +42,8 @@
 namespace contensou {
 
 // The integration-ready form of a ContactPatch. Build it once (make_exact_model), evaluate
-// many times: exact_resultants does no heap allocation.
+// many times: exact_resultants does no heap allocation (but for a table whose kinks exhaust
+// the stack store of its outer rule: integrate_table).
 template <class T>
 struct ExactModel;
 template <class T>
@@ -274,44 +275,40 @@ inline void update_knot_terms(std::vector<double> const& knot,
   }
 }
 
-// Knot crossings of a table's outer integral: at most kMaxCrossings break points per half
-// range (a finer table gets every m-th knot as a break point; adaptivity does the rest), and
-// the interval capacity of its adaptive rule.
+// Knot crossings of a table's outer integral: at first at most kMaxCrossings break points per
+// half range (a finer table gets every m-th knot as a break point; adaptivity, splitting at
+// crossings, does the rest) and kPiecewiseCapacity intervals, on the stack; if that runs out
+// (constant f), every crossing and kCrossingCapacity intervals per crossing, on the heap.
 inline constexpr std::size_t kMaxCrossings = 256;
 inline constexpr int kPiecewiseCapacity = 640;
+inline constexpr int kCrossingCapacity = 4;
 
-// sqrt(t_k) / s_max of the interior knots with t_k < s_max^2, increasing, thinned to at most
-// kMaxCrossings: the sines of the angles where a chord's foot crosses a knot.
-inline std::size_t knot_breakpoints(const std::vector<double>& knot, double s_max,
-                                    std::size_t max_breaks,
-                                    std::array<double, kMaxCrossings>& out) {
-  if (!(s_max > 0.0)) return 0;
-  max_breaks = std::min(max_breaks, kMaxCrossings);
-  std::size_t inside = 0;
-  for (std::size_t k = 1; k + 1 < knot.size() && knot[k] < s_max * s_max; ++k) ++inside;
-  const std::size_t stride = (inside + max_breaks - 1) / max_breaks;
-  std::size_t n = 0;
-  for (std::size_t k = 1; k <= inside && n < max_breaks; k += std::max<std::size_t>(stride, 1))
-    out[n++] = std::min(1.0, std::sqrt(knot[k]) / s_max);
-  return n;
+// The number of interior knots with t_k < s_max^2: those a chord's foot crosses.
+inline std::size_t knots_inside(const std::vector<double>& knot, double s_max) {
+  if (!(s_max > 0.0) || knot.size() < 3) return 0;
+  return static_cast<std::size_t>(
+      std::lower_bound(knot.begin() + 1, knot.end() - 1, s_max * s_max) - (knot.begin() + 1));
 }
 
-// The outer intervals of a table, broken where a chord's foot crosses a knot: on [0, pi/2]
-// at asin of the knot_breakpoints, then mirrored to [pi/2, pi] (mirror = pi: x -> pi - x)
-// or to [-pi/2, 0] (mirror = 0: x -> -x). Returns their number.
-template <std::size_t N>
-int crossing_intervals(const std::vector<double>& knot, double s_max, std::size_t max_breaks,
-                       double mirror, std::array<TaggedInterval, N>& out) {
-  std::array<double, kMaxCrossings> sines;
-  const std::size_t crossings = knot_breakpoints(knot, s_max, max_breaks, sines);
+// The outer intervals of a table, broken where a chord's foot crosses a knot, at x = asin(
+// sqrt(t_k) / s_max) on [0, pi/2] for every stride-th knot inside (at most max_breaks), then
+// mirrored to [pi/2, pi] (mirror = pi: x -> pi - x) or to [-pi/2, 0] (mirror = 0: x -> -x).
+// out has room for 2 (min(max_breaks, knots_inside) + 1) intervals. Returns their number.
+inline int crossing_intervals(const std::vector<double>& knot, double s_max, std::size_t max_breaks,
+                              double mirror, TaggedInterval* out) {
+  const std::size_t inside = max_breaks > 0 ? knots_inside(knot, s_max) : 0;
+  const std::size_t stride =
+      std::max<std::size_t>(1, (inside + max_breaks - 1) / std::max<std::size_t>(max_breaks, 1));
   const double half_pi = 0.5 * std::numbers::pi;
   int nb = 0;
   double prev = 0.0;
-  for (std::size_t j = 0; j <= crossings; ++j) {
-    const double x = j < crossings ? std::asin(sines[j]) : half_pi;
+  std::size_t count = 0;
+  for (std::size_t k = 1; k <= inside && count < max_breaks; k += stride, ++count) {
+    const double x = std::asin(std::min(1.0, std::sqrt(knot[k]) / s_max));
     if (x > prev) out[nb++] = {prev, x, 0};
     prev = x;
   }
+  if (half_pi > prev) out[nb++] = {prev, half_pi, 0};
   for (int j = nb - 1; j >= 0; --j) {
     const double a = mirror == 0.0 ? -out[j].b : mirror - out[j].b;
     const double b = mirror == 0.0 ? -out[j].a : mirror - out[j].a;
@@ -319,6 +316,36 @@ int crossing_intervals(const std::vector<double>& knot, double s_max, std::size_
   }
   return 2 * nb;
 }
+
+// Bisection of a table's outer interval at the knot crossing nearest its midpoint, so that
+// kinks become interval ends (between crossings the integrand is analytic); at the midpoint if
+// no crossing lies inside, away from the ends. Crossings: s_max^2 sin^2 x = t_k on [0, pi/2],
+// mirrored as in crossing_intervals.
+struct KnotCrossingSplit {
+  const std::vector<double>* knot;
+  double s_max;
+  double mirror;
+  double operator()(double a, double b) const {
+    const double mid = 0.5 * (a + b), half_pi = 0.5 * std::numbers::pi;
+    const bool flip = mirror == 0.0 ? b <= 0.0 : a >= half_pi;
+    const double lo = flip ? (mirror == 0.0 ? -b : mirror - b) : a;
+    const double hi = flip ? (mirror == 0.0 ? -a : mirror - a) : b;
+    if (!(lo >= 0.0 && hi <= half_pi)) return mid;
+    const double xm = 0.5 * (lo + hi), sm = s_max * std::sin(xm), margin = 0.05 * (hi - lo);
+    const std::vector<double>& k = *knot;
+    const std::size_t up = std::upper_bound(k.begin(), k.end(), sm * sm) - k.begin();
+    double best = xm, gap = 2.0 * half_pi;
+    for (std::size_t j : {up - 1, up}) {
+      if (j < 1 || j + 1 >= k.size()) continue;  // interior knots only
+      const double x = std::asin(std::min(1.0, std::sqrt(k[j]) / s_max));
+      if (x > lo + margin && x < hi - margin && std::abs(x - xm) < gap) {
+        gap = std::abs(x - xm);
+        best = x;
+      }
+    }
+    return flip ? (mirror == 0.0 ? -best : mirror - best) : best;
+  }
+};
 
 // Chebyshev terms of the far-knot sums on each knot interval (update_far_sums).
 inline constexpr int kFarTerms = 18;
@@ -627,6 +654,30 @@ std::array<T, 2> representation_moments(const ExactModel<T>& m) {
 
 namespace detail {
 
+// A table's outer integral: broken at knot crossings (every m-th, at most max_breaks per half
+// range) and bisected at crossings, with the intervals on the stack; if that runs out with
+// constant f, again from every crossing with kCrossingCapacity intervals per crossing on the
+// heap (a kink at every knot: noisy data, steps). The evaluations of both attempts count.
+template <class T, class F>
+AdaptiveResult<T, 3> integrate_table(F& f, const ExactModel<T>& m, double s_max, double mirror,
+                                     std::size_t max_breaks, const std::array<double, 3>& tol) {
+  const KnotCrossingSplit split{&m.knot, s_max, mirror};
+  std::array<TaggedInterval, 2 * kMaxCrossings + 2> breaks;
+  const int nb =
+      crossing_intervals(m.knot, s_max, std::min(max_breaks, kMaxCrossings), mirror, breaks.data());
+  auto r =
+      integrate_adaptive_batch<T, 3, kPiecewiseCapacity, kGK15>(f, breaks.data(), nb, tol, split);
+  if (r.converged || m.slip_speed) return r;
+  const std::size_t inside = knots_inside(m.knot, s_max);
+  std::vector<TaggedInterval> all(2 * inside + 2);
+  const int na = crossing_intervals(m.knot, s_max, inside, mirror, all.data());
+  const int spent = r.evaluations;
+  r = integrate_adaptive_batch_heap<T, 3, kGK15>(
+      f, all.data(), na, tol, kCrossingCapacity * na + kPiecewiseCapacity, split);
+  r.evaluations += spent;
+  return r;
+}
+
 // Whether an error estimate [N, N, N m] meets a tolerance relative to f N (forces) and f N R
 // (torque), scale_F = f N.
 inline bool within_tolerance(const Resultants<double>& e, double tol, double scale_F, double R) {
@@ -847,9 +898,8 @@ ExactResult<T> exact_resultants(const ExactModel<T>& m, const Kinematics<T>& k,
   detail::AdaptiveResult<T, 3> res;
   const bool fine = tol < 1e-8;
   const double pi = std::numbers::pi;
-  // Break points of a table's outer integral (knot crossings), on the stack.
+  // Break points of a table's outer integral (knot crossings) at first, per half range.
   const std::size_t max_breaks = tol >= 1e-7 ? 16 : (tol >= 1e-9 ? 64 : 256);
-  std::array<detail::TaggedInterval, 2 * detail::kMaxCrossings + 4> breaks;
   if (dv < R) {
     // Interior centre: the rays at beta and beta + pi form one chord, so
     // F = integral_0^pi dbeta u(beta) integral_chord sigma (tau - tau_c) dtau. The chord at
@@ -887,9 +937,7 @@ ExactResult<T> exact_resultants(const ExactModel<T>& m, const Kinematics<T>& k,
       // A table: a chord's foot crosses knot t_k at sin theta = sqrt(t_k) R / d (t_foot =
       // (d/R)^2 sin^2 theta), where the chord integrals have a (t_k - t_foot)^(5/2) kink:
       // break there (and at pi/2), G7K15 on each piece.
-      const int nb = detail::crossing_intervals(m.knot, dv / R, max_breaks, pi, breaks);
-      res = detail::integrate_adaptive_batch<T, 3, detail::kPiecewiseCapacity, detail::kGK15>(
-          f, breaks.data(), nb, tol_out);
+      res = detail::integrate_table(f, m, dv / R, pi, max_breaks, tol_out);
     } else {
       res =
           fine ? detail::integrate_adaptive_batch<T, 3, 160, detail::kGK31>(f, quarters, 4, tol_out)
@@ -929,9 +977,7 @@ ExactResult<T> exact_resultants(const ExactModel<T>& m, const Kinematics<T>& k,
     const detail::TaggedInterval halves[2] = {{-0.5 * pi, 0.0, 0}, {0.0, 0.5 * pi, 0}};
     if (!m.piece.empty()) {
       // A table: t_foot = sin^2 phi crosses knot t_k at phi = +-asin(sqrt(t_k)).
-      const int nb = detail::crossing_intervals(m.knot, 1.0, max_breaks, 0.0, breaks);
-      res = detail::integrate_adaptive_batch<T, 3, detail::kPiecewiseCapacity, detail::kGK15>(
-          f, breaks.data(), nb, tol_out);
+      res = detail::integrate_table(f, m, 1.0, 0.0, max_breaks, tol_out);
     } else {
       res =
           fine ? detail::integrate_adaptive_batch<T, 3, 160, detail::kGK31>(f, quarters, 4, tol_out)
