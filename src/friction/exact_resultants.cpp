@@ -134,27 +134,6 @@ struct MomentNode {
   std::array<double, kMoments> mu;
 };
 
-// integral_{lo}^{hi} q(t) (t - t_f)^(-1/2, 1/2) dt of the cubic q = sum_j c_j (t - t0)^j,
-// t_f <= lo: with t = t_f + w^2 the integrands are polynomials of degree 6 and 8 in w, so
-// 5-point Gauss-Legendre in w is exact (s = t - t0 = (lo - t0) + (w - w_lo)(w + w_lo)).
-void cubic_moments(const std::array<double, 4>& c, double t0, double lo, double hi, double t_f,
-                   double& M0, double& M2) {
-  constexpr double x[5] = {-0.90617984593866399280, -0.53846931010568309104, 0.0,
-                           0.53846931010568309104, 0.90617984593866399280};
-  constexpr double wt[5] = {0.23692688505618908751, 0.47862867049936646804, 0.56888888888888888889,
-                            0.47862867049936646804, 0.23692688505618908751};
-  const double wl = std::sqrt(lo - t_f), wh = std::sqrt(hi - t_f);
-  const double mid = 0.5 * (wl + wh), half = 0.5 * (wh - wl);
-  M0 = M2 = 0.0;
-  for (int i = 0; i < 5; ++i) {
-    const double w = mid + half * x[i];
-    const double s = (lo - t0) + (w - wl) * (w + wl);
-    const double q = 2.0 * half * wt[i] * (c[0] + s * (c[1] + s * (c[2] + s * c[3])));
-    M0 += q;
-    M2 += q * w * w;
-  }
-}
-
 MomentNode leaf_moments(const std::array<double, 4>& c, double ta, double tb) {
   // p(c + H u) = sum_j c_j H^j (1 + u)^j = sum_i e_i u^i; mu_m = H sum_i e_i integral u^(m+i).
   MomentNode node{0.5 * (ta + tb), 0.5 * (tb - ta), {}};
@@ -230,20 +209,20 @@ void cover_far_pieces(const MomentTree& tree, std::size_t first, double b,
   }
 }
 
-// The far knots' sums at t_f (< knot[first]): the antiderivative of the piece below knot[first]
-// from t_f to it, plus the integrals over the pieces from `first` on (update_far_sums).
+// The far sums at t_f (< knot[first]): the integrals of the pieces from `first` on, plus, if
+// the near knots are knot terms, the antiderivative of the piece below knot[first] from t_f to
+// it (update_far_sums).
 void far_sums_at(const std::vector<double>& knot, const std::vector<std::array<double, 4>>& piece,
-                 std::size_t first, const std::vector<CoverEntry>& cover, double t_f, double& M0,
-                 double& M2) {
+                 std::size_t first, bool knot_terms, const std::vector<CoverEntry>& cover,
+                 double t_f, double& M0, double& M2) {
   M0 = M2 = 0.0;
-  if (first >= knot.size()) return;
   double a0, a2;
-  cubic_moments(piece[first - 1], knot[first - 1], t_f, knot[first], t_f, a0, a2);
-  M0 += a0;
-  M2 += a2;
+  if (knot_terms && first < knot.size())
+    cubic_moments(piece[first - 1], knot[first - 1], t_f, knot[first], t_f, true, M0, M2);
   for (const CoverEntry& e : cover) {
     if (e.node == nullptr) {
-      cubic_moments(piece[e.piece], knot[e.piece], knot[e.piece], knot[e.piece + 1], t_f, a0, a2);
+      cubic_moments(piece[e.piece], knot[e.piece], knot[e.piece], knot[e.piece + 1], t_f, false, a0,
+                    a2);
       M0 += a0;
       M2 += a2;
       continue;
@@ -267,13 +246,14 @@ void far_sums_at(const std::vector<double>& knot, const std::vector<std::array<d
 // of the series from the sums at test points.
 double fit_far_series(const std::vector<double>& knot,
                       const std::vector<std::array<double, 4>>& piece, std::size_t first,
-                      const std::vector<CoverEntry>& cover, double a, double b, double* c0,
-                      double* c2) {
+                      bool knot_terms, const std::vector<CoverEntry>& cover, double a, double b,
+                      double* c0, double* c2) {
   constexpr int N = kFarTerms;
   double v0[N], v2[N];
   for (int j = 0; j < N; ++j) {
     const double z = std::cos(std::numbers::pi * (j + 0.5) / N);
-    far_sums_at(knot, piece, first, cover, 0.5 * (a + b) + 0.5 * (b - a) * z, v0[j], v2[j]);
+    far_sums_at(knot, piece, first, knot_terms, cover, 0.5 * (a + b) + 0.5 * (b - a) * z, v0[j],
+                v2[j]);
   }
   for (int i = 0; i < N; ++i) {
     double s0 = 0.0, s2 = 0.0;
@@ -288,7 +268,7 @@ double fit_far_series(const std::vector<double>& knot,
   double dev = 0.0;
   for (double z : {-1.0, -0.77, -0.31, 0.13, 0.58, 0.93, 1.0}) {
     double e0, e2;
-    far_sums_at(knot, piece, first, cover, 0.5 * (a + b) + 0.5 * (b - a) * z, e0, e2);
+    far_sums_at(knot, piece, first, knot_terms, cover, 0.5 * (a + b) + 0.5 * (b - a) * z, e0, e2);
     double s0 = 0.0, s2 = 0.0, tp = 1.0, tc = z;
     for (int i = 0; i < N; ++i) {
       const double t = i == 0 ? 1.0 : (i == 1 ? z : 2.0 * z * tc - tp);
@@ -308,11 +288,13 @@ double fit_far_series(const std::vector<double>& knot,
 
 double update_far_sums(const std::vector<double>& knot,
                        const std::vector<std::array<double, 4>>& piece, std::vector<double>& far0,
-                       std::vector<double>& far2, std::vector<std::size_t>& far_from) {
+                       std::vector<double>& far2, std::vector<std::size_t>& far_from,
+                       std::vector<unsigned char>& near_integrated) {
   const std::size_t n = knot.size() - 1;  // intervals
   far0.assign(n * kFarTerms, 0.0);
   far2.assign(n * kFarTerms, 0.0);
   far_from.assign(n, 0);
+  near_integrated.assign(n, 0);
   const MomentTree tree = build_moment_tree(knot, piece);
   std::vector<CoverEntry> cover;
   double dev = 0.0;
@@ -321,9 +303,13 @@ double update_far_sums(const std::vector<double>& knot,
     std::size_t first = k + 2;
     while (first < knot.size() && first < k + 1 + kMaxNear && knot[first] - b < b - a) ++first;
     far_from[k] = first;
+    // Knot terms only if no near piece is narrower than 1/8 of its reach from the interval.
+    const double reach = knot[std::min(first, n)] - a;
+    for (std::size_t j = k; j < std::min(first, n); ++j)
+      if (8.0 * (knot[j + 1] - knot[j]) < reach) near_integrated[k] = 1;
     cover_far_pieces(tree, first, b, cover);
-    dev = std::max(dev, fit_far_series(knot, piece, first, cover, a, b, &far0[k * kFarTerms],
-                                       &far2[k * kFarTerms]));
+    dev = std::max(dev, fit_far_series(knot, piece, first, !near_integrated[k], cover, a, b,
+                                       &far0[k * kFarTerms], &far2[k * kFarTerms]));
   }
   return dev;
 }
@@ -384,11 +370,11 @@ ExactModel<double> make_exact_model(const ContactPatch& patch, double representa
     }
     m.knot.push_back(1.0);
     if (prof.clip_negative) clip_pieces(m.knot, m.piece);
-    detail::update_knot_terms(m.knot, m.piece, m.knot_m0, m.knot_m2);
     // The far-knot series' deviation, as a bound on the chord integrals' error (in units of
     // the profile times the chord length, as a profile representation error is).
+    detail::update_knot_terms(m.knot, m.piece, m.knot_m0, m.knot_m2);
     m.representation_error =
-        detail::update_far_sums(m.knot, m.piece, m.far_m0, m.far_m2, m.far_from);
+        detail::update_far_sums(m.knot, m.piece, m.far_m0, m.far_m2, m.far_from, m.near_integrated);
   } else {
     const ChebyshevFit fit =
         fit_chebyshev([&](double t) { return shape_value(prof, rho_max * std::sqrt(t)); },

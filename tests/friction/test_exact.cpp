@@ -699,9 +699,9 @@ TEST(ExactResultants, ConvergedFlagAgreesWithTheEstimate) {
 }
 
 // Dense tables reach the requested tolerance in every regime, against the ring oracle (which
-// does not use the integrator's chords, knot terms or far-knot series), converged and with an
-// estimate that bounds the achieved error. Before the far-knot sums were taken without the
-// knot terms' cancellation the 1,001- and 10,001-point tables stopped at 3e-11 and 1e-8 of f N.
+// does not use the integrator's chords or far-knot series), converged and with an estimate
+// that bounds the achieved error. While the far-knot sums were antiderivatives at the knots,
+// which cancel, the 1,001- and 10,001-point tables stopped at 3e-11 and 1e-8 of f N.
 TEST(ExactResultants, DenseTablesReachTheToleranceAgainstTheRingOracle) {
   for (int n : {1001, 10001}) {
     std::vector<double> rho;
@@ -764,6 +764,87 @@ TEST(ExactResultants, TableWithAKinkAtEveryKnotReachesTheTolerance) {
       EXPECT_LE(std::abs(r.resultants.Mz - o.Mz),
                 std::min(tol * fN * R, r.error.Mz + 1e-14 * fN * R))
           << ratio << " " << tol;
+    }
+  }
+}
+
+// 1,001 random knots (intervals from 1e-7 to 1e-2 wide side by side) with 5 % noise.
+ContactPatch random_knot_patch(std::vector<double>& rho) {
+  std::mt19937_64 rng(9);
+  std::uniform_real_distribution<double> U(0.0, 1.0);
+  rho = {0.0, 1.0};
+  for (int i = 0; i < 999; ++i) rho.push_back(U(rng));
+  std::sort(rho.begin(), rho.end());
+  std::vector<double> pv;
+  for (double r : rho)
+    pv.push_back(1.0 + 0.4 * r * r - 0.9 * std::pow(r, 4) + 0.05 * (U(rng) - 0.5));
+  ContactPatch p = seed_patch();
+  p.profile = tabulated_profile(rho, pv);
+  return p;
+}
+
+// Tables with uneven knots: 1,001 random knots with 5 % noise (intervals from 1e-7 to 1e-2
+// wide side by side) and 401 knots from rho = 0.3 (the constant below them one wide interval).
+// Where a chord's near pieces are much narrower than their distance they are integrated, not
+// summed as antiderivatives at the knots (with those the random table's far-knot series
+// deviated by 1e-9); at 1e-12 in three regimes against the ring oracle.
+TEST(ExactResultants, TablesWithUnevenKnotsStayExact) {
+  std::vector<std::vector<double>> rhos(2), ps(2);
+  for (int i = 0; i <= 400; ++i) {
+    rhos[1].push_back(0.3 + 0.7 * i / 400.0);
+    ps[1].push_back(1.0 + 0.4 * std::pow(rhos[1].back(), 2) - 0.9 * std::pow(rhos[1].back(), 4));
+  }
+  for (int t = 0; t < 2; ++t) {
+    ContactPatch p = t == 0 ? random_knot_patch(rhos[0]) : seed_patch();
+    if (t == 1) p.profile = tabulated_profile(rhos[t], ps[t]);
+    p.profile.kx = 0.1;
+    p.profile.ky = -0.05;
+    p.kappa = 0.8;
+    const ExactModel<double> m = make_exact_model(p);
+    EXPECT_LT(m.representation_error, 1e-13) << t;
+    const double fN = p.friction * normal_load(p), R = p.radius_m;
+    for (double ratio : {0.5, 1.001, 2.0}) {
+      const Kinematics<double> k = dense_kinematics(ratio, R);
+      const Resultants<double> o = ring_oracle(p, rhos[t], k);
+      const auto r = exact_resultants(m, k, {1e-12});
+      EXPECT_TRUE(r.converged) << t << " " << ratio;
+      EXPECT_NEAR(r.resultants.Fx, o.Fx, 1e-12 * fN) << t << " " << ratio;
+      EXPECT_NEAR(r.resultants.Fy, o.Fy, 1e-12 * fN) << t << " " << ratio;
+      EXPECT_NEAR(r.resultants.Mz, o.Mz, 1e-12 * fN * R) << t << " " << ratio;
+    }
+  }
+}
+
+// Jets through a dense table's chords (knot terms on the even table; on the random one also
+// integrated near pieces, whose Gauss nodes move with the foot, the piece under the foot from
+// w = 0, no square root of 0 differentiated) match central differences in (vx, vy, omega).
+TEST(ExactResultants, DenseTableJetsMatchCentralDifferences) {
+  using J = ceres::Jet<double, 3>;
+  std::vector<double> rho;
+  for (const ContactPatch& p : {dense_table_patch(1001, rho), random_knot_patch(rho)}) {
+    const ExactModel<double> m = make_exact_model(p);
+    const ExactModel<J> mj = promote<J>(m);
+    const double fN = p.friction * normal_load(p), R = p.radius_m;
+    for (double ratio : {0.5, 2.0}) {
+      const Kinematics<double> k = dense_kinematics(ratio, R);
+      const auto rj =
+          exact_resultants(mj, Kinematics<J>{J(k.vx, 0), J(k.vy, 1), J(k.omega, 2)}, {1e-12});
+      const J rows[3] = {rj.resultants.Fx, rj.resultants.Fy, rj.resultants.Mz};
+      const double h[3] = {1e-6 * 20.0 * R, 1e-6 * 20.0 * R, 1e-6 * 20.0};
+      for (int j = 0; j < 3; ++j) {
+        double xp[3] = {k.vx, k.vy, k.omega}, xm[3] = {k.vx, k.vy, k.omega};
+        xp[j] += h[j];
+        xm[j] -= h[j];
+        const auto rp = exact_resultants(m, {xp[0], xp[1], xp[2]}, {1e-13}).resultants;
+        const auto rm = exact_resultants(m, {xm[0], xm[1], xm[2]}, {1e-13}).resultants;
+        const double fd[3] = {(rp.Fx - rm.Fx) / (2 * h[j]), (rp.Fy - rm.Fy) / (2 * h[j]),
+                              (rp.Mz - rm.Mz) / (2 * h[j])};
+        // Row scales: f N per unit of the variable (times R for Mz).
+        const double per = j < 2 ? 1.0 / (20.0 * R) : 1.0 / 20.0;
+        for (int c = 0; c < 3; ++c)
+          EXPECT_NEAR(rows[c].v[j], fd[c], 1e-7 * fN * per * (c == 2 ? R : 1.0))
+              << describe(p.profile) << " " << ratio << " row " << c << " col " << j;
+      }
     }
   }
 }

@@ -66,17 +66,19 @@ struct ExactModel {
   std::optional<SlipSpeedFriction<T>> slip_speed;
   // A table (TabulatedShape) instead: p = sum_j piece[k][j] (t - knot[k])^j on
   // [knot[k], knot[k+1]], knot from 0 to 1, and the knot terms of the chord integrals
-  // (knot_m0, knot_m2; update_knot_terms). Exact for the interpolant: no representation error.
+  // (knot_m0, knot_m2; update_knot_terms). Exact for the interpolant: no representation error
+  // but that of the far pieces' series (update_far_sums).
   std::vector<double> knot;
   std::vector<std::array<double, 4>> piece;
   std::vector<std::array<double, 4>> knot_m0, knot_m2;
   std::vector<double> far_m0, far_m2;  // per knot interval: Chebyshev series of the far knots
-  std::vector<std::size_t> far_from;   // per knot interval: its first far knot
-  std::vector<T> chord_q0, chord_q2;   // chord transforms (update_chord_transforms)
-  std::vector<double> chord_tail;      // sum_{j >= k} |q0_j| + |q2_j|: truncation bound
-  double representation_error = 0.0;   // bound on |p - representation| (dimensionless)
-  double load_area = 0.0;              // N / p* = 2 pi R^2 A^1 [m^2]
-  double friction_scale = 0.0;         // f, or max(f_s, f_k)
+  std::vector<unsigned char> near_integrated;  // per knot interval: near pieces integrated
+  std::vector<std::size_t> far_from;           // per knot interval: its first far knot
+  std::vector<T> chord_q0, chord_q2;           // chord transforms (update_chord_transforms)
+  std::vector<double> chord_tail;              // sum_{j >= k} |q0_j| + |q2_j|: truncation bound
+  double representation_error = 0.0;           // bound on |p - representation| (dimensionless)
+  double load_area = 0.0;                      // N / p* = 2 pi R^2 A^1 [m^2]
+  double friction_scale = 0.0;                 // f, or max(f_s, f_k)
 };
 
 // Builds the model: Chebyshev fit of p in t = rho^2 to representation_tolerance relative to
@@ -114,6 +116,7 @@ ExactModel<T> promote(const ExactModel<double>& m) {
   out.far_m0 = m.far_m0;
   out.far_m2 = m.far_m2;
   out.far_from = m.far_from;
+  out.near_integrated = m.near_integrated;
   for (double c : m.chord_q0) out.chord_q0.push_back(T(c));
   for (double c : m.chord_q2) out.chord_q2.push_back(T(c));
   out.chord_tail = m.chord_tail;
@@ -240,8 +243,9 @@ namespace detail {
 // knot_m[k][j] = kappa_j (c_j of the piece below, about the knot - c_j of the piece above):
 // within a knot no term is differenced against another of its size, and a C1 table leaves only
 // j = 2, 3. Across knots they cancel: a piece's integral, ~ |c_3| h^4 delta^(-1/2), is the
-// difference of two knot terms ~ |c_3| delta^(7/2); so they are summed only over the near knots
-// (delta of a few intervals) and the far ones are integrated piece by piece (update_far_sums).
+// difference of two knot terms ~ |c_3| delta^(7/2); so they serve only the near knots, and only
+// where no near piece is narrower than 1/8 of the distance (update_far_sums); elsewhere the
+// pieces are integrated (cubic_moments).
 inline void update_knot_terms(std::vector<double> const& knot,
                               std::vector<std::array<double, 4>> const& piece,
                               std::vector<std::array<double, 4>>& m0,
@@ -347,25 +351,60 @@ struct KnotCrossingSplit {
   }
 };
 
-// Chebyshev terms of the far-knot sums on each knot interval (update_far_sums).
+// Chebyshev terms of the far pieces' series on each knot interval (update_far_sums).
 inline constexpr int kFarTerms = 18;
 
-// On the knot interval [knot[k], knot[k+1]] the knots at least one interval width beyond its
-// upper end (from far_from[k] on, at most kMaxNear nearer ones) are far: their sum is smooth
-// there (its nearest singularity lies a width away, so a Chebyshev series converges like
-// 5.8^-n) and is stored as a series of kFarTerms terms; the near ones are summed in closed
-// form. A chord thus costs a few knot terms and two short series, whatever the number of
-// knots. The series are fitted to the far sums evaluated without the knot terms (whose
-// antiderivatives, of size |c_3| (t_k - t_f)^(7/2), cancel to 1e-7 of the profile on a
-// 10,001-point table with a step; exact_resultants.cpp). Returns the largest deviation of the
-// series from those sums at test points (M0 and M2). O(n log n) in the number of knots.
-inline constexpr std::size_t kMaxNear = 32;
+// The chord integrals of a piecewise profile (theory.md section 2):
+//   M0(t_f) = integral_{-h}^{h} p(t_f + w^2) dw = integral_{t_f}^1 p(t) (t - t_f)^(-1/2) dt,
+//   M2(t_f) = integral_{-h}^{h} p(t_f + w^2) w^2 dw = integral_{t_f}^1 p(t) (t - t_f)^(1/2) dt.
+// Over a piece [lo, hi] of the cubic q = sum_j c_j (t - t0)^j (t_f <= lo), with t = t_f + w^2,
+// they are integral 2 q dw and integral 2 q w^2 dw, polynomials of degree 6 and 8 in w: 5-point
+// Gauss-Legendre in w is exact, s = t - t0 = (lo - t0) + (w - w_lo)(w + w_lo); from_foot: lo =
+// t_f (w_lo = 0, so no square root of 0 is differentiated). Every node's term is bounded by
+// the cubic's values on the piece: no cancellation (the antiderivatives at the knots, of size
+// |c_3| (t_k - t_f)^(7/2), cancelled to 1e-7 of the profile on a 10,001-point table).
+template <class T>
+void cubic_moments(const std::array<double, 4>& c, double t0, double lo, double hi, const T& t_f,
+                   bool from_foot, T& M0, T& M2) {
+  using std::sqrt;
+  constexpr double x[5] = {-0.90617984593866399280, -0.53846931010568309104, 0.0,
+                           0.53846931010568309104, 0.90617984593866399280};
+  constexpr double wt[5] = {0.23692688505618908751, 0.47862867049936646804, 0.56888888888888888889,
+                            0.47862867049936646804, 0.23692688505618908751};
+  const T wl = from_foot ? T(0.0) : T(sqrt(lo - t_f)), wh = sqrt(hi - t_f);
+  const T base = from_foot ? T(t_f - t0) : T(lo - t0);
+  const T mid = 0.5 * (wl + wh), half = 0.5 * (wh - wl);
+  M0 = T(0.0);
+  M2 = T(0.0);
+  for (int i = 0; i < 5; ++i) {
+    const T w = mid + half * x[i];
+    const T s = base + (w - wl) * (w + wl);
+    const T q = 2.0 * wt[i] * half * (c[0] + s * (c[1] + s * (c[2] + s * c[3])));
+    M0 += q;
+    M2 += q * w * w;
+  }
+}
+
+// On the knot interval [knot[k], knot[k+1]] the pieces from the first knot at least one
+// interval width beyond its upper end (knot far_from[k], at most kMaxNear knots on) are far:
+// their integrals are smooth there (the nearest singularity lies a width away, so a Chebyshev
+// series converges like 5.8^-n) and stored as a series of kFarTerms terms. The near ones are
+// summed at each call: as knot terms (one or two on an even table), or, where a near piece is
+// narrower than 1/8 of the distance from the interval (uneven knots: the knot terms would
+// cancel), integrated (cubic_moments; near_integrated[k] = 1). With knot terms the series also
+// holds the antiderivative of the piece below knot far_from[k] (which they leave out), so that
+// its (knot - t_f)^(1/2) singularity cancels. A chord thus costs a few knot terms or pieces and
+// two short series, whatever the number of knots. The series are fitted to integrals summed on
+// a tree of the pieces' moments (exact_resultants.cpp). Returns the largest deviation of the
+// series from those integrals at test points (M0 and M2). O(n log n) in the number of knots.
+inline constexpr std::size_t kMaxNear = 512;
 double update_far_sums(const std::vector<double>& knot,
                        const std::vector<std::array<double, 4>>& piece, std::vector<double>& far0,
-                       std::vector<double>& far2, std::vector<std::size_t>& far_from);
+                       std::vector<double>& far2, std::vector<std::size_t>& far_from,
+                       std::vector<unsigned char>& near_integrated);
 
-// M0 and M2 of a piecewise profile at t_f: the near knots above t_f in closed form, the
-// others from the far-knot series of t_f's interval.
+// M0 and M2 of a piecewise profile at t_f: the near knot terms or pieces above t_f, the far
+// pieces from the series of t_f's interval.
 template <class T>
 void piecewise_chord_moments(const ExactModel<T>& m, const T& t_f, T& M0, T& M2) {
   using std::sqrt;
@@ -376,14 +415,23 @@ void piecewise_chord_moments(const ExactModel<T>& m, const T& t_f, T& M0, T& M2)
   if (!(tv < 1.0)) return;
   const std::size_t n = knot.size() - 1;
   std::size_t k = std::upper_bound(knot.begin(), knot.end(), tv) - knot.begin();
-  k = std::min(std::max<std::size_t>(k, 1), n) - 1;      // t_f in [knot[k], knot[k+1])
-  for (std::size_t j = k + 1; j < m.far_from[k]; ++j) {  // the near knots, in closed form
-    const T d = knot[j] - t_f;
-    const T r = sqrt(d);
-    const auto& a = m.knot_m0[j];
-    const auto& b = m.knot_m2[j];
-    M0 += r * (a[0] + d * (a[1] + d * (a[2] + d * a[3])));
-    M2 += r * d * (b[0] + d * (b[1] + d * (b[2] + d * b[3])));
+  k = std::min(std::max<std::size_t>(k, 1), n) - 1;  // t_f in [knot[k], knot[k+1])
+  if (m.near_integrated[k]) {
+    for (std::size_t j = k; j < std::min(m.far_from[k], n); ++j) {
+      T a0, a2;
+      cubic_moments(m.piece[j], knot[j], knot[j], knot[j + 1], t_f, j == k, a0, a2);
+      M0 += a0;
+      M2 += a2;
+    }
+  } else {
+    for (std::size_t j = k + 1; j < m.far_from[k]; ++j) {
+      const T d = knot[j] - t_f;
+      const T r = sqrt(d);
+      const auto& a = m.knot_m0[j];
+      const auto& b = m.knot_m2[j];
+      M0 += r * (a[0] + d * (a[1] + d * (a[2] + d * a[3])));
+      M2 += r * d * (b[0] + d * (b[1] + d * (b[2] + d * b[3])));
+    }
   }
   const double lo = knot[k], hi = knot[k + 1];
   const T z = (2.0 * t_f - lo - hi) / (hi - lo);
