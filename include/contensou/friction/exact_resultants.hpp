@@ -698,10 +698,6 @@ std::array<T, 2> representation_moments(const ExactModel<T>& m) {
   return a;
 }
 
-}  // namespace detail
-
-namespace detail {
-
 // A table's outer integral: broken at knot crossings (every m-th, at most max_breaks per half
 // range) and bisected at crossings, with the intervals on the stack; if that runs out with
 // constant f, again from every crossing with kCrossingCapacity intervals per crossing on the
