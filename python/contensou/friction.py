@@ -24,7 +24,7 @@ class ExactResults(NamedTuple):
 
     resultants: np.ndarray  # (..., 3): Fx, Fy [N], Mz [N m], friction on the tire
     error: np.ndarray  # (..., 3): estimated absolute error [N, N, N m]
-    converged: np.ndarray  # (...): False where the interval budget ran out before the tolerance
+    converged: np.ndarray  # (...): True where every component of `error` meets the tolerance
 
 
 MAX_THREADS = 256
