@@ -1,6 +1,6 @@
 #!/usr/bin/env python3
-"""Per-call overhead of the Python package (issue 13): contensou.exact_resultants and
-contensou.fractional_resultants on 10^5 points against the plain C++ loop over the same points
+"""Per-call overhead of the Python package (issue 13): contensou.exact_resultants,
+contensou.exact_law_resultants and contensou.fractional_resultants on 10^5 points against the plain C++ loop over the same points
 (contensou._core._cpp_loop_*: a std::vector of kinematics in, a std::vector of results out,
 timed inside C++, results into a new std::vector). Both on one thread, alternated; minimum
 and median over repetitions. Reported, not asserted (target:
@@ -54,6 +54,11 @@ def main() -> None:
         rows.append((f"exact resultants, tol {tol:g}", *paired_times(
             lambda: c.exact_resultants(model, vx, vy, w, tolerance=tol),
             lambda: c._core._cpp_loop_exact(model, vx, vy, w, tol), args.repeat)))
+    exact = c.ExactLaw(patch, tolerance=1e-8)
+    for jac in (False, True):
+        rows.append(("exact law" + (" + Jacobian" if jac else ""), *paired_times(
+            lambda: c.exact_law_resultants(exact, vx, vy, w, jacobian=jac),
+            lambda: c._core._cpp_loop_exact_law(exact, vx, vy, w, jac), 50 * args.repeat)))
     for jac in (False, True):
         rows.append(("fractional law" + (" + Jacobian" if jac else ""), *paired_times(
             lambda: c.fractional_resultants(law, vx, vy, w, jacobian=jac),

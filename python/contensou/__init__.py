@@ -1,10 +1,12 @@
 """contensou: coupled sliding-spinning dry friction over a contact patch, from Python.
 
-numpy in, numpy out: the exact resultants and the fractional law on arrays of any shape
-(``contensou.friction``), identification of the law from measured diagrams given as a pandas
-DataFrame, arrays or a CSV path (``contensou.identify``), and the landing-gear shimmy model
-with stability maps in-process or on a ``dask.distributed`` client (``contensou.gear``), and
-the patch's limit surface for set-valued (stick without creep) friction (``LimitSurface``).
+numpy in, numpy out: the exact resultants, the exact law (``ExactLaw``: the same resultants
+from tables built once, at the cost of a closed-form law, with its Jacobian) and the fractional
+law on arrays of any shape (``contensou.friction``), identification of the law from measured
+diagrams given as a pandas DataFrame, arrays or a CSV path (``contensou.identify``), and the
+landing-gear shimmy model with stability maps in-process or on a ``dask.distributed`` client
+(``contensou.gear``), and the patch's limit surface for set-valued (stick without creep)
+friction (``LimitSurface``).
 The loops run in C++ (the extension ``contensou._core``) with the GIL released.
 
 Bad input raises ``ValueError`` with the C++ library's message.
@@ -32,7 +34,14 @@ from ._core import (
     tabulated_profile,
     uniform_profile,
 )
-from .friction import ExactResults, exact_resultants, fractional_resultants, shape_values
+from .friction import (
+    ExactLaw,
+    ExactResults,
+    exact_law_resultants,
+    exact_resultants,
+    fractional_resultants,
+    shape_values,
+)
 from .gear import (
     LandingConfig,
     LandingResult,
@@ -50,6 +59,7 @@ __all__ = [
     "ContactPatch",
     "ContactStep",
     "EllipsoidalLimitSurface",
+    "ExactLaw",
     "ExactModel",
     "ExactResults",
     "FractionalLaw",
@@ -66,6 +76,7 @@ __all__ = [
     "StabilityMapResult",
     "__version__",
     "cosine_series_profile",
+    "exact_law_resultants",
     "exact_resultants",
     "fractional_law_fitted",
     "fractional_law_from_patch",

@@ -1,4 +1,4 @@
-"""Vectorised friction: exact resultants and the fractional law on numpy arrays.
+"""Vectorised friction: exact resultants, the exact law and the fractional law on numpy arrays.
 
 vx, vy and omega broadcast against each other (numpy rules); results have the broadcast
 shape with a last axis of 3 (Fx, Fy, Mz), Jacobians a last two axes of 3 x 3 (rows Fx, Fy,
@@ -8,7 +8,7 @@ Mz; columns vx, vy, omega). The loop over points runs in C++ with the GIL releas
 
 from __future__ import annotations
 
-from typing import NamedTuple, Union
+from typing import Literal, NamedTuple, Union, overload
 
 import numpy as np
 import numpy.typing as npt
@@ -89,6 +89,76 @@ def exact_resultants(
     return ExactResults(
         force.reshape(shape + (3,)), error.reshape(shape + (3,)), converged.reshape(shape)
     )
+
+
+class ExactLaw(_core._ExactLaw):
+    """The exact resultants of a patch from tables built once (contensou/friction/exact_law.hpp).
+
+    ``model`` is an ``ExactModel`` or a ``ContactPatch`` (its model is built here). The build
+    takes tens of milliseconds for constant friction and about a second or more with slip-speed
+    friction f(w), on ``threads`` threads (0: one per core; the law is the same for any number).
+    Evaluate it with ``exact_law_resultants``: the cost of a closed-form law, within
+    ``achieved`` (a certified bound, relative to f N for forces and f N R for the torque) of
+    ``exact_resultants``. ``tolerance`` is the requested bound, in (1e-14, 1e-2); ``reached``
+    tells whether ``achieved`` is within it.
+    """
+
+    def __init__(
+        self, model: Union[ExactModel, ContactPatch], tolerance: float = 1e-8, threads: int = 0
+    ) -> None:
+        if isinstance(model, ContactPatch):
+            model = ExactModel(model)
+        if not isinstance(model, ExactModel):
+            raise TypeError(
+                f"model: expected an ExactModel or a ContactPatch, not {type(model).__name__}")
+        try:
+            tol = float(tolerance)
+        except (TypeError, ValueError):
+            raise ValueError(f"tolerance = {tolerance!r}: must be a number") from None
+        super().__init__(model, tol, _check_threads(threads))
+
+
+@overload
+def exact_law_resultants(
+    law: ExactLaw, vx: ArrayLike, vy: ArrayLike, omega: ArrayLike, *,
+    jacobian: Literal[False] = False, threads: int = 1,
+) -> np.ndarray: ...
+
+
+@overload
+def exact_law_resultants(
+    law: ExactLaw, vx: ArrayLike, vy: ArrayLike, omega: ArrayLike, *,
+    jacobian: Literal[True], threads: int = 1,
+) -> tuple[np.ndarray, np.ndarray]: ...
+
+
+@overload
+def exact_law_resultants(
+    law: ExactLaw, vx: ArrayLike, vy: ArrayLike, omega: ArrayLike, *,
+    jacobian: bool, threads: int = 1,
+) -> Union[np.ndarray, tuple[np.ndarray, np.ndarray]]: ...
+
+
+def exact_law_resultants(
+    law: ExactLaw,
+    vx: ArrayLike,
+    vy: ArrayLike,
+    omega: ArrayLike,
+    *,
+    jacobian: bool = False,
+    threads: int = 1,
+) -> Union[np.ndarray, tuple[np.ndarray, np.ndarray]]:
+    """The exact law at every (vx, vy, omega) (broadcast): (..., 3), and with ``jacobian=True``
+    also d(Fx, Fy, Mz)/d(vx, vy, omega) as (..., 3, 3) (the exact derivative of the law; at
+    v = 0 and omega = 0 its limits). Zero at rest."""
+    shape, (x, y, w) = _flatten(vx, vy, omega)
+    n = int(np.prod(shape, dtype=np.int64))
+    force = np.empty((n, 3))
+    jac = np.empty((n, 3, 3)) if jacobian else None
+    _core._exact_law_loop(law, x, y, w, force, jac, _check_threads(threads))
+    if jac is None:
+        return force.reshape(shape + (3,))
+    return force.reshape(shape + (3,)), jac.reshape(shape + (3, 3))
 
 
 def fractional_resultants(

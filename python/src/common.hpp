@@ -28,6 +28,7 @@ void bind_friction(nb::module_& m);
 void bind_limit_surface(nb::module_& m);
 void bind_identification(nb::module_& m);
 void bind_gear(nb::module_& m);
+void bind_exact_law(nb::module_& m);
 
 // A numpy array that owns `values` (row-major, the given shape).
 inline nb::object to_numpy(std::vector<double> values, std::initializer_list<std::size_t> shape) {
@@ -44,6 +45,15 @@ struct Strided {
   explicit Strided(const InArray& a) : data(a.data()), stride(a.shape(0) == 1 ? 0 : 1) {}
   double operator[](std::size_t i) const { return data[i * stride]; }
 };
+
+// Inputs of n points each, or of one broadcast to all.
+inline void check_lengths(const InArray& vx, const InArray& vy, const InArray& omega,
+                          std::size_t n) {
+  for (const InArray* a : {&vx, &vy, &omega})
+    if (a->shape(0) != n && a->shape(0) != 1)
+      throw std::invalid_argument("inputs of " + std::to_string(a->shape(0)) +
+                                  " points do not broadcast to " + std::to_string(n));
+}
 
 // Runs body(begin, end) over [0, n) in `threads` contiguous chunks (0: one per core). An
 // exception in a chunk stops that chunk; the one of the lowest chunk is rethrown after all have

@@ -31,13 +31,6 @@ const char* shape_kind(const PressureProfile& p) {
       p.shape);
 }
 
-void check_lengths(const InArray& vx, const InArray& vy, const InArray& omega, std::size_t n) {
-  for (const InArray* a : {&vx, &vy, &omega})
-    if (a->shape(0) != n && a->shape(0) != 1)
-      throw std::invalid_argument("inputs of " + std::to_string(a->shape(0)) +
-                                  " points do not broadcast to " + std::to_string(n));
-}
-
 void exact_loop(const ExactModel<double>& model, InArray vx, InArray vy, InArray omega,
                 OutArray2 force, OutArray2 error, nb::ndarray<bool, nb::ndim<1>, nb::c_contig> conv,
                 double tolerance, unsigned threads) {

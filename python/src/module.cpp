@@ -24,6 +24,7 @@ NB_MODULE(_core, m) {
     }
   });
   contensou::python::bind_friction(m);
+  contensou::python::bind_exact_law(m);
   contensou::python::bind_limit_surface(m);
   contensou::python::bind_identification(m);
   contensou::python::bind_gear(m);

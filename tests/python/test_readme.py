@@ -16,5 +16,6 @@ def test_readme_quick_start_runs(monkeypatch):
     namespace: dict = {}
     exec(compile(blocks[0], "README.md", "exec"), namespace)
     assert namespace["r"].resultants.shape == (201, 2, 3)
+    assert namespace["E"].shape == (201, 2, 3) and namespace["dE"].shape == (201, 2, 3, 3)
     assert namespace["m"].shimmy.shape == (6, 8)
     assert os.getcwd() == str(ROOT)

@@ -7,6 +7,8 @@ import subprocess
 import sys
 from pathlib import Path
 
+import pytest
+
 import contensou
 
 from conftest import ROOT
@@ -17,14 +19,45 @@ def test_wheel_ships_stubs_and_marker():
     stub = package / "_core.pyi"
     assert (package / "py.typed").exists()
     text = stub.read_text()
-    for name in ("class ContactPatch", "class FractionalLaw", "def _exact_loop", "version: str"):
+    for name in ("class ContactPatch", "class FractionalLaw", "def _exact_loop", "class _ExactLaw",
+                 "def _exact_law_loop", "version: str"):
         assert name in text, name
 
 
-def test_mypy_accepts_the_package_and_the_example(tmp_path):
+@pytest.fixture(scope="module")
+def mypy(tmp_path_factory):
+    """Runs mypy in a folder of its own, with one cache for the module's tests."""
+    folder = tmp_path_factory.mktemp("mypy")
+
+    def run(*target: str) -> subprocess.CompletedProcess:
+        return subprocess.run([sys.executable, "-m", "mypy", "--cache-dir", str(folder / "cache"),
+                               "--no-error-summary", *target], capture_output=True, text=True,
+                              cwd=folder)
+
+    return run
+
+
+def test_mypy_accepts_the_package_and_the_example(mypy):
     for target in (["-p", "contensou"],
                    ["--ignore-missing-imports", str(ROOT / "examples" / "python" / "fit_and_map.py")]):
-        run = subprocess.run([sys.executable, "-m", "mypy", "--cache-dir", str(tmp_path / "cache"),
-                              "--no-error-summary", *target], capture_output=True, text=True,
-                             cwd=tmp_path)
+        run = mypy(*target)
         assert run.returncode == 0, run.stdout + run.stderr
+
+
+def test_exact_law_results_have_one_type_each(mypy, tmp_path):
+    """exact_law_resultants returns an array, or with jacobian=True a pair: no Union to narrow."""
+    use = tmp_path / "use_exact_law.py"
+    use.write_text(
+        "import numpy as np\n"
+        "import contensou as c\n"
+        "law = c.ExactLaw(c.seed_tire_patch(), tolerance=1e-8)\n"
+        "F: np.ndarray = c.exact_law_resultants(law, 0.5, 0.0, 10.0)\n"
+        "pair: tuple[np.ndarray, np.ndarray] = c.exact_law_resultants(law, 0.5, 0.0, 10.0,\n"
+        "                                                             jacobian=True)\n"
+        "G, J = c.exact_law_resultants(law, [0.5], 0.0, 10.0, jacobian=True)\n"
+        "bound: float = law.achieved + J.sum()\n"
+        "wrong: np.ndarray = c.exact_law_resultants(law, 0.5, 0.0, 10.0, jacobian=True)\n")
+    run = mypy(str(use))
+    # Only the last line is an error: the pair is not an array.
+    errors = [line for line in run.stdout.splitlines() if ": error:" in line]
+    assert len(errors) == 1 and "use_exact_law.py:9:" in errors[0], run.stdout + run.stderr
