@@ -182,6 +182,141 @@ void BM_FractionalWithJacobian(benchmark::State& state) {
   }
 }
 
+// The exact law (exact_law.hpp) beside the fractional law, on the same 1024 kinematics (ratios
+// |v|/(|omega| R) log-uniform over 1e-3 ... 1e3, a tenth within 1 % of the rim, every
+// direction, |omega| R up to 60 m/s): per evaluation, with and without the Jacobian; and the
+// build of each variant.
+struct LawCase {
+  std::string name;
+  ContactPatch patch;
+  ExactLaw law;
+  double measured = 0.0;  // largest error on the points against the integrator at 1e-12
+};
+
+const std::vector<Kinematics<double>>& law_points() {
+  static const std::vector<Kinematics<double>> points = [] {
+    std::vector<Kinematics<double>> out;
+    unsigned state = 12345u;
+    auto uniform = [&state] {  // [-1, 1), a linear congruential generator: same on every platform
+      state = 1664525u * state + 1013904223u;
+      return 2.0 * (state >> 8) / 16777216.0 - 1.0;
+    };
+    for (int i = 0; i < 1024; ++i) {
+      const double angle = std::numbers::pi * uniform();
+      const double ratio = i % 10 == 0 ? std::exp(0.01 * uniform()) : std::exp(6.9 * uniform());
+      const double w = 60.0 * (0.1 + 0.9 * std::abs(uniform())) / 0.087;
+      const double v = ratio * w * 0.087;
+      out.push_back({v * std::cos(angle), v * std::sin(angle), uniform() > 0 ? w : -w});
+    }
+    return out;
+  }();
+  return points;
+}
+
+std::vector<LawCase>& law_cases() {
+  static std::vector<LawCase> cases = [] {
+    const SlipSpeedFriction<double> falling{0.3, 0.2, 5.0, 1.0};
+    std::vector<std::pair<std::string, ContactPatch>> specs;
+    ContactPatch shifted = seed_patch();
+    shifted.profile.ky = 0.05;
+    specs.emplace_back("kappa=1+shift", shifted);
+    ContactPatch ortho = shifted;
+    ortho.kappa = 0.8;
+    specs.emplace_back("kappa=0.8", ortho);
+    ContactPatch fw = shifted;
+    fw.slip_speed_friction = falling;
+    specs.emplace_back("f(w)", fw);
+    ContactPatch both = ortho;
+    both.slip_speed_friction = falling;
+    specs.emplace_back("kappa=0.8+f(w)", both);
+    specs.emplace_back("table101", table_patch());
+    std::vector<LawCase> out;
+    for (auto& [name, patch] : specs) {
+      const ExactModel<double> model = make_exact_model(patch);
+      LawCase c{name, patch, make_exact_law(model), 0.0};
+      const double fN = model.friction_scale * normal_load(patch), R = model.radius;
+      for (std::size_t i = 0; i < law_points().size(); i += 8) {
+        const Kinematics<double>& k = law_points()[i];
+        const auto ref = exact_resultants(model, k, {1e-12}).resultants;
+        c.measured = std::max(c.measured, achieved(exact_law_resultants(c.law, k), ref, fN, R));
+      }
+      out.push_back(std::move(c));
+    }
+    return out;
+  }();
+  return cases;
+}
+
+void BM_Law(benchmark::State& state, std::size_t which, bool jacobian) {
+  const ExactLaw& law = law_cases()[which].law;
+  const auto& points = law_points();
+  std::size_t i = 0;
+  for (auto _ : state) {
+    const Kinematics<double>& k = points[i++ & 1023];
+    if (jacobian)
+      benchmark::DoNotOptimize(exact_law_resultants_with_jacobian(law, k));
+    else
+      benchmark::DoNotOptimize(exact_law_resultants(law, k));
+  }
+}
+
+void BM_FractionalOnPoints(benchmark::State& state, bool jacobian) {
+  const FractionalLaw<double> law = fractional_law_from_patch(law_cases().front().patch);
+  const auto& points = law_points();
+  std::size_t i = 0;
+  for (auto _ : state) {
+    const Kinematics<double>& k = points[i++ & 1023];
+    if (jacobian)
+      benchmark::DoNotOptimize(fractional_resultants_with_jacobian(law, k));
+    else
+      benchmark::DoNotOptimize(fractional_resultants(law, k));
+  }
+}
+
+void BM_LawBuild(benchmark::State& state, std::size_t which) {
+  const ExactModel<double> model = make_exact_model(law_cases()[which].patch);
+  ExactLawOptions one_core;
+  one_core.threads = 1;
+  for (auto _ : state) benchmark::DoNotOptimize(make_exact_law(model, one_core));
+}
+
+void register_law_benchmarks() {
+  for (bool j : {false, true}) {
+    const std::string suffix = j ? "+jacobian" : "";
+    benchmark::RegisterBenchmark(("law:fractional" + suffix).c_str(), BM_FractionalOnPoints, j)
+        ->Unit(benchmark::kNanosecond);
+    for (std::size_t c = 0; c < law_cases().size(); ++c)
+      benchmark::RegisterBenchmark(("law:" + law_cases()[c].name + suffix).c_str(), BM_Law, c, j)
+          ->Unit(benchmark::kNanosecond);
+  }
+  for (std::size_t c = 0; c < law_cases().size(); ++c)
+    benchmark::RegisterBenchmark(("build:" + law_cases()[c].name).c_str(), BM_LawBuild, c)
+        ->Unit(benchmark::kMillisecond)
+        ->Iterations(law_cases()[c].patch.slip_speed_friction ? 1 : 5);
+}
+
+template <class Runs>
+void print_law_table(const Runs& runs) {
+  const auto frac = runs.find("law:fractional"), frac_j = runs.find("law:fractional+jacobian");
+  if (frac == runs.end() || frac_j == runs.end()) return;
+  std::printf(
+      "\n| exact law | ns | / fractional | with Jacobian [ns] | / fractional | build [ms, one "
+      "core] | tables [KB] | certified | measured |\n|---|---|---|---|---|---|---|---|---|\n");
+  std::printf("| fractional law | %.1f | 1 | %.1f | 1 | | | | |\n",
+              frac->second.GetAdjustedRealTime(), frac_j->second.GetAdjustedRealTime());
+  for (const LawCase& c : law_cases()) {
+    const auto v = runs.find("law:" + c.name), j = runs.find("law:" + c.name + "+jacobian");
+    const auto b = runs.find("build:" + c.name);
+    if (v == runs.end() || j == runs.end()) continue;
+    const double tv = v->second.GetAdjustedRealTime(), tj = j->second.GetAdjustedRealTime();
+    std::printf("| %s | %.1f | %.2f | %.1f | %.2f | %.0f | %.0f | %.1e | %.1e |\n", c.name.c_str(),
+                tv, tv / frac->second.GetAdjustedRealTime(), tj,
+                tj / frac_j->second.GetAdjustedRealTime(),
+                b == runs.end() ? 0.0 : b->second.GetAdjustedRealTime(), c.law.bytes() / 1024.0,
+                c.law.achieved, c.measured);
+  }
+}
+
 // Collects the runs so that main can print ratios against the baseline.
 class TableReporter : public benchmark::ConsoleReporter {
  public:
@@ -218,6 +353,7 @@ int main(int argc, char** argv) {
   benchmark::RegisterBenchmark("fractional", BM_Fractional)->Unit(benchmark::kNanosecond);
   benchmark::RegisterBenchmark("fractional+jacobian", BM_FractionalWithJacobian)
       ->Unit(benchmark::kNanosecond);
+  register_law_benchmarks();
   benchmark::Initialize(&argc, argv);
   TableReporter reporter;
   benchmark::RunSpecifiedBenchmarks(&reporter);
@@ -258,6 +394,7 @@ int main(int argc, char** argv) {
                 run.counters.at("evals").value, run.counters.at("achieved").value,
                 run.counters.at("estimate").value, ratio);
   }
+  print_law_table(reporter.runs);
   benchmark::Shutdown();
   return 0;
 }

@@ -73,7 +73,7 @@ double z_interpolation_error(const double* v, int stride) {
 }
 
 // The table of the falling part (exact_law.hpp, SlipSpeedTable). Pieces of 1 + z are added until
-// the functions at the top of the last one are below half the tolerance at a set of t (beyond
+// the functions at the top of the last one are below the tolerance at a set of t (beyond
 // it they are taken as 0: the tail). Then one adaptive build in t for all pieces at once (one
 // slip-speed quadrature a sampled t, on `threads` threads): its functions are the six functions'
 // values at every piece's Lobatto points in z, checked between the t nodes; at every sampled t
@@ -105,7 +105,7 @@ int falling_pieces(const ExactModel<double>& unit, double delta,
     for (std::size_t i = 0; i < probe_t.size(); ++i)
       for (int c = 0; c < kLawFunctions; ++c)
         worst = std::max(worst, std::abs(top[(i * zs.size() + J - 1) * kLawFunctions + c]));
-    if (worst < 0.5 * tolerance) return J;
+    if (worst < tolerance) return J;
   }
   return kMaxPieces;
 }
@@ -252,9 +252,11 @@ ExactLawWithJacobian exact_law_resultants_with_jacobian(const ExactLaw& law,
       law, law.parameters, Kinematics<D>{D(k.vx, 0), D(k.vy, 1), D(k.omega, 2)});
   ExactLawWithJacobian out;
   out.resultants = {r.Fx.a, r.Fy.a, r.Mz.a};
-  out.jacobian.row(0) = r.Fx.v.transpose();
-  out.jacobian.row(1) = r.Fy.v.transpose();
-  out.jacobian.row(2) = r.Mz.v.transpose();
+  for (int j = 0; j < 3; ++j) {
+    out.jacobian(0, j) = r.Fx.v[j];
+    out.jacobian(1, j) = r.Fy.v[j];
+    out.jacobian(2, j) = r.Mz.v[j];
+  }
   return out;
 }
 

@@ -8,7 +8,7 @@
 #include <utility>
 
 #include "contensou/friction/error.hpp"
-#include "contensou/friction/exact_resultants.hpp"
+#include "contensou/friction/exact_law.hpp"
 #include "contensou/friction/fractional_law.hpp"
 #include "contensou/friction/pressure_profile.hpp"
 
@@ -182,7 +182,7 @@ GearModel make_gear_model(const GearConfig& config, ContactModel contact) {
   m.law_c = law.c;
   m.law_a_k = law.a_k;
   if (config.tire.exact_integrals && contact == ContactModel::coupled)
-    m.exact = std::make_shared<const ExactModel<double>>(make_exact_model(patch, 1e-10));
+    m.exact = std::make_shared<const ExactLaw>(make_exact_law(make_exact_model(patch, 1e-10)));
   return m;
 }
 
@@ -246,14 +246,31 @@ Resultants<double> sliding_friction(const GearModel& model, const Kinematics<dou
     return {-f * N * k.vx / v, -f * N * k.vy / v, -M0 * u / std::sqrt(u * u + eps * eps)};
   }
   if (model.exact) {
-    // Unit patch: forces scale with f p* R^2 = f N / (2 pi A^1), the torque with one more R.
-    const double scale = f * N / (2.0 * std::numbers::pi * model.moment_1);
+    // Unit patch: forces scale with f p* R^2 = f N / L, the torque with one more R.
+    const double scale = f * N / model.exact->load_area;
     const Resultants<double> r =
-        exact_resultants(*model.exact, Kinematics<double>{k.vx, k.vy, k.omega * R}, {1e-8})
-            .resultants;
+        exact_law_resultants(*model.exact, Kinematics<double>{k.vx, k.vy, k.omega * R});
     return {scale * r.Fx, scale * r.Fy, scale * R * r.Mz};
   }
   return fractional_resultants(coupled_law(model, N, R, f), k);
+}
+
+// The coupled sliding law (fractional, or the exact law scaled from the unit patch) with its
+// analytic Jacobian d(Fx, Fy, Mz)/d(vx, vy, omega) at fixed load, patch radius and friction f.
+FractionalWithJacobian coupled_law_with_jacobian(const GearModel& model,
+                                                 const Kinematics<double>& k, double N, double R,
+                                                 double f) {
+  if (!model.exact) return fractional_resultants_with_jacobian(coupled_law(model, N, R, f), k);
+  const double scale = f * N / model.exact->load_area;
+  const ExactLawWithJacobian r =
+      exact_law_resultants_with_jacobian(*model.exact, Kinematics<double>{k.vx, k.vy, k.omega * R});
+  FractionalWithJacobian out;
+  out.resultants = {scale * r.resultants.Fx, scale * r.resultants.Fy, scale * R * r.resultants.Mz};
+  out.jacobian = r.jacobian;
+  out.jacobian.col(2) *= R;  // d/domega = R d/d(omega R)
+  out.jacobian.topRows<2>() *= scale;
+  out.jacobian.row(2) *= scale * R;
+  return out;
 }
 
 // The torsional spring's deflection d(psi) across the torque-link freeplay and its slope
@@ -317,15 +334,15 @@ void contact_forces(const GearModel& model, bool rolling, double lambda, Contact
 }
 
 // K = d(Fx, Fy, Mz)/d(vx, vy, omega) of the sliding law at fixed load and patch radius (w.force
-// and w.friction filled): analytic for the coupled fractional law, forward differences of the
-// law (one evaluation per input) otherwise.
+// and w.friction filled): analytic for the coupled law (fractional or exact), F = f(w) G(v,
+// omega), the law's Jacobian at fixed f plus G f'(w) grad w; forward differences of the law
+// (one evaluation per input) otherwise.
 Eigen::Matrix3d sliding_law_jacobian(const GearModel& model, const ContactState& w) {
   Eigen::Matrix3d K;
-  if (model.contact == ContactModel::coupled && !model.exact) {
-    // F = f(w) G(v, omega): the law's analytic Jacobian at fixed f, plus G f'(w) grad w.
+  if (model.contact == ContactModel::coupled) {
     const double R = w.patch_radius_m;
     const FractionalWithJacobian law =
-        fractional_resultants_with_jacobian(coupled_law(model, w.load_n, R, w.friction), w.slip);
+        coupled_law_with_jacobian(model, w.slip, w.load_n, R, w.friction);
     K = law.jacobian;
     const double speed = sliding_slip_speed(w.slip, R);
     if (speed > 0.0) {
@@ -550,20 +567,8 @@ GearJacobian gear_jacobian(const GearModel& model, const GearMode& mode, double 
     // K = d(Fx, Fy, Mz)/d(vx, vy, omega, lambda) of the contact law at fixed load and patch.
     Eigen::Matrix<double, 3, 4> K = Eigen::Matrix<double, 3, 4>::Zero();
     if (w.load_n > 0.0) {
-      if (!mode.rolling && model.contact == ContactModel::coupled && !model.exact) {
-        // F = f(w) G(v, omega): the law's analytic Jacobian at fixed f, plus G f'(w) grad w.
-        const double R = w.patch_radius_m;
-        const FractionalWithJacobian law = fractional_resultants_with_jacobian(
-            coupled_law(model, w.load_n, R, w.friction), w.slip);
-        K.leftCols<3>() = law.jacobian;
-        const double speed = sliding_slip_speed(w.slip, R);
-        if (speed > 0.0) {
-          const double slope = friction_slope(c.tire.friction, speed) / w.friction;
-          const Eigen::Vector3d grad_w(w.slip.vx / speed, w.slip.vy / speed,
-                                       4.0 / 9.0 * w.slip.omega * R * R / speed);
-          const Eigen::Vector3d F(law.resultants.Fx, law.resultants.Fy, law.resultants.Mz);
-          K.leftCols<3>() += slope * F * grad_w.transpose();
-        }
+      if (!mode.rolling && model.contact == ContactModel::coupled) {
+        K.leftCols<3>() = sliding_law_jacobian(model, w);
       } else {
         // Forward differences of the law in its four inputs (one evaluation each).
         const Eigen::Vector3d F0(w.force.Fx, w.force.Fy, w.force.Mz);

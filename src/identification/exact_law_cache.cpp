@@ -22,8 +22,8 @@ const std::vector<ExactLaw>& ExactLawCache::laws(bool slip_speed) const {
       laws.push_back(make_exact_law(m, options));
       return;
     }
-    for (const std::vector<double>& c :
-         {std::vector<double>{1.0}, std::vector<double>{1.0, 1.0}, std::vector<double>{1.0, 0.0, 1.0}}) {
+    for (const std::vector<double>& c : {std::vector<double>{1.0}, std::vector<double>{1.0, 1.0},
+                                         std::vector<double>{1.0, 0.0, 1.0}}) {
       ContactPatch patch;
       patch.radius_m = radius_m_;
       patch.reference_pressure_pa = 1.0;

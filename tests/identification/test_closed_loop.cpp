@@ -111,6 +111,31 @@ TEST(ClosedLoop, FindsSpeedDependence) {
   expect_found(c, {"shape", "speed_dependence"});
 }
 
+// Another tire, as a user would bring it: Hertz pressure with a rolling shift, friction falling
+// with the local slip speed inside the integrals (0.6 to 0.42, w_s = 3 m/s), the profile given.
+// The loop names exactly the two true effects, and its estimate of the law is the injected one.
+TEST(ClosedLoop, FindsSlipSpeedFrictionInsideTheIntegralsOnAnotherTire) {
+  Case c;
+  c.patch = seed_tire_patch();
+  c.patch.profile = hertz_profile();
+  c.patch.profile.kx = 0.1;
+  c.patch.slip_speed_friction = SlipSpeedFriction<double>{0.6, 0.42, 3.0, 1.0};
+  const Data d = two_sweeps(make_exact_model(c.patch), c.rig, 5);
+  IdentificationOptions o = options();
+  o.profile = hertz_profile();
+  o.normal_load_n.reset();
+  const ClosedLoopReport r = close_the_loop(d.measured, o);
+  EXPECT_EQ(as_set(r.accepted_effects), (std::set<std::string>{"shape", "speed_dependence"}));
+  for (const ChannelDiagnostics& ch : r.final_fit.channels) {
+    const int ci = ch.channel == "Fx_N" ? 0 : ch.channel == "Fy_N" ? 1 : 2;
+    EXPECT_LT(ch.rms, 1.25 * d.noise[ci]) << ch.channel;
+  }
+  for (const ParameterEstimate& e : r.final_fit.parameters) {
+    if (e.name == "speed_drop") EXPECT_NEAR(e.value, 0.3, 0.02);
+    if (e.name == "speed_ref_mps") EXPECT_NEAR(e.value, 3.0, 0.3);
+  }
+}
+
 TEST(ClosedLoop, FindsChannelOffset) {
   Case c = seed_case();
   c.rig.offset = {0.0, 15.0, 0.0};

@@ -221,9 +221,9 @@ void friction_functions(const ExactLaw& law, const ExactLawParameters<P>& p, con
                           "the law has no table of a slip-speed law: build it from a model with "
                           "slip_speed_friction");
   if (value_of(f.exponent) != law.falling->exponent)
-    throw InvalidArgument("slip_speed.exponent", format_value(value_of(f.exponent)),
-                          "must be the exponent the law was built for, " +
-                              format_value(law.falling->exponent));
+    throw InvalidArgument(
+        "slip_speed.exponent", format_value(value_of(f.exponent)),
+        "must be the exponent the law was built for, " + format_value(law.falling->exponent));
   const R q = speed / f.reference_speed;
   const R z = law.falling->exponent == 1.0 ? q : R(pow(q, law.falling->exponent));
   const P fall = f.static_coefficient - f.kinetic_coefficient;

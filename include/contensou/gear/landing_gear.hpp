@@ -35,8 +35,7 @@
 
 namespace contensou {
 
-template <class T>
-struct ExactModel;
+struct ExactLaw;
 
 // Which tire-ground law acts while the tire slides (docs/shimmy.md, "Contact models").
 enum class ContactModel {
@@ -240,9 +239,10 @@ struct GearModel {
   double moment_ratio_3 = 0.0;  // A^3 / A^1
   double moment_1 = 0.0;        // A^1
   double law_a = 1.0, law_m = 1.0, law_c = 4.0, law_a_k = 1.0;
-  // Exact model of the unit patch (R = 1 m, p* = 1 Pa, f = 1) when tire.exact_integrals:
-  // F = f p* R^2 F_1(vx, vy, omega R), Mz = f p* R^3 Mz_1(vx, vy, omega R).
-  std::shared_ptr<const ExactModel<double>> exact;
+  // The exact law of the unit patch (R = 1 m, p* = 1 Pa, f = 1) when tire.exact_integrals
+  // (exact_law.hpp, certified to 1e-8 of f N): with L = N_1 / p*, F = (f N / L) F_1(vx, vy,
+  // omega R), Mz = (f N R / L) Mz_1(vx, vy, omega R).
+  std::shared_ptr<const ExactLaw> exact;
 };
 GearModel make_gear_model(const GearConfig& config, ContactModel contact);
 

@@ -70,7 +70,8 @@ Resultants<T> evaluate_model(const ModelSpec& s, const T* th, const Kinematics<d
     if (!s.exact_laws) throw std::logic_error("ModelSpec without exact laws (use base_model_spec)");
     const std::vector<ExactLaw>& laws = s.exact_laws->laws(s.speed_in_exact);
     std::array<T, 3> coef{T(1.0), T(0.0), T(0.0)};
-    if (laws.size() == 3) coef = {1.0 - th[kProfileB1] - th[kProfileB2], th[kProfileB1], th[kProfileB2]};
+    if (laws.size() == 3)
+      coef = {1.0 - th[kProfileB1] - th[kProfileB2], th[kProfileB1], th[kProfileB2]};
     T load(0.0);
     for (std::size_t i = 0; i < laws.size(); ++i) load += coef[i] * laws[i].load_area;
     const double Rl = laws.front().radius;
