@@ -3,14 +3,17 @@
 uniform pressure) sliding and spinning on one plane, each its own pair "disk<i> floor" of one
 plugin instance, for n = 1, 10, 100, 200 and each law.
 
-Two numbers per case, both per disk (per configured pair; MuJoCo makes 4 contacts per
-cylinder-plane pair), both the difference to the same model without the plugin (condim 1, the
-same contacts, no friction), divided by n:
-  wrench: mj_passive, the stage where the plugin computes and applies the wrench (from a frozen
-          state after mj_forward, so every call sees the same contacts and twists);
-  step:   mj_step, the whole step: the wrench, and the plugin's `advance` that stores the normal
-          forces for the next step (the kinematics are reset every 20 steps, so the disks keep
-          sliding and spinning; the baseline's frictionless disks keep theirs).
+The plugin's two costs per disk (per configured pair; MuJoCo makes 3 contacts per
+cylinder-plane pair here), each the difference to the same model without the plugin (condim 1,
+the same contacts, no friction), divided by n, on a frozen state after mj_forward (every call
+sees the same contacts and twists):
+  wrench:  mj_passive, the stage where the plugin computes and applies the wrench;
+  normal:  mj_Euler, whose mj_advance runs the plugin's `advance`: the pair's normal forces
+           (mj_contactForce) stored for the next step (qpos, qvel and time restored each call).
+And, for scale, MuJoCo's whole step (mj_step) in microseconds with and without the plugin (the
+kinematics restored every 20 steps, so the disks keep sliding and spinning): the difference is
+more than the plugin's cost, as MuJoCo's constraint solver works harder once friction tilts
+the disks on their soft contacts (the frictionless baseline's disks slide flat).
 Each disk slides at 1 m/s in its own direction with v / (omega R) from 0.2 to 5 (the exact
 law's cost depends on it; fixed seed). Times are the thread's CPU time (time.thread_time), so
 that other processes on a shared machine count less; each number is the median of --repeats
@@ -92,6 +95,23 @@ def time_passive(m, d, calls: int) -> float:
     return (time.thread_time() - t0) / calls
 
 
+def time_euler(m, d, calls: int) -> float:
+    """Seconds per mj_Euler call (the plugin's `advance` inside), from the same state each call
+    (qpos, qvel, time restored outside the timing)."""
+    spec = (mujoco.mjtState.mjSTATE_QPOS | mujoco.mjtState.mjSTATE_QVEL
+            | mujoco.mjtState.mjSTATE_TIME)
+    state = np.empty(mujoco.mj_stateSize(m, spec))
+    mujoco.mj_getState(m, d, state, spec)
+    total = 0.0
+    for _ in range(calls):
+        mujoco.mj_setState(m, d, state, spec)
+        t0 = time.thread_time()
+        mujoco.mj_Euler(m, d)
+        total += time.thread_time() - t0
+    mujoco.mj_setState(m, d, state, spec)
+    return total / calls
+
+
 def time_step(m, d, steps: int, chunk: int = 20) -> float:
     """Seconds per mj_step, restarting from the same state every `chunk` steps."""
     spec = mujoco.mjtState.mjSTATE_INTEGRATION
@@ -108,19 +128,22 @@ def time_step(m, d, steps: int, chunk: int = 20) -> float:
 
 
 def measure(n: int, law: str, repeats: int) -> dict:
-    """Per disk [ns]: the plugin's mj_passive and mj_step over the baseline's, median and
-    spread of `repeats` runs."""
+    """The plugin's wrench and normal-force costs per disk [ns] over the baseline's, and the
+    step with and without the plugin [us]; each the median and spread of `repeats` runs."""
     with_plugin, without = settled(n, law), settled(n, None)
     calls = max(200, 40000 // n)
     steps = max(200, 20000 // n)
-    wrench, step = [], []
+    runs = {"wrench": [], "normal": [], "step": [], "step_without": []}
     for _ in range(repeats):
-        wrench.append((time_passive(*with_plugin, calls) - time_passive(*without, calls)) / n)
-        step.append((time_step(*with_plugin, steps) - time_step(*without, steps)) / n)
+        runs["wrench"].append(1e9 / n * (time_passive(*with_plugin, calls)
+                                         - time_passive(*without, calls)))
+        runs["normal"].append(1e9 / n * (time_euler(*with_plugin, calls // 4)
+                                         - time_euler(*without, calls // 4)))
+        runs["step"].append(1e6 * time_step(*with_plugin, steps))
+        runs["step_without"].append(1e6 * time_step(*without, steps))
     row = {"disks": n, "law": law, "contacts": int(with_plugin[1].ncon)}
-    for name, xs in (("wrench", wrench), ("step", step)):
-        ns = [1e9 * x for x in xs]
-        row[name] = {"median": statistics.median(ns), "min": min(ns), "max": max(ns)}
+    for name, xs in runs.items():
+        row[name] = {"median": statistics.median(xs), "min": min(xs), "max": max(xs)}
     return row
 
 
@@ -134,18 +157,20 @@ def main() -> int:
     if min(args.disks) < 1 or args.repeats < 1:
         ap.error(f"--disks {args.disks}, --repeats {args.repeats}: must be at least 1")
     load_plugin(mujoco)
-    print(f"plugin {plugin_path()}, MuJoCo {mujoco.__version__}; per disk [ns], median "
-          f"[min - max] of {args.repeats} runs, over the same model without the plugin")
-    print(f"{'law':12} {'disks':>6} {'contacts':>9} {'wrench (mj_passive)':>28} "
-          f"{'step (mj_step)':>28}")
+    print(f"plugin {plugin_path()}, MuJoCo {mujoco.__version__}; median [min - max] of "
+          f"{args.repeats} runs; wrench, normal: the plugin's CPU time per disk [ns] over the same "
+          "model without it; step: MuJoCo's whole step [us], without the plugin -> with it")
+    print(f"{'law':12} {'disks':>5} {'contacts':>8} {'wrench [ns/disk]':>23} "
+          f"{'normal [ns/disk]':>23} {'step [us]':>25}")
     rows = []
     for law in args.laws:
         for n in args.disks:
             r = measure(n, law, args.repeats)
             cells = "".join(
-                f" {r[k]['median']:9.0f} [{r[k]['min']:7.0f} - {r[k]['max']:7.0f}]"
-                for k in ("wrench", "step"))
-            print(f"{law:12} {n:6d} {r['contacts']:9d}{cells}")
+                f" {r[k]['median']:7.0f} [{r[k]['min']:5.0f} - {r[k]['max']:5.0f}]"
+                for k in ("wrench", "normal"))
+            step = f"{r['step_without']['median']:9.1f} -> {r['step']['median']:7.1f}"
+            print(f"{law:12} {n:5d} {r['contacts']:8d}{cells}      {step}")
             rows.append(r)
     if args.json:
         Path(args.json).parent.mkdir(parents=True, exist_ok=True)

@@ -614,7 +614,8 @@ void patch_frame(const mjData* d, const Pair& p, const PairContacts& pc, mjtNum 
 }
 
 // The wrench (Fx, Fy, Mz) in the patch frame on the tire at the centre, and its opposite on the
-// road, into qfrc_passive; the tire's (world frame) into the state block s.
+// road, into qfrc_passive (J^T f of each body; skipped for a body welded to the world, whose
+// Jacobian is 0); the tire's (world frame) into the state block s.
 void apply_wrench(const mjModel* m, mjData* d, const Pair& p, const Resultants<double>& w,
                   const mjtNum centre[3], const mjtNum ex[3], const mjtNum ey[3],
                   const mjtNum normal[3], mjtNum* s) {
@@ -622,12 +623,15 @@ void apply_wrench(const mjModel* m, mjData* d, const Pair& p, const Resultants<d
   mju_scl3(force, ex, w.Fx);
   mju_addToScl3(force, ey, w.Fy);
   mju_scl3(torque, normal, w.Mz);
-  mj_applyFT(m, d, force, torque, centre, m->geom_bodyid[p.tire], d->qfrc_passive);
   mju_copy3(s + kForce, force);
   mju_copy3(s + kForce + 3, torque);
+  const int tire_body = m->geom_bodyid[p.tire], road_body = m->geom_bodyid[p.road];
+  if (m->body_weldid[tire_body] != 0)
+    mj_applyFT(m, d, force, torque, centre, tire_body, d->qfrc_passive);
+  if (m->body_weldid[road_body] == 0) return;
   mju_scl3(force, force, -1.0);
   mju_scl3(torque, torque, -1.0);
-  mj_applyFT(m, d, force, torque, centre, m->geom_bodyid[p.road], d->qfrc_passive);
+  mj_applyFT(m, d, force, torque, centre, road_body, d->qfrc_passive);
 }
 
 // One pair's step (header comment): twist, law, wrench; s is its state block.
