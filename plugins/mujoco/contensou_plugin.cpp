@@ -15,13 +15,22 @@
 //     <config key="law" value="fractional"/>        fractional (default) | exact | set-valued
 //     <config key="surface" value="exact"/>         set-valued only: exact (default) | ellipsoid
 //     <config key="regularization" value="1e-4"/>   fractional only: eps [m/s] of the law
-//     <config key="tolerance" value="1e-8"/>        of the exact integrals (relative to f N)
+//     <config key="tolerance" value="1e-8"/>        exact: the law's error bound (relative to
+//                                                   f N and f N R), in (1e-14, 1e-2); set-valued:
+//                                                   of the surface's integrals, [1e-14, 1e-6]
 //   </instance></plugin></extension>
 // The named geoms must have condim="1": MuJoCo keeps the normal force (its constraint solver)
-// and the plugin replaces MuJoCo's friction by the wrench (Fx, Fy, Mz) of the patch.
+// and the plugin replaces MuJoCo's friction by the wrench (Fx, Fy, Mz) of the patch. A pair
+// whose friction would be applied twice or never is an error at init: a geom pair named twice
+// (in either order, or also by another instance of the plugin), a geom paired with itself or
+// with a geom MuJoCo never collides it with (one weld body, parent and child, contype and
+// conaffinity that do not match, unless a <contact><pair> names them), a plane or height field
+// as the tire (the patch centre is the tire's centre projected onto the contact plane).
 //
-// Per step and pair: the contacts of the pair (d->contact) give the normal n (from road into
-// tire, theory.md section 1) and a point; the patch centre is the tire geom's centre projected
+// Per step: one pass over d->contact sorts the contacts to the pairs (a hash table keyed by the
+// unordered geom pair), so the cost per pair does not grow with the number of contacts. Per
+// pair: its contacts give the normal n (of the first contact, from road into tire, theory.md
+// section 1) and a point (their mean); the patch centre is the tire geom's centre projected
 // onto the contact plane. The sliding velocity (tire relative to road at that point) and the
 // spin (relative angular velocity about n) in the patch frame (x along the tire geom's x axis
 // projected onto the plane, z = n) enter the law; the wrench
@@ -32,6 +41,10 @@
 // solution: in `advance` (after the solver) it stores N = sum over the pair's contacts of the
 // normal component of mj_contactForce, and the next step's friction uses it. A contact that is
 // new this step has N = 0 (no friction in its first step).
+//
+// law="exact": the exact law (exact_law.hpp) of the unit patch, built once at init to
+// `tolerance` (tables of six functions of t = (|v| - |omega| R) / (|v| + |omega| R)); a law
+// that does not reach the tolerance is an error at init.
 //
 // law="set-valued" (issue 15): the wrench is a point of the patch's limit surface C (the exact
 // one, or its fitted ellipsoid; limit_surface.hpp), found per pair by one local Moreau-Jean
@@ -76,15 +89,19 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <cstdint>
+#include <cstdio>
 #include <cstdlib>
 #include <exception>
 #include <memory>
 #include <optional>
 #include <sstream>
 #include <string>
+#include <unordered_map>
 #include <vector>
 
 #include "contensou/friction/contact_patch.hpp"
+#include "contensou/friction/exact_law.hpp"
 #include "contensou/friction/exact_resultants.hpp"
 #include "contensou/friction/fractional_law.hpp"
 #include "contensou/friction/limit_surface.hpp"
@@ -107,6 +124,21 @@ using Mat3 = Eigen::Matrix3d;
 
 struct Pair {
   int tire = -1, road = -1;  // geom ids
+};
+
+// The key of a geom pair in either order: (min id) * 2^32 + max id.
+std::uint64_t pair_key(int a, int b) {
+  const auto lo = static_cast<std::uint32_t>(std::min(a, b));
+  const auto hi = static_cast<std::uint32_t>(std::max(a, b));
+  return (std::uint64_t{lo} << 32) | hi;
+}
+
+// A pair's contacts in this step, gathered by one pass over d->contact in MuJoCo's order.
+struct PairContacts {
+  int count = 0;
+  mjtNum normal[3] = {0, 0, 0};  // the first contact's normal, from road into tire
+  mjtNum t1[3] = {0, 0, 0};      // the first contact's first tangent
+  mjtNum point[3] = {0, 0, 0};   // sum of the contact points
 };
 
 enum class Law { fractional, exact, set_valued };
@@ -145,8 +177,15 @@ double number(const mjModel* m, int instance, const char* key, double fallback, 
   return x;
 }
 
-Config read_config(const mjModel* m, int instance) {
-  Config c;
+std::string format(double x) {
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%.3g", x);
+  return buf;
+}
+
+// config 'pairs': "tire road; tire road; ...".
+std::vector<std::pair<std::string, std::string>> read_pair_names(const mjModel* m, int instance) {
+  std::vector<std::pair<std::string, std::string>> names;
   std::stringstream pairs(attribute(m, instance, "pairs"));
   std::string item;
   while (std::getline(pairs, item, ';')) {
@@ -155,9 +194,31 @@ Config read_config(const mjModel* m, int instance) {
     if (!(words >> a)) continue;
     if (!(words >> b) || (words >> extra))
       fail("config 'pairs': '" + item + "' is not two geom names (tire road)");
-    c.pair_names.emplace_back(a, b);
+    names.emplace_back(a, b);
   }
-  if (c.pair_names.empty()) fail("config 'pairs' is empty: name the geom pairs (tire road; ...)");
+  if (names.empty()) fail("config 'pairs' is empty: name the geom pairs (tire road; ...)");
+  return names;
+}
+
+// config 'tolerance': the exact law's requested error bound, in (1e-14, 1e-2) (make_exact_law);
+// the limit surface's integrals', in [1e-14, 1e-6] (make_limit_surface); no fractional key.
+double read_tolerance(const mjModel* m, int instance, Law law) {
+  const std::string s = attribute(m, instance, "tolerance");
+  if (s.empty()) return 1e-8;
+  if (law == Law::fractional)
+    fail("config 'tolerance' = '" + s +
+         "' applies to laws 'exact' and 'set-valued' only (law is 'fractional')");
+  const double t = number(m, instance, "tolerance", 1e-8, true);
+  const bool exact = law == Law::exact;
+  if (exact ? !(t > 1e-14 && t < 1e-2) : !(t >= 1e-14 && t <= 1e-6))
+    fail("config 'tolerance' = '" + s + "' is outside " +
+         (exact ? "(1e-14, 1e-2) for law 'exact'" : "[1e-14, 1e-6] for law 'set-valued'"));
+  return t;
+}
+
+Config read_config(const mjModel* m, int instance) {
+  Config c;
+  c.pair_names = read_pair_names(m, instance);
   const std::string profile = attribute(m, instance, "profile");
   if (!profile.empty()) c.profile = profile;
   if (c.profile != "uniform" && c.profile != "hertz" && c.profile != "seed-tire")
@@ -188,7 +249,7 @@ Config read_config(const mjModel* m, int instance) {
     fail("config 'regularization' applies to law 'fractional' only (law is '" + law + "')");
   c.regularization = number(m, instance, "regularization", 1e-4, true);
   c.kappa = number(m, instance, "kappa", 1.0, true);
-  c.tolerance = number(m, instance, "tolerance", 1e-8, true);
+  c.tolerance = read_tolerance(m, instance, c.law);
   return c;
 }
 
@@ -215,23 +276,32 @@ struct Scratch {
 // The instance: the law for a unit patch (R = 1 m, N = 1 N), scaled per contact. Coulomb
 // friction with constant f is homogeneous of degree 0 in the velocities, so the exact resultants
 // are F = N F_1(v/R, omega), Mz = N R Mz_1(v/R, omega) (theory.md section 3 uses the same
-// scaling); the fractional law scales F0 = f N and M0 = f N R A^2/A^1 (theory.md section 4:
+// scaling; the exact law's error bound, relative to f N and f N R, scales with them); the
+// fractional law scales F0 = f N and M0 = f N R A^2/A^1 (theory.md section 4:
 // M0 = 2 pi f R^3 p* A^2 with N = 2 pi R^2 p* A^1); the limit surface scales as
 // C(N, R) = N diag(1, 1, R) C_1 (the same homogeneity: its points are exact resultants).
 struct Instance {
   Config config;
   std::vector<Pair> pairs;
+  std::unordered_map<std::uint64_t, int> pair_of;  // pair_key(tire, road) -> index in pairs
+  std::vector<PairContacts> contacts;              // per pair, this step
   FractionalLaw<double> unit_law;
-  std::unique_ptr<ExactModel<double>> unit_exact;
+  std::shared_ptr<const ExactLaw> unit_exact;             // read only: shared by copies
   std::unique_ptr<LimitSurface> unit_surface;             // set-valued, exact surface
   std::optional<EllipsoidalLimitSurface> unit_ellipsoid;  // set-valued, ellipsoid
   Scratch scratch;
+
+  // Index in `pairs` of a contact's geom pair, -1 if none.
+  int pair_index(const mjContact& c) const {
+    const auto it = pair_of.find(pair_key(c.geom[0], c.geom[1]));
+    return it == pair_of.end() ? -1 : it->second;
+  }
 
   Resultants<double> wrench(double N, double R, double vx, double vy, double omega) const {
     if (!(N > 0)) return {};
     if (unit_exact) {
       const Kinematics<double> k{vx / R, vy / R, omega};
-      Resultants<double> r = exact_resultants(*unit_exact, k, {config.tolerance}).resultants;
+      const Resultants<double> r = exact_law_resultants(*unit_exact, k);
       return {N * r.Fx, N * r.Fy, N * R * r.Mz};
     }
     FractionalLaw<double> law = unit_law;
@@ -279,33 +349,105 @@ int nstate(const mjModel* m, int instance) {
   return kStateSize * static_cast<int>(read_config(m, instance).pair_names.size());
 }
 
-int init(const mjModel* m, mjData* d, int instance) {
-  auto inst = std::make_unique<Instance>();
-  inst->config = read_config(m, instance);
-  for (const auto& [tire, road] : inst->config.pair_names)
-    inst->pairs.push_back({geom_id(m, tire), geom_id(m, road)});
+// Why MuJoCo never makes a contact between geoms a and b ("" if it may). Its broad phase skips
+// geoms of one weld body, of a weld body and its parent's (unless filterparent is disabled; not
+// with the world) and geoms whose contype and conaffinity do not match (contype_a & conaffinity_b
+// and contype_b & conaffinity_a both 0); a <contact><pair> bypasses these filters.
+std::string never_collides(const mjModel* m, int a, int b) {
+  if (a == b) return "a geom has no contact with itself";
+  for (int i = 0; i < static_cast<int>(m->npair); ++i)
+    if (pair_key(m->pair_geom1[i], m->pair_geom2[i]) == pair_key(a, b)) return "";
+  const int wa = m->body_weldid[m->geom_bodyid[a]], wb = m->body_weldid[m->geom_bodyid[b]];
+  if (wa == wb) return "both geoms are on one body (or bodies welded together)";
+  const int pa = m->body_weldid[m->body_parentid[wa]], pb = m->body_weldid[m->body_parentid[wb]];
+  if (!(m->opt.disableflags & mjDSBL_FILTERPARENT) && wa != 0 && wb != 0 && (wa == pb || wb == pa))
+    return "one geom's body is the other's parent (MuJoCo filters parent-child contacts)";
+  if (!(m->geom_contype[a] & m->geom_conaffinity[b]) &&
+      !(m->geom_contype[b] & m->geom_conaffinity[a]))
+    return "their contype and conaffinity do not match";
+  return "";
+}
+
+// A pair whose friction would be lost or misplaced is an error (item: "'tire road'").
+void check_pair(const mjModel* m, const std::string& item, const Pair& p) {
+  const std::string why = never_collides(m, p.tire, p.road);
+  if (!why.empty()) fail("config 'pairs': " + item + " never touch: " + why);
+  const int type = m->geom_type[p.tire];
+  if (type == mjGEOM_PLANE || type == mjGEOM_HFIELD)
+    fail("config 'pairs': " + item + ": the tire (first) geom is a " +
+         (type == mjGEOM_PLANE ? "plane" : "height field") +
+         ", whose centre is no patch centre; name the tire first, then the road");
+}
+
+// A pair of this instance that another instance of the plugin also names is an error.
+void check_other_instances(const mjModel* m, int instance, const Instance& inst) {
+  for (int i = 0; i < static_cast<int>(m->nplugin); ++i) {
+    if (i == instance || m->plugin[i] != m->plugin[instance]) continue;
+    for (const auto& [a, b] : read_pair_names(m, i)) {
+      const int ga = mj_name2id(m, mjOBJ_GEOM, a.c_str()),
+                gb = mj_name2id(m, mjOBJ_GEOM, b.c_str());
+      if (ga < 0 || gb < 0 || !inst.pair_of.count(pair_key(ga, gb))) continue;
+      fail("config 'pairs': '" + a + " " + b + "' is also a pair of plugin instance '" +
+           std::string(m->names + m->name_pluginadr[i]) + "': its friction would be applied twice");
+    }
+  }
+}
+
+// The geom ids of the configured pairs and their index by geom pair (Instance::pair_of).
+void resolve_pairs(const mjModel* m, int instance, Instance& inst) {
+  const auto& names = inst.config.pair_names;
+  for (std::size_t k = 0; k < names.size(); ++k) {
+    const Pair p{geom_id(m, names[k].first), geom_id(m, names[k].second)};
+    const std::string item = "'" + names[k].first + " " + names[k].second + "'";
+    check_pair(m, item, p);
+    const auto [it, fresh] = inst.pair_of.emplace(pair_key(p.tire, p.road), static_cast<int>(k));
+    if (!fresh) {
+      const auto& [a, b] = names[it->second];
+      fail("config 'pairs': " + item + " and '" + a + " " + b +
+           "' are the same geom pair: its friction would be applied twice");
+    }
+    inst.pairs.push_back(p);
+  }
+  check_other_instances(m, instance, inst);
+  inst.contacts.assign(inst.pairs.size(), PairContacts{});
+}
+
+// The unit patch's law of the configured kind (Instance).
+void build_law(Instance& inst) {
   try {
-    const ContactPatch patch = unit_patch(inst->config);
-    switch (inst->config.law) {
+    const ContactPatch patch = unit_patch(inst.config);
+    switch (inst.config.law) {
       case Law::exact:
-        inst->unit_exact = std::make_unique<ExactModel<double>>(make_exact_model(patch));
+        inst.unit_exact = std::make_shared<const ExactLaw>(
+            make_exact_law(make_exact_model(patch), ExactLawOptions{inst.config.tolerance}));
         break;
       case Law::fractional:
-        inst->unit_law = fractional_law_from_patch(patch);
+        inst.unit_law = fractional_law_from_patch(patch);
         break;
       case Law::set_valued: {
         auto surface =
-            std::make_unique<LimitSurface>(make_limit_surface(patch, inst->config.tolerance));
-        if (inst->config.ellipsoid)
-          inst->unit_ellipsoid = fit_ellipsoid(*surface);
+            std::make_unique<LimitSurface>(make_limit_surface(patch, inst.config.tolerance));
+        if (inst.config.ellipsoid)
+          inst.unit_ellipsoid = fit_ellipsoid(*surface);
         else
-          inst->unit_surface = std::move(surface);
+          inst.unit_surface = std::move(surface);
         break;
       }
     }
   } catch (const std::exception& e) {
     fail(e.what());
   }
+  if (inst.unit_exact && !inst.unit_exact->reached)
+    fail("config 'tolerance' = " + format(inst.config.tolerance) + ": the exact law reached " +
+         format(inst.unit_exact->achieved) + " (relative to f N), not the tolerance; use a " +
+         "larger tolerance");
+}
+
+int init(const mjModel* m, mjData* d, int instance) {
+  auto inst = std::make_unique<Instance>();
+  inst->config = read_config(m, instance);
+  resolve_pairs(m, instance, *inst);
+  build_law(*inst);
   inst->scratch.resize(dofs(m));
   d->plugin_data[instance] = reinterpret_cast<uintptr_t>(inst.release());
   return 0;
@@ -321,8 +463,10 @@ void copy(mjData* dest, const mjModel* m, const mjData* src, int instance) {
   auto to = std::make_unique<Instance>();
   to->config = from->config;
   to->pairs = from->pairs;
+  to->pair_of = from->pair_of;
+  to->contacts = from->contacts;
   to->unit_law = from->unit_law;
-  if (from->unit_exact) to->unit_exact = std::make_unique<ExactModel<double>>(*from->unit_exact);
+  to->unit_exact = from->unit_exact;
   if (from->unit_surface) to->unit_surface = std::make_unique<LimitSurface>(*from->unit_surface);
   to->unit_ellipsoid = from->unit_ellipsoid;
   to->scratch.resize(dofs(m));
@@ -428,102 +572,130 @@ Vec3 set_valued_wrench(const mjModel* m, mjData* d, Instance& inst, mjtNum* s, d
   return N * Sd.cwiseProduct(p.wrench);
 }
 
+// One pass over d->contact: each contact of a configured pair adds to that pair's
+// PairContacts, in MuJoCo's order (the first contact gives the normal and tangent).
+void gather_contacts(const mjData* d, Instance& inst) {
+  std::fill(inst.contacts.begin(), inst.contacts.end(), PairContacts{});
+  for (int i = 0; i < d->ncon; ++i) {
+    const mjContact& c = d->contact[i];
+    const int k = c.exclude ? -1 : inst.pair_index(c);
+    if (k < 0) continue;
+    PairContacts& pc = inst.contacts[k];
+    if (pc.count == 0) {
+      mju_scl3(pc.normal, c.frame, orientation(c, inst.pairs[k]));
+      mju_copy3(pc.t1, c.frame + 3);
+    }
+    mju_addTo3(pc.point, c.pos);
+    ++pc.count;
+  }
+}
+
+// The patch centre (the tire geom's centre projected onto the contact plane through the mean
+// contact point) and frame: z = normal (road into tire), x = the tire geom's x axis projected
+// onto the contact plane (the longitudinal direction of kappa, theory.md section 2; its y axis
+// if x is within 0.1 degree of the normal, MuJoCo's first contact tangent if both are),
+// y = z x x.
+void patch_frame(const mjData* d, const Pair& p, const PairContacts& pc, mjtNum centre[3],
+                 mjtNum ex[3], mjtNum ey[3]) {
+  mjtNum point[3], rel[3];
+  mju_scl3(point, pc.point, 1.0 / pc.count);
+  mju_sub3(rel, d->geom_xpos + 3 * p.tire, point);
+  mju_addScl3(centre, d->geom_xpos + 3 * p.tire, pc.normal, -mju_dot3(rel, pc.normal));
+  const mjtNum* xmat = d->geom_xmat + 9 * p.tire;  // row-major: column j is the geom's axis j
+  bool found = false;
+  for (int j = 0; j < 2 && !found; ++j) {
+    const mjtNum axis[3] = {xmat[j], xmat[3 + j], xmat[6 + j]};
+    mju_addScl3(ex, axis, pc.normal, -mju_dot3(axis, pc.normal));
+    found = mju_norm3(ex) > 2e-3;
+  }
+  if (!found) mju_addScl3(ex, pc.t1, pc.normal, -mju_dot3(pc.t1, pc.normal));
+  mju_normalize3(ex);
+  mju_cross(ey, pc.normal, ex);
+}
+
+// The wrench (Fx, Fy, Mz) in the patch frame on the tire at the centre, and its opposite on the
+// road, into qfrc_passive (J^T f of each body; skipped for a body welded to the world, whose
+// Jacobian is 0); the tire's (world frame) into the state block s.
+void apply_wrench(const mjModel* m, mjData* d, const Pair& p, const Resultants<double>& w,
+                  const mjtNum centre[3], const mjtNum ex[3], const mjtNum ey[3],
+                  const mjtNum normal[3], mjtNum* s) {
+  mjtNum force[3], torque[3];
+  mju_scl3(force, ex, w.Fx);
+  mju_addToScl3(force, ey, w.Fy);
+  mju_scl3(torque, normal, w.Mz);
+  mju_copy3(s + kForce, force);
+  mju_copy3(s + kForce + 3, torque);
+  const int tire_body = m->geom_bodyid[p.tire], road_body = m->geom_bodyid[p.road];
+  if (m->body_weldid[tire_body] != 0)
+    mj_applyFT(m, d, force, torque, centre, tire_body, d->qfrc_passive);
+  if (m->body_weldid[road_body] == 0) return;
+  mju_scl3(force, force, -1.0);
+  mju_scl3(torque, torque, -1.0);
+  mj_applyFT(m, d, force, torque, centre, road_body, d->qfrc_passive);
+}
+
+// One pair's step (header comment): twist, law, wrench; s is its state block.
+void pair_step(const mjModel* m, mjData* d, Instance& inst, std::size_t k, mjtNum* s) {
+  const Pair& p = inst.pairs[k];
+  const PairContacts& pc = inst.contacts[k];
+  const bool set_valued = inst.config.law == Law::set_valued;
+  const double N = s[kN];
+  std::fill(s + kNUsed, s + kOther, 0.0);  // keeps N and c, written by `advance`
+  // The set-valued law keeps a history (c) of every step with contacts, even at N = 0.
+  if (pc.count == 0 || (!(N > 0) && !set_valued)) return;
+  mjtNum centre[3], ex[3], ey[3];
+  patch_frame(d, p, pc, centre, ex, ey);
+  const int tire_body = m->geom_bodyid[p.tire], road_body = m->geom_bodyid[p.road];
+  mjtNum dv[3], dw[3];
+  if (set_valued) {
+    // The twist from the Jacobian (J qvel), the same J as the Delassus matrix's.
+    relative_jacobian(m, d, centre, tire_body, road_body, inst.scratch);
+    mju_mulMatVec(s + kVel, inst.scratch.jw.data(), d->qvel, 6, dofs(m));
+    mju_copy3(dv, s + kVel);
+    mju_copy3(dw, s + kVel + 3);
+    mju_copy3(s + kCentre, centre);
+    s[kContact] = 1.0;
+  } else {
+    mjtNum vt[3], wt[3], vr[3], wr[3];
+    point_velocity(m, d, tire_body, centre, vt, wt);
+    point_velocity(m, d, road_body, centre, vr, wr);
+    mju_sub3(dv, vt, vr);
+    mju_sub3(dw, wt, wr);
+  }
+  const double vx = mju_dot3(dv, ex), vy = mju_dot3(dv, ey), omega = mju_dot3(dw, pc.normal);
+  s[kTwist] = vx;
+  s[kTwist + 1] = vy;
+  s[kTwist + 2] = omega;
+  if (!(N > 0)) return;
+  // Patch radius: given, or Hertz-like R = (N / k)^(1/3) (a sphere on a plane:
+  // a = (3 N R_s / 4 E*)^(1/3), Johnson, Contact Mechanics, eq. 4.22, so k = 4 E* / 3 R_s).
+  const double R =
+      inst.config.radius > 0 ? inst.config.radius : std::cbrt(N / inst.config.stiffness);
+  Resultants<double> w;
+  if (set_valued) {
+    const Vec3 ws = set_valued_wrench(m, d, inst, s, N, R, ex, ey, pc.normal);
+    w = {ws[0], ws[1], ws[2]};
+  } else {
+    try {
+      w = inst.wrench(N, R, vx, vy, omega);
+    } catch (const std::exception& e) {
+      fail(e.what());
+    }
+  }
+  apply_wrench(m, d, p, w, centre, ex, ey, pc.normal, s);
+  s[kNUsed] = N;
+  s[kRadius] = R;
+  s[kWrench] = w.Fx;
+  s[kWrench + 1] = w.Fy;
+  s[kWrench + 2] = w.Mz;
+}
+
 void compute(const mjModel* m, mjData* d, int instance, int) {
   Instance* inst = instance_of(d, instance);
-  const bool set_valued = inst->config.law == Law::set_valued;
   mjtNum* state = d->plugin_state + m->plugin_stateadr[instance];
-  for (std::size_t k = 0; k < inst->pairs.size(); ++k) {
-    const Pair& p = inst->pairs[k];
-    mjtNum* s = state + kStateSize * k;
-    const double N = s[kN];
-    std::fill(s + kNUsed, s + kOther, 0.0);  // keeps N and c, written by `advance`
-    int count = 0;
-    mjtNum normal[3] = {0, 0, 0}, t1[3] = {0, 0, 0}, point[3] = {0, 0, 0};
-    for (int i = 0; i < d->ncon; ++i) {
-      const mjContact& c = d->contact[i];
-      const int o = orientation(c, p);
-      if (!o || c.exclude) continue;
-      if (count == 0) {
-        mju_scl3(normal, c.frame, o);
-        mju_copy3(t1, c.frame + 3);
-      }
-      mju_addTo3(point, c.pos);
-      ++count;
-    }
-    // The set-valued law keeps a history (c) of every step with contacts, even at N = 0.
-    if (count == 0 || (!(N > 0) && !set_valued)) continue;
-    mju_scl3(point, point, 1.0 / count);
-    // Patch centre: the tire geom's centre projected onto the contact plane through `point`.
-    mjtNum centre[3], rel[3];
-    mju_sub3(rel, d->geom_xpos + 3 * p.tire, point);
-    mju_addScl3(centre, d->geom_xpos + 3 * p.tire, normal, -mju_dot3(rel, normal));
-    // Frame: z = normal (road into tire), x = the tire geom's x axis projected onto the contact
-    // plane (the longitudinal direction of kappa, theory.md section 2; its y axis if x is
-    // within 0.1 degree of the normal, MuJoCo's first contact tangent if both are), y = z x x.
-    mjtNum ex[3], ey[3];
-    const mjtNum* xmat = d->geom_xmat + 9 * p.tire;  // row-major: column j is the geom's axis j
-    bool found = false;
-    for (int j = 0; j < 2 && !found; ++j) {
-      const mjtNum axis[3] = {xmat[j], xmat[3 + j], xmat[6 + j]};
-      mju_addScl3(ex, axis, normal, -mju_dot3(axis, normal));
-      found = mju_norm3(ex) > 2e-3;
-    }
-    if (!found) mju_addScl3(ex, t1, normal, -mju_dot3(t1, normal));
-    mju_normalize3(ex);
-    mju_cross(ey, normal, ex);
-    const int tire_body = m->geom_bodyid[p.tire], road_body = m->geom_bodyid[p.road];
-    mjtNum dv[3], dw[3];
-    if (set_valued) {
-      // The twist from the Jacobian (J qvel), the same J as the Delassus matrix's.
-      relative_jacobian(m, d, centre, tire_body, road_body, inst->scratch);
-      mju_mulMatVec(s + kVel, inst->scratch.jw.data(), d->qvel, 6, dofs(m));
-      mju_copy3(dv, s + kVel);
-      mju_copy3(dw, s + kVel + 3);
-      mju_copy3(s + kCentre, centre);
-      s[kContact] = 1.0;
-    } else {
-      mjtNum vt[3], wt[3], vr[3], wr[3];
-      point_velocity(m, d, tire_body, centre, vt, wt);
-      point_velocity(m, d, road_body, centre, vr, wr);
-      mju_sub3(dv, vt, vr);
-      mju_sub3(dw, wt, wr);
-    }
-    const double vx = mju_dot3(dv, ex), vy = mju_dot3(dv, ey), omega = mju_dot3(dw, normal);
-    s[kTwist] = vx;
-    s[kTwist + 1] = vy;
-    s[kTwist + 2] = omega;
-    if (!(N > 0)) continue;
-    // Patch radius: given, or Hertz-like R = (N / k)^(1/3) (a sphere on a plane:
-    // a = (3 N R_s / 4 E*)^(1/3), Johnson, Contact Mechanics, eq. 4.22, so k = 4 E* / 3 R_s).
-    const double R =
-        inst->config.radius > 0 ? inst->config.radius : std::cbrt(N / inst->config.stiffness);
-    Resultants<double> w;
-    if (set_valued) {
-      const Vec3 ws = set_valued_wrench(m, d, *inst, s, N, R, ex, ey, normal);
-      w = {ws[0], ws[1], ws[2]};
-    } else {
-      try {
-        w = inst->wrench(N, R, vx, vy, omega);
-      } catch (const std::exception& e) {
-        fail(e.what());
-      }
-    }
-    mjtNum force[3], torque[3];
-    mju_scl3(force, ex, w.Fx);
-    mju_addToScl3(force, ey, w.Fy);
-    mju_scl3(torque, normal, w.Mz);
-    mj_applyFT(m, d, force, torque, centre, tire_body, d->qfrc_passive);
-    mju_copy3(s + kForce, force);
-    mju_copy3(s + kForce + 3, torque);
-    mju_scl3(force, force, -1.0);
-    mju_scl3(torque, torque, -1.0);
-    mj_applyFT(m, d, force, torque, centre, road_body, d->qfrc_passive);
-    s[kNUsed] = N;
-    s[kRadius] = R;
-    s[kWrench] = w.Fx;
-    s[kWrench + 1] = w.Fy;
-    s[kWrench + 2] = w.Mz;
-  }
+  gather_contacts(d, *inst);
+  for (std::size_t k = 0; k < inst->pairs.size(); ++k)
+    pair_step(m, d, *inst, k, state + kStateSize * k);
 }
 
 // The set-valued law's history (header comment): after the step, the patch acceleration from
@@ -554,23 +726,23 @@ void store_other_acceleration(const mjModel* m, mjData* d, Instance& inst, const
 
 // After MuJoCo's constraint solver: store this step's normal force of each pair for the next
 // (and, set-valued, the other acceleration c).
+// (One pass over d->contact, as gather_contacts: N = sum of the pair's contact normal forces.)
 void advance(const mjModel* m, mjData* d, int instance) {
   Instance* inst = instance_of(d, instance);
   mjtNum* state = d->plugin_state + m->plugin_stateadr[instance];
-  for (std::size_t k = 0; k < inst->pairs.size(); ++k) {
-    double N = 0.0;
-    for (int i = 0; i < d->ncon; ++i) {
-      const mjContact& c = d->contact[i];
-      if (!orientation(c, inst->pairs[k]) || c.exclude || c.efc_address < 0) continue;
-      mjtNum f6[6];
-      mj_contactForce(m, d, i, f6);
-      N += f6[0];
-    }
-    mjtNum* s = state + kStateSize * k;
-    s[kN] = N;
-    if (inst->config.law == Law::set_valued)
-      store_other_acceleration(m, d, *inst, inst->pairs[k], s);
+  for (std::size_t k = 0; k < inst->pairs.size(); ++k) state[kStateSize * k + kN] = 0.0;
+  for (int i = 0; i < d->ncon; ++i) {
+    const mjContact& c = d->contact[i];
+    if (c.exclude || c.efc_address < 0) continue;
+    const int k = inst->pair_index(c);
+    if (k < 0) continue;
+    mjtNum f6[6];
+    mj_contactForce(m, d, i, f6);
+    state[kStateSize * k + kN] += f6[0];
   }
+  if (inst->config.law == Law::set_valued)
+    for (std::size_t k = 0; k < inst->pairs.size(); ++k)
+      store_other_acceleration(m, d, *inst, inst->pairs[k], state + kStateSize * k);
 }
 
 }  // namespace

@@ -1,9 +1,10 @@
 """The MuJoCo plugin (plugins/mujoco) driven by the `mujoco` Python module, and the engine
 coefficient converter. Oracles: the library's own resultants at the plugin's state (through the
-Python package), MuJoCo's mj_applyFT for the mapping to generalised forces, the closed forms of
-theory.md section 3 (the sliding disk's fixed point 0.6530, integrated by RK4 for the stopping
-time), (2/3) f N R at pure spin, and for the set-valued law MuJoCo's dense mass matrix and
-Jacobian (the Delassus matrix), a loaded disk's displacement and the direction of a force.
+Python package; for the exact law the adaptive integrator, within the law's tolerance),
+MuJoCo's mj_applyFT for the mapping to generalised forces, the closed forms of theory.md
+section 3 (the sliding disk's fixed point 0.6530, integrated by RK4 for the stopping time),
+(2/3) f N R at pure spin, and for the set-valued law MuJoCo's dense mass matrix and Jacobian
+(the Delassus matrix), a loaded disk's displacement and the direction of a force.
 
 Skipped, with the reason shown, only if `mujoco` cannot be imported; a missing plugin library
 is an error.
@@ -29,6 +30,9 @@ import mujoco_common as mc  # noqa: E402
 
 import contensou  # noqa: E402
 from contensou.engines import engine_coefficients  # noqa: E402
+
+# The state of a pair (plugins/mujoco/contensou_plugin.cpp, header comment).
+STICK, ITERATIONS, HISTORY, STATE = 9, 10, 33, 34  # STATE: numbers a pair
 
 
 @pytest.fixture(scope="module", autouse=True)
@@ -106,6 +110,129 @@ def test_plugin_wrench_equals_library_at_a_frozen_state(variant, profile, stiffn
     assert d.qfrc_passive == pytest.approx(qfrc, rel=1e-6, abs=1e-9)
 
 
+def multi_pair_mjcf(profile: str = "uniform", kappa: float = 1.0, tolerance: str = "1e-6",
+                    pairs: str = "disk0 floor; disk1 floor; ball block; disk2 floor",
+                    law: str = "exact", second_instance: str = "") -> str:
+    """Three disks (R = 0.1 m) on a plane, a ball (r = 0.05 m) on a box (MuJoCo orders that
+    contact (ball, block): tire first) and a fourth disk that no pair names (condim 1: no
+    friction at all); one plugin instance for `pairs`, R = 0.1 m, f = 0.5."""
+    tol = f'<config key="tolerance" value="{tolerance}"/>' if tolerance else ""
+    disks = "".join(
+        f'<body pos="{0.4 * i} 0 0.005"><freejoint/><geom name="disk{i}" type="cylinder" '
+        'size="0.1 0.005" density="1000" condim="1"/></body>' for i in range(4))
+    return f"""<mujoco><option timestep="1e-3"/>
+      <extension><plugin plugin="contensou.friction"><instance name="patch">
+        <config key="pairs" value="{pairs}"/><config key="friction" value="0.5"/>
+        <config key="radius" value="0.1"/><config key="profile" value="{profile}"/>
+        <config key="kappa" value="{kappa}"/><config key="law" value="{law}"/>{tol}
+      </instance>{second_instance}</plugin></extension>
+      <worldbody><geom name="floor" type="plane" size="5 5 .1" condim="1"/>
+        <geom name="block" type="box" pos="3 0 0.1" size="0.3 0.3 0.1" condim="1"/>
+        <body pos="3 0 0.25"><freejoint/>
+          <geom name="ball" type="sphere" size="0.05" density="1000" condim="1"/></body>
+        {disks}</worldbody></mujoco>"""
+
+
+def reference_patch(profile: str, kappa: float, N: float, radius: float = 0.1):
+    """The patch of the plugin's configuration carrying the normal force N."""
+    patch = contensou.ContactPatch()
+    patch.radius_m, patch.friction, patch.kappa = radius, 0.5, kappa
+    patch.profile = {"uniform": contensou.uniform_profile, "hertz": contensou.hertz_profile,
+                     "seed-tire": contensou.seed_tire_profile}[profile]()
+    patch.reference_pressure_pa = 1.0
+    patch.reference_pressure_pa = N / patch.normal_load
+    return patch
+
+
+@pytest.mark.parametrize("profile,kappa", [("uniform", 1.0), ("hertz", 0.6), ("seed-tire", 1.0)])
+def test_exact_law_wrench_is_the_integrators_within_the_law_tolerance_for_every_pair(profile,
+                                                                                       kappa):
+    """Four pairs at four twists (pure spin, sliding and spinning, pure sliding, the ball's
+    contact in MuJoCo's (tire, road) order), each with its own normal force, at a frozen state:
+    each pair's twist is its own tire's (velocity at its patch centre, in its patch frame) and
+    its wrench is the adaptive integrator's (exact_resultants, 1e-12) for the same patch within
+    the law's tolerance 1e-6 of f N and f N R; the disk that no pair names gets no force."""
+    m = mujoco.MjModel.from_xml_string(multi_pair_mjcf(profile, kappa))
+    d = mujoco.MjData(m)
+    for _ in range(200):
+        mujoco.mj_step(m, d)
+    geoms = ["disk0", "disk1", "ball", "disk2"]
+    qvel = {"disk0": [0, 0, 0, 0, 0, 7.0], "disk1": [0.3, -0.2, 0, 0, 0, 3.0],
+            "disk2": [-0.4, 0.1, 0, 0, 0, 0], "ball": [0.05, 0.2, 0, 0, 0, -2.5],
+            "disk3": [0.5, 0, 0, 0, 0, 3.0]}
+    loads = [2.0, 5.0, 3.0, 7.0]
+    for name, v in qvel.items():
+        body = m.geom_bodyid[mujoco.mj_name2id(m, mujoco.mjtObj.mjOBJ_GEOM, name)]
+        d.qvel[m.body_dofadr[body]:m.body_dofadr[body] + 6] = v
+    for k, N in enumerate(loads):
+        d.plugin_state[STATE * k] = N
+    mujoco.mj_forward(m, d)
+    for k, (name, N) in enumerate(zip(geoms, loads)):
+        s = d.plugin_state[STATE * k:STATE * (k + 1)]
+        g = mujoco.mj_name2id(m, mujoco.mjtObj.mjOBJ_GEOM, name)
+        body = m.geom_bodyid[g]
+        mine = [c for c in d.contact[: d.ncon] if g in c.geom]
+        sign = 1.0 if mine[0].geom[1] == g else -1.0  # MuJoCo's normal: geom[0] into geom[1]
+        n = sign * mine[0].frame[:3]
+        assert n @ [0, 0, 1] == pytest.approx(1.0)
+        point = np.mean([c.pos for c in mine], axis=0)
+        centre = d.geom_xpos[g] - ((d.geom_xpos[g] - point) @ n) * n
+        w = d.xmat[body].reshape(3, 3) @ d.qvel[m.body_dofadr[body] + 3:m.body_dofadr[body] + 6]
+        v = d.qvel[m.body_dofadr[body]:m.body_dofadr[body] + 3] + np.cross(w, centre - d.xpos[body])
+        ex = patch_x_axis(m, d, n, name)
+        twist = [v @ ex, v @ np.cross(n, ex), w @ n]
+        assert s[1] == N and s[3:6] == pytest.approx(twist, abs=1e-9), name
+        want = contensou.exact_resultants(reference_patch(profile, kappa, N), *s[3:6],
+                                          tolerance=1e-12).resultants
+        f_n, f_n_r = 0.5 * N, 0.5 * N * 0.1
+        assert abs(s[6:8] - want[:2]).max() <= 1e-6 * f_n, name
+        assert abs(s[8] - want[2]) <= 1e-6 * f_n_r, name
+        assert abs(s[8]) > 1e-3 * f_n_r or name == "disk2", name  # not trivially zero
+    free = m.body_dofadr[m.geom_bodyid[mujoco.mj_name2id(m, mujoco.mjtObj.mjOBJ_GEOM, "disk3")]]
+    assert not d.qfrc_passive[free:free + 6].any()
+
+
+@pytest.mark.parametrize("pairs,message", [
+    ("disk0 floor; disk0 floor", "'disk0 floor' and 'disk0 floor' are the same geom pair"),
+    ("ball block; disk0 floor; block ball", "'block ball' and 'ball block' are the same geom pair"),
+    ("floor disk0", "'floor disk0'.*tire \\(first\\) geom is a plane"),
+    ("disk0 disk0", "'disk0 disk0' never touch: a geom has no contact with itself"),
+    ("disk0 disk1", "'disk0 disk1' never touch: their contype and conaffinity do not match"),
+])
+def test_a_pair_whose_friction_would_be_doubled_or_lost_is_an_error(pairs, message):
+    """The same geom pair twice (in either order) would get its friction twice; a plane as the
+    tire puts the patch at the plane's centre; a geom with itself, or two geoms whose contype and
+    conaffinity exclude each other, never touch: errors at init naming the pair."""
+    xml = multi_pair_mjcf(pairs=pairs)
+    if "disk1" in pairs:
+        xml = xml.replace('name="disk1" type="cylinder"',
+                          'name="disk1" type="cylinder" contype="2" conaffinity="2"')
+    with pytest.raises(Exception, match=message):
+        mujoco.MjData(mujoco.MjModel.from_xml_string(xml))
+    # Two instances naming one pair (in either order) would also apply it twice.
+    other = ('<instance name="again"><config key="pairs" value="block ball"/>'
+             '<config key="friction" value="0.5"/><config key="radius" value="0.1"/></instance>')
+    with pytest.raises(Exception, match="'block ball' is also a pair of plugin instance 'again'"):
+        mujoco.MjData(mujoco.MjModel.from_xml_string(multi_pair_mjcf(second_instance=other)))
+
+
+@pytest.mark.parametrize("law,value,message", [
+    ("exact", "0.1", "'tolerance' = '0.1' is outside \\(1e-14, 1e-2\\) for law 'exact'"),
+    ("exact", "1e-15", "'tolerance' = '1e-15' is outside \\(1e-14, 1e-2\\) for law 'exact'"),
+    ("exact", "0.01", "'tolerance' = '0.01' is outside \\(1e-14, 1e-2\\)"),
+    ("exact", "tight", "'tolerance' = 'tight' is not a positive number"),
+    ("exact", "-1e-8", "'tolerance' = '-1e-8' is not a positive number"),
+    ("set-valued", "1e-4",
+     "'tolerance' = '1e-4' is outside \\[1e-14, 1e-6\\] for law 'set-valued'"),
+    ("fractional", "1e-8", "'tolerance' = '1e-8' applies to laws 'exact' and 'set-valued' only"),
+])
+def test_bad_tolerance_is_an_error_naming_the_key_and_value(law, value, message):
+    """The exact law's tolerance lies in (1e-14, 1e-2), the limit surface's in [1e-14, 1e-6]; the
+    fractional law has none: anything else is an error at init naming the key and the value."""
+    with pytest.raises(Exception, match=message):
+        mujoco.MjData(mujoco.MjModel.from_xml_string(multi_pair_mjcf(law=law, tolerance=value)))
+
+
 def test_plugin_rejects_bad_configuration_with_a_clear_error():
     disk = mc.Disk()
     bad = mc.disk_mjcf(disk, "fractional").replace('value="uniform"', 'value="cone"')
@@ -166,9 +293,6 @@ def test_kappa_scales_the_lateral_friction_along_the_tire_axes(variant):
         assert abs(np.cross(world, axis)[2]) < 1e-6 * N
         assert abs(s[8]) < 1e-6 * N * disk.radius
 
-
-# The state of a pair (plugins/mujoco/contensou_plugin.cpp, header comment).
-STICK, ITERATIONS, HISTORY = 9, 10, 33
 
 
 @pytest.mark.parametrize("variant", ["set-valued", "set-valued-ellipsoid"])
