@@ -24,6 +24,19 @@ double resultant_error_bound(const double* e, double kappa, double k) {
   return std::max(force, torque);
 }
 
+// The rounding level of the sampled functions (relative to the load): no table is refined below.
+constexpr double kNoiseFloor = 1e-13;
+
+// The error weights of the table functions at t (piecewise_chebyshev.hpp): the functions
+// divided by sigma enter the resultants multiplied by sigma = (1 + t) / 2 (exact_law.hpp), a
+// only as it is; `blocks` consecutive sets of the six.
+void sigma_weights(double t, int blocks, double* w) {
+  const double sigma = 0.5 * (1.0 + t);
+  for (int b = 0; b < blocks; ++b)
+    for (int i = 0; i < kLawFunctions; ++i)
+      w[b * kLawFunctions + i] = i == kLawSpin ? 1.0 : sigma;
+}
+
 // Coefficients of T_k(x), k = 0..n, from values at the Lobatto points x_k = cos(k pi / n)
 // (values[k * stride]).
 void lobatto_to_chebyshev(int n, const double* values, int stride, double* c) {
@@ -134,18 +147,21 @@ FallingBuild build_falling(const ExactModel<double>& model, double delta, double
     });
     for (std::size_t i = 0; i < ts.size(); ++i) {
       const double* v = all.data() + i * per_t;
+      double w[kLawFunctions];
+      sigma_weights(ts[i], 1, w);
       for (int j = 0; j < J; ++j) {
         const double* piece = v + j * (2 * NZ + 1) * kLawFunctions;
         std::copy(piece, piece + M, values + (i * J + j) * M);
         for (int c = 0; c < kLawFunctions; ++c) {
-          z_error = std::max(z_error, z_interpolation_error(piece + c, kLawFunctions));
-          if (j == J - 1) tail = std::max(tail, std::abs(piece[c]));  // the top: x = 1
+          z_error = std::max(z_error, w[c] * z_interpolation_error(piece + c, kLawFunctions));
+          if (j == J - 1) tail = std::max(tail, w[c] * std::abs(piece[c]));  // the top: x = 1
         }
       }
     }
   };
   PiecewiseChebyshevOptions o = base;
   o.tolerance = tolerance / 3.0;  // the Lebesgue constant of the z points is below 3
+  o.weight = [J](double t, double* w) { sigma_weights(t, J * (kSlipDegreeZ + 1), w); };
   // A table's profile makes the falling part wiggle at large q where the centre of sliding
   // crosses its knots (jumps of p''): there the build stops at a bounded number of pieces and
   // reports what it reached.
@@ -202,8 +218,12 @@ ExactLaw make_exact_law(const ExactModel<double>& model, const ExactLawOptions& 
   law.load_area = sampler.load();
   PiecewiseChebyshevOptions o;
   o.degree = options.degree;
-  o.tolerance = 0.5 * per_function;
+  // Below about 1e-13 of the load the five integrals' rounding (and the differences that make
+  // a, b, c, d of them) is all a check sees: the table is not refined for it, and says so.
+  o.tolerance = std::max(0.5 * per_function, kNoiseFloor);
+  o.max_pieces = 512;
   o.breaks = graded_breaks(6);
+  o.weight = [](double t, double* w) { sigma_weights(t, 1, w); };
   const PiecewiseChebyshevBuild b = build_piecewise_chebyshev_batch(
       kLawFunctions,
       [&](const std::vector<double>& ts, double* g) {
@@ -229,7 +249,7 @@ ExactLaw make_exact_law(const ExactModel<double>& model, const ExactLawOptions& 
     } else {
       PiecewiseChebyshevOptions of = o;
       of.degree = options.falling_degree;
-      const double budget = std::min(0.5 * per_function * fs / fall, 1e-3);
+      const double budget = std::clamp(0.5 * per_function * fs / fall, 10.0 * kNoiseFloor, 1e-3);
       const FallingBuild fb = build_falling(model, f.exponent, budget, of, options.threads);
       law.falling = fb.table;
       std::fill(err, err + kLawFunctions, fb.achieved);

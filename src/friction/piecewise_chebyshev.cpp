@@ -48,7 +48,7 @@ double clenshaw(const double* c, int n, double x) {
 class Builder {
  public:
   Builder(int m, const ChebyshevBatchSampler& sample, const PiecewiseChebyshevOptions& o)
-      : m_(m), n_(o.degree), sample_(sample), scale_(o.scale) {
+      : m_(m), n_(o.degree), sample_(sample), scale_(o.scale), weight_(o.weight) {
     if (scale_.empty()) scale_.assign(m, 1.0);
   }
 
@@ -78,12 +78,14 @@ class Builder {
     Piece p{a, b, std::vector<double>((n_ + 1) * m_), 0.0, mid};
     for (int i = 0; i < m_; ++i)
       lobatto_coefficients(n_, values.data() + i, m_, p.coefficients.data() + i * (n_ + 1));
+    std::vector<double> w(m_, 1.0);
     for (int j = 0; j < n_; ++j) {
       const double x = std::cos(std::numbers::pi * (j + 0.5) / n_);
       const double* v = sampled.data() + (checks + j) * m_;
+      if (weight_) weight_(mid + half * x, w.data());
       for (int i = 0; i < m_; ++i) {
-        const double e =
-            std::abs(clenshaw(p.coefficients.data() + i * (n_ + 1), n_, x) - v[i]) / scale_[i];
+        const double e = std::abs(clenshaw(p.coefficients.data() + i * (n_ + 1), n_, x) - v[i]) *
+                         w[i] / scale_[i];
         if (!(e <= p.error)) {  // also catches NaN
           p.error = std::isnan(e) ? INFINITY : e;
           p.worst_t = mid + half * x;
@@ -99,6 +101,7 @@ class Builder {
   int m_, n_;
   const ChebyshevBatchSampler& sample_;
   std::vector<double> scale_;
+  std::function<void(double, double*)> weight_;
   std::map<double, std::vector<double>> cache_;
   int samples_ = 0;
 };

@@ -386,6 +386,29 @@ TEST(ExactLaw, SlidingDiskStopsAtFarkasRatio) {
   }
 }
 
+// A tolerance the sampled integrals cannot certify (their rounding is about 1e-13 of the load)
+// gives a law that says so (reached false, achieved above the tolerance), quickly, and is still
+// as good as it says; a tight one it can reach is reached.
+TEST(ExactLaw, SaysWhenItCannotReachTheTolerance) {
+  const ContactPatch p = seed_tire_patch();
+  const ExactModel<double> model = make_exact_model(p);
+  const ExactLaw tight = make_exact_law(model, {1e-12});
+  EXPECT_TRUE(tight.reached);
+  EXPECT_LE(tight.achieved, 1e-12);
+  const ExactLaw beyond = make_exact_law(model, {2e-14});
+  EXPECT_FALSE(beyond.reached);
+  EXPECT_GT(beyond.achieved, 2e-14);
+  EXPECT_LT(beyond.achieved, 1e-11);
+  const double fN = p.friction * normal_load(p), R = model.radius;
+  std::mt19937 rng(23);
+  for (int i = 0; i < 2000; ++i) {
+    const Kinematics<double> k = random_kinematics(rng, R, i);
+    const Resultants<double> e = exact_resultants(model, k, {1e-14}).resultants;
+    EXPECT_LE(relative_error(exact_law_resultants(beyond, k), e, fN, R), beyond.achieved + 2e-15);
+    EXPECT_LE(relative_error(exact_law_resultants(tight, k), e, fN, R), tight.achieved + 2e-15);
+  }
+}
+
 TEST(ExactLaw, RejectsBadInputWithClearErrors) {
   const ExactModel<double> model = make_exact_model(test_support::uniform_patch());
   for (double tol : {0.0, 1e-15, 1e-2, 0.5, -1.0, std::nan("")}) {

@@ -48,6 +48,10 @@ struct PiecewiseChebyshevOptions {
   // Each function's largest error between the nodes must be <= tolerance * scale[i].
   double tolerance = 1e-9;
   std::vector<double> scale;      // m entries (default 1)
+  // Optional weights of the errors at t (w[0..m-1], default 1): an error that enters the
+  // result multiplied by a small factor there (the exact law's functions divided by sigma)
+  // needs that much less accuracy, and sampling noise divided by it must not drive refinement.
+  std::function<void(double t, double* w)> weight;
   std::vector<double> breaks;     // initial partition (default: halves graded towards t = 0)
   double smallest_width = 1e-13;  // pieces are not split below this width
   int max_pieces = 4000;
