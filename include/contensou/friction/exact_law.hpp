@@ -242,7 +242,7 @@ void friction_functions(const ExactLaw& law, const ExactLawParameters<P>& p, con
 }  // namespace detail
 
 // Fx, Fy, Mz of the law at kinematics k with parameters p (exact_law.hpp header). Zero at
-// v = omega = 0 (Coulomb friction is set-valued there; 0 is in the set). Throws InvalidArgument
+// v = omega = 0 (Coulomb friction is set-valued there; 0 is in the set), and below 1e-290 m/s. Throws InvalidArgument
 // for non-finite kinematics. The parameters and the kinematics may have different scalar types
 // (double parameters with differentiated kinematics for a Jacobian; differentiated parameters
 // with measured kinematics in a fit); the result has the type of their product.
@@ -258,12 +258,10 @@ auto exact_law_resultants(const ExactLaw& law, const ExactLawParameters<P>& p,
   // Scaled velocities (the functions depend on ratios only): no square over- or underflows.
   const double scale = std::max(
       {std::abs(value_of(k.vx)), std::abs(value_of(k.vy)), std::abs(value_of(k.omega)) * radius});
-  if (!(scale > 0.0)) return Resultants<R>{R(0.0), R(0.0), R(0.0)};
-  // (1 / scale overflows for a subnormal scale: divide then.)
+  // Below 1e-290 m/s (where 1/speed, and with it the Jacobian, would overflow) it is rest.
+  if (!(scale > 1e-290)) return Resultants<R>{R(0.0), R(0.0), R(0.0)};
   const double inv = 1.0 / scale;
-  const bool tiny = !(inv < 1e300);
-  const K vx = tiny ? K(k.vx / scale) : K(k.vx * inv), vy = tiny ? K(k.vy / scale) : K(k.vy * inv);
-  const K w = tiny ? K(k.omega * radius / scale) : K(k.omega * (radius * inv));
+  const K vx = k.vx * inv, vy = k.vy * inv, w = k.omega * (radius * inv);
   // e = v/|v|; at |v| = 0 (or below 1e-150 of the scale) any direction: every term that
   // depends on it vanishes there.
   const double vxv = value_of(vx), vyv = value_of(vy);
