@@ -312,8 +312,8 @@ void print_law_table(const Runs& runs) {
     std::printf("| %s | %.1f | %.2f | %.1f | %.2f | %.0f | %.0f | %.1e | %.1e |\n", c.name.c_str(),
                 tv, tv / frac->second.GetAdjustedRealTime(), tj,
                 tj / frac_j->second.GetAdjustedRealTime(),
-                b == runs.end() ? 0.0 : b->second.GetAdjustedRealTime(), c.law.bytes() / 1024.0,
-                c.law.achieved, c.measured);
+                b == runs.end() ? 0.0 : b->second.GetAdjustedRealTime(),
+                static_cast<double>(c.law.bytes()) / 1024.0, c.law.achieved, c.measured);
   }
 }
 

@@ -1,5 +1,6 @@
 // The dispatch of the unrolled Chebyshev kernels (piecewise_chebyshev.hpp): the baseline build
-// here, the AVX2 + FMA build in chebyshev_kernels_avx2.cpp, chosen once from the CPU.
+// here, the AVX2 + FMA and AVX-512 builds in chebyshev_kernels_avx2.cpp and _avx512.cpp, chosen
+// once from the CPU (the wide kernel of a slip-speed table fits AVX-512's 32 registers).
 #include "chebyshev_kernels.hpp"
 
 namespace contensou::detail {
@@ -14,6 +15,11 @@ const KernelTable& kernels() {
   static const KernelTable table = [] {
     KernelTable t{};
 #if CONTENSOU_HAVE_AVX2_KERNELS
+    if (__builtin_cpu_supports("avx512f") && __builtin_cpu_supports("avx512dq") &&
+        __builtin_cpu_supports("avx512vl")) {
+      avx512::register_kernels(t);
+      return t;
+    }
     if (__builtin_cpu_supports("avx2") && __builtin_cpu_supports("fma")) {
       avx2::register_kernels(t);
       return t;

@@ -15,6 +15,9 @@ using KernelTable = std::array<std::array<std::array<ChebyshevKernel, 2>, 5>, 2>
 namespace avx2 {
 void register_kernels(KernelTable& table);
 }  // namespace avx2
+namespace avx512 {
+void register_kernels(KernelTable& table);
+}  // namespace avx512
 #endif
 
 }  // namespace contensou::detail

@@ -5,7 +5,6 @@
 #include <cmath>
 #include <numbers>
 
-#include "contensou/friction/forward_derivative.hpp"
 #include "exact_law_sampling.hpp"
 #include "parallel_for.hpp"
 
@@ -33,8 +32,7 @@ constexpr double kNoiseFloor = 1e-13;
 void sigma_weights(double t, int blocks, double* w) {
   const double sigma = 0.5 * (1.0 + t);
   for (int b = 0; b < blocks; ++b)
-    for (int i = 0; i < kLawFunctions; ++i)
-      w[b * kLawFunctions + i] = i == kLawSpin ? 1.0 : sigma;
+    for (int i = 0; i < kLawFunctions; ++i) w[b * kLawFunctions + i] = i == kLawSpin ? 1.0 : sigma;
 }
 
 // Coefficients of T_k(x), k = 0..n, from values at the Lobatto points x_k = cos(k pi / n)
@@ -179,7 +177,12 @@ FallingBuild build_falling(const ExactModel<double>& model, double delta, double
       t.coefficients.insert(t.coefficients.end(), b.table.coefficients.begin() + row + j * M,
                             b.table.coefficients.begin() + row + (j + 1) * M);
     values_to_z_coefficients(t);
-    index_pieces(t);
+    if (j == 0) {
+      index_pieces(t);
+    } else {  // the first octave holds the pieces for all
+      t.breaks.clear();
+      t.breaks.shrink_to_fit();
+    }
     out.table.octaves.push_back(std::move(t));
   }
   out.achieved = std::max({3.0 * b.achieved, z_error, tail});
@@ -263,21 +266,6 @@ ExactLaw make_exact_law(const ExactModel<double>& model, const ExactLawOptions& 
   law.achieved += model.representation_error * std::numbers::pi / law.load_area;
   law.reached = law.reached && law.achieved <= options.tolerance;
   return law;
-}
-
-ExactLawWithJacobian exact_law_resultants_with_jacobian(const ExactLaw& law,
-                                                        const Kinematics<double>& k) {
-  using D = ForwardDerivative<3>;
-  const Resultants<D> r = exact_law_resultants(
-      law, law.parameters, Kinematics<D>{D(k.vx, 0), D(k.vy, 1), D(k.omega, 2)});
-  ExactLawWithJacobian out;
-  out.resultants = {r.Fx.a, r.Fy.a, r.Mz.a};
-  for (int j = 0; j < 3; ++j) {
-    out.jacobian(0, j) = r.Fx.v[j];
-    out.jacobian(1, j) = r.Fy.v[j];
-    out.jacobian(2, j) = r.Mz.v[j];
-  }
-  return out;
 }
 
 }  // namespace contensou

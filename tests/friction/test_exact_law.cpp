@@ -16,6 +16,7 @@
 
 #include "closed_forms.hpp"
 #include "contensou/friction/exact_law.hpp"
+#include "contensou/friction/forward_derivative.hpp"
 #include "contensou/friction/fractional_law.hpp"
 #include "contensou/friction/slip_speed_measure.hpp"
 #include "jet_checks.hpp"
@@ -294,6 +295,41 @@ TEST(ExactLaw, JacobianMatchesCentralDifferences) {
           const double s = scale * (row == 2 ? R : 1.0);
           EXPECT_NEAR(J.jacobian(row, col), fd[row], 1e-4 * s) << c.name << " eps " << eps;
         }
+      }
+    }
+  }
+}
+
+// The hand-derived Jacobian (exact_law_jacobian.cpp) is the template's formula differentiated:
+// it equals the template evaluated with forward derivatives, also with f(w), kappa and shifts,
+// at the zeros and at subnormal speeds.
+TEST(ExactLaw, HandJacobianEqualsForwardDerivatives) {
+  ContactPatch p = seed_tire_patch();
+  p.profile.kx = 0.12;
+  p.profile.ky = -0.04;
+  p.kappa = 0.7;
+  p.slip_speed_friction = SlipSpeedFriction<double>{0.35, 0.2, 4.0, 1.0};
+  const ExactLaw laws[] = {make_exact_law(make_exact_model(p)),
+                           make_exact_law(make_exact_model(test_support::uniform_patch()))};
+  using D = ForwardDerivative<3>;
+  for (const ExactLaw& law : laws) {
+    std::mt19937 rng(29);
+    for (int i = 0; i < 3000; ++i) {
+      Kinematics<double> k = random_kinematics(rng, law.radius, i);
+      if (i % 50 == 1) k = {1e-200, -3e-201, 7.0};
+      const ExactLawWithJacobian h = exact_law_resultants_with_jacobian(law, k);
+      const Resultants<D> f = exact_law_resultants(
+          law, law.parameters, Kinematics<D>{D(k.vx, 0), D(k.vy, 1), D(k.omega, 2)});
+      const double scale = std::max({std::abs(f.Fx.a), std::abs(f.Fy.a), std::abs(f.Mz.a), 1.0});
+      EXPECT_NEAR(h.resultants.Fx, f.Fx.a, 1e-13 * scale);
+      EXPECT_NEAR(h.resultants.Mz, f.Mz.a, 1e-13 * scale);
+      double jscale = 0.0;
+      for (int j = 0; j < 3; ++j)
+        jscale = std::max({jscale, std::abs(f.Fx.v[j]), std::abs(f.Fy.v[j]), std::abs(f.Mz.v[j])});
+      for (int j = 0; j < 3; ++j) {
+        EXPECT_NEAR(h.jacobian(0, j), f.Fx.v[j], 1e-11 * jscale) << i;
+        EXPECT_NEAR(h.jacobian(1, j), f.Fy.v[j], 1e-11 * jscale) << i;
+        EXPECT_NEAR(h.jacobian(2, j), f.Mz.v[j], 1e-11 * jscale) << i;
       }
     }
   }

@@ -131,8 +131,12 @@ TEST(ClosedLoop, FindsSlipSpeedFrictionInsideTheIntegralsOnAnotherTire) {
     EXPECT_LT(ch.rms, 1.25 * d.noise[ci]) << ch.channel;
   }
   for (const ParameterEstimate& e : r.final_fit.parameters) {
-    if (e.name == "speed_drop") EXPECT_NEAR(e.value, 0.3, 0.02);
-    if (e.name == "speed_ref_mps") EXPECT_NEAR(e.value, 3.0, 0.3);
+    if (e.name == "speed_drop") {
+      EXPECT_NEAR(e.value, 0.3, 0.02);
+    }
+    if (e.name == "speed_ref_mps") {
+      EXPECT_NEAR(e.value, 3.0, 0.3);
+    }
   }
 }
 

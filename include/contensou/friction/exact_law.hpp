@@ -85,7 +85,9 @@ struct ExactLawParameters {
 // (t, z), z = (q)^delta, q = (|v| + |omega| R) / w_s, the speed in units of w_s. One table in t per
 // octave of 1 + z (1 + z in [2^j, 2^(j+1))), Chebyshev of degree degree_z in x = 2 (1 + z) / 2^j -
 // 3 within it: the 6 (degree_z + 1) "functions" of octave j are the coefficients c[k][i] of T_k(x).
-// Beyond the last octave the functions are taken as 0 (tail bounds them there).
+// Beyond the last octave the functions are taken as 0 (tail bounds them there). All octaves
+// share the pieces in t: only the first holds them (breaks, map, index), the others their
+// coefficients only.
 inline constexpr int kSlipDegreeZ = 8;
 inline constexpr int kSlipOctaves = 1;  // octaves of 1 + z a piece
 struct SlipSpeedTable {
@@ -188,10 +190,11 @@ void falling_values(const SlipSpeedTable& s, double t, double z, double* g, doub
     for (int i = 0; i < kLawFunctions; ++i) gt[i] = gz[i] = 0.0;
   if (j < 0) return;
   double B[M], dB[M], T[NZ + 1], D[NZ + 1];
+  // The pieces in t are those of the first octave; every octave holds its coefficients.
   if constexpr (Slope)
-    evaluate_chebyshev_fast(s.octaves[j], t, B, dB);
+    evaluate_chebyshev_fast(s.octaves.front(), t, B, dB, &s.octaves[j]);
   else
-    evaluate_chebyshev_fast(s.octaves[j], t, B);
+    evaluate_chebyshev_fast(s.octaves.front(), t, B, &s.octaves[j]);
   chebyshev_basis<NZ, Slope>(x, T, D);
   for (int k = 0; k <= NZ; ++k)
     for (int i = 0; i < kLawFunctions; ++i) {
@@ -242,10 +245,11 @@ void friction_functions(const ExactLaw& law, const ExactLawParameters<P>& p, con
 }  // namespace detail
 
 // Fx, Fy, Mz of the law at kinematics k with parameters p (exact_law.hpp header). Zero at
-// v = omega = 0 (Coulomb friction is set-valued there; 0 is in the set), and below 1e-290 m/s. Throws InvalidArgument
-// for non-finite kinematics. The parameters and the kinematics may have different scalar types
-// (double parameters with differentiated kinematics for a Jacobian; differentiated parameters
-// with measured kinematics in a fit); the result has the type of their product.
+// v = omega = 0 (Coulomb friction is set-valued there; 0 is in the set), and below 1e-290 m/s.
+// Throws InvalidArgument for non-finite kinematics. The parameters and the kinematics may have
+// different scalar types (double parameters with differentiated kinematics for a Jacobian;
+// differentiated parameters with measured kinematics in a fit); the result has the type of their
+// product.
 template <class P, class K>
 auto exact_law_resultants(const ExactLaw& law, const ExactLawParameters<P>& p,
                           const Kinematics<K>& k) {
@@ -320,6 +324,10 @@ struct ExactLawWithJacobian {
   Eigen::Matrix3d jacobian;  // rows Fx, Fy, Mz; columns vx, vy, omega
 };
 ExactLawWithJacobian exact_law_resultants_with_jacobian(const ExactLaw& law,
+                                                        const Kinematics<double>& k);
+// The same at other parameters (exact_law_resultants).
+ExactLawWithJacobian exact_law_resultants_with_jacobian(const ExactLaw& law,
+                                                        const ExactLawParameters<double>& p,
                                                         const Kinematics<double>& k);
 
 }  // namespace contensou

@@ -47,7 +47,7 @@ struct PiecewiseChebyshevOptions {
   int degree = 16;
   // Each function's largest error between the nodes must be <= tolerance * scale[i].
   double tolerance = 1e-9;
-  std::vector<double> scale;      // m entries (default 1)
+  std::vector<double> scale;  // m entries (default 1)
   // Optional weights of the errors at t (w[0..m-1], default 1): an error that enters the
   // result multiplied by a small factor there (the exact law's functions divided by sigma)
   // needs that much less accuracy, and sampling noise divided by it must not drive refinement.
@@ -172,20 +172,30 @@ void evaluate_chebyshev(const PiecewiseChebyshev& p, double t, double* out);
 // Values and derivatives d/dt of all m functions at t.
 void evaluate_chebyshev(const PiecewiseChebyshev& p, double t, double* out, double* slope);
 
-// The same through the unrolled kernels where one exists (the hot path of the exact law).
-inline void evaluate_chebyshev_fast(const PiecewiseChebyshev& p, double t, double* out) {
+// The same through the unrolled kernels where one exists (the hot path of the exact law), with
+// the pieces of `partition` and the coefficients of `coefficients` (a table on the same pieces,
+// by default the partition's own).
+inline void evaluate_chebyshev_fast(const PiecewiseChebyshev& partition, double t, double* out,
+                                    const PiecewiseChebyshev* coefficients = nullptr) {
+  const PiecewiseChebyshev& p = coefficients ? *coefficients : partition;
   double x, dxdt;
-  const double* c = detail::locate_piece(p, t, x, dxdt);
+  const double* c = detail::locate_piece(partition, t, x, dxdt);
+  c = p.coefficients.data() +
+      (c - partition.coefficients.data()) / partition.functions * p.functions;
   if (const detail::ChebyshevKernel k = detail::chebyshev_kernel(p.functions, p.degree, false))
     k(c, x, out, nullptr);
   else
     evaluate_chebyshev(p, t, out);
 }
 
-inline void evaluate_chebyshev_fast(const PiecewiseChebyshev& p, double t, double* out,
-                                    double* slope) {
+inline void evaluate_chebyshev_fast(const PiecewiseChebyshev& partition, double t, double* out,
+                                    double* slope,
+                                    const PiecewiseChebyshev* coefficients = nullptr) {
+  const PiecewiseChebyshev& p = coefficients ? *coefficients : partition;
   double x, dxdt;
-  const double* c = detail::locate_piece(p, t, x, dxdt);
+  const double* c = detail::locate_piece(partition, t, x, dxdt);
+  c = p.coefficients.data() +
+      (c - partition.coefficients.data()) / partition.functions * p.functions;
   if (const detail::ChebyshevKernel k = detail::chebyshev_kernel(p.functions, p.degree, true)) {
     k(c, x, out, slope);
     for (int i = 0; i < p.functions; ++i) slope[i] *= dxdt;
