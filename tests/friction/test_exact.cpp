@@ -624,19 +624,10 @@ Resultants<double> ring_oracle(const ContactPatch& p, const std::vector<double>&
   return {sum[0] + carry[0], sum[1] + carry[1], sum[2] + carry[2]};
 }
 
-// A dense table with a kink near the rim, n points rho_i = i / (n - 1) (a finite-element
-// profile): p = 1 + 0.4 rho^2 - 0.9 rho^4 below 0.9, 0.7439 - 4 (rho - 0.9) from there (a
-// step of 0.01 at 0.9 as well: the monotone interpolant has a bump one interval wide).
+// A dense table with a kink near the rim (test_support::kinked_table_profile), kx = 0.14.
 ContactPatch dense_table_patch(int n, std::vector<double>& rho) {
-  std::vector<double> pv;
-  rho.clear();
-  for (int i = 0; i < n; ++i) {
-    const double r = static_cast<double>(i) / (n - 1);
-    rho.push_back(r);
-    pv.push_back(r < 0.9 ? 1.0 + 0.4 * r * r - 0.9 * std::pow(r, 4) : 0.7439 - 4.0 * (r - 0.9));
-  }
   ContactPatch p = seed_patch();
-  p.profile = tabulated_profile(rho, pv);
+  p.profile = test_support::kinked_table_profile(n, &rho);
   p.profile.kx = 0.14;
   return p;
 }

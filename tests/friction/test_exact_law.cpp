@@ -32,17 +32,6 @@ constexpr int kRandomPoints = 2000;  // the sanitizer build runs the same checks
 constexpr int kRandomPoints = 100000;
 #endif
 
-// A 101-point table with a kink near the rim (a finite-element profile).
-PressureProfile kinked_table(int points = 101) {
-  std::vector<double> rho, p;
-  for (int i = 0; i < points; ++i) {
-    const double r = i / double(points - 1);
-    rho.push_back(r);
-    p.push_back(r < 0.9 ? 1.0 + 0.4 * r * r - 0.9 * std::pow(r, 4) : 0.7439 - 4.0 * (r - 0.9));
-  }
-  return tabulated_profile(rho, p);
-}
-
 struct Case {
   const char* name;
   ContactPatch patch;
@@ -66,7 +55,7 @@ std::vector<Case> profile_kinds() {
   c.kappa = 1.4;
   out.push_back({"clipped", c});
   ContactPatch t = seed_tire_patch();
-  t.profile = kinked_table();
+  t.profile = test_support::kinked_table_profile(101);
   t.profile.kx = 0.14;
   out.push_back({"table101", t});
   return out;

@@ -175,13 +175,22 @@ void evaluate_chebyshev(const PiecewiseChebyshev& p, double t, double* out, doub
 // The same through the unrolled kernels where one exists (the hot path of the exact law), with
 // the pieces of `partition` and the coefficients of `coefficients` (a table on the same pieces,
 // by default the partition's own).
+namespace detail {
+// The coefficients, in `p`, of the piece of `partition` that holds t (tables on the same pieces).
+inline const double* coefficients_at(const PiecewiseChebyshev& partition,
+                                     const PiecewiseChebyshev& p, double t, double& x,
+                                     double& dxdt) {
+  const double* c = locate_piece(partition, t, x, dxdt);
+  return p.coefficients.data() +
+         (c - partition.coefficients.data()) / partition.functions * p.functions;
+}
+}  // namespace detail
+
 inline void evaluate_chebyshev_fast(const PiecewiseChebyshev& partition, double t, double* out,
                                     const PiecewiseChebyshev* coefficients = nullptr) {
   const PiecewiseChebyshev& p = coefficients ? *coefficients : partition;
   double x, dxdt;
-  const double* c = detail::locate_piece(partition, t, x, dxdt);
-  c = p.coefficients.data() +
-      (c - partition.coefficients.data()) / partition.functions * p.functions;
+  const double* c = detail::coefficients_at(partition, p, t, x, dxdt);
   if (const detail::ChebyshevKernel k = detail::chebyshev_kernel(p.functions, p.degree, false))
     k(c, x, out, nullptr);
   else
@@ -193,9 +202,7 @@ inline void evaluate_chebyshev_fast(const PiecewiseChebyshev& partition, double 
                                     const PiecewiseChebyshev* coefficients = nullptr) {
   const PiecewiseChebyshev& p = coefficients ? *coefficients : partition;
   double x, dxdt;
-  const double* c = detail::locate_piece(partition, t, x, dxdt);
-  c = p.coefficients.data() +
-      (c - partition.coefficients.data()) / partition.functions * p.functions;
+  const double* c = detail::coefficients_at(partition, p, t, x, dxdt);
   if (const detail::ChebyshevKernel k = detail::chebyshev_kernel(p.functions, p.degree, true)) {
     k(c, x, out, slope);
     for (int i = 0; i < p.functions; ++i) slope[i] *= dxdt;
