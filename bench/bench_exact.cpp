@@ -280,7 +280,35 @@ void BM_LawBuild(benchmark::State& state, std::size_t which) {
   for (auto _ : state) benchmark::DoNotOptimize(make_exact_law(model, one_core));
 }
 
+// Builds that are too slow to sit beside the evaluation rows (no reference errors at 1e-12): the
+// 101-point table with f(w) inside, at the law's default tolerance and at the identification's.
+ContactPatch table_falling_patch() {
+  ContactPatch p = table_patch();
+  p.slip_speed_friction = SlipSpeedFriction<double>{0.3, 0.2, 5.0, 1.0};
+  return p;
+}
+
+void BM_LawBuildTableFalling(benchmark::State& state, double tolerance) {
+  const ExactModel<double> model = make_exact_model(table_falling_patch());
+  ExactLawOptions one_core;
+  one_core.threads = 1;
+  one_core.tolerance = tolerance;
+  double achieved_error = 0.0, bytes = 0.0;
+  for (auto _ : state) {
+    const ExactLaw law = make_exact_law(model, one_core);
+    achieved_error = law.achieved;
+    bytes = static_cast<double>(law.bytes());
+  }
+  state.counters["achieved"] = achieved_error;
+  state.counters["KB"] = bytes / 1024.0;
+}
+
 void register_law_benchmarks() {
+  for (double tol : {1e-8, 1e-6})
+    benchmark::RegisterBenchmark((std::string("build:table101+f(w)/tol:") + (tol > 1e-7 ? "1e-6" : "1e-8")).c_str(),
+                                 BM_LawBuildTableFalling, tol)
+        ->Unit(benchmark::kMillisecond)
+        ->Iterations(1);
   for (bool j : {false, true}) {
     const std::string suffix = j ? "+jacobian" : "";
     benchmark::RegisterBenchmark(("law:fractional" + suffix).c_str(), BM_FractionalOnPoints, j)
