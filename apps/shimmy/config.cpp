@@ -78,20 +78,6 @@ nlohmann::json to_json(const ShimmyConfig& c) {
   return j;
 }
 
-const std::vector<std::string>& history_columns() {
-  static const std::vector<std::string> columns = [] {
-    std::vector<std::string> c = {
-        "t_s",      "y_m", "ydot_mps", "psi_rad",           "psidot_radps", "wheel_spin_radps",
-        "lambda_m", "x_m", "xdot_mps", "wheel_spin2_radps", "carcass_y_m",  "carcass_psi_rad"};
-    static_assert(kStateSize == 11, "history_columns: one name per state");
-    for (const char* n : {"load_n", "patch_radius_m", "vx_mps", "vy_mps", "omega_radps",
-                          "slip_ratio", "friction", "Fx_n", "Fy_n", "Mz_nm", "brake_nm", "rolling"})
-      c.push_back(n);
-    return c;
-  }();
-  return columns;
-}
-
 ShimmyConfig read_shimmy_config(const std::string& path, const std::string& gear_name) {
   std::ifstream in(path, std::ios::binary);
   if (!in) throw std::runtime_error(path + ": cannot open the configuration file");

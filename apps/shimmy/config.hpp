@@ -8,6 +8,7 @@
 #include "contensou/gear/landing_gear.hpp"
 #include "contensou/gear/landing_simulation.hpp"
 #include "contensou/gear/stability_map.hpp"
+#include "history.hpp"
 
 namespace contensou::app {
 
@@ -40,11 +41,6 @@ struct ShimmyConfig {
       {{"scenario.forward_speed_mps", 30.0, 90.0, 50},
        {"scenario.static_load_n", 20.0e3, 140.0e3, 50}}};
 };
-
-// The columns of a landing's CSV history: t, the state vector (kStateSize entries, in the
-// order of the gear's state indices), then the contact's load, patch, slip, friction, forces,
-// brake torque and the rolling flag. The app and the Python package both write these.
-const std::vector<std::string>& history_columns();
 
 // The default configuration as JSON (every key, with its value).
 nlohmann::json to_json(const ShimmyConfig& config);

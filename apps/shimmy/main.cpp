@@ -15,6 +15,7 @@
 #include "config.hpp"
 #include "contensou/friction/error.hpp"
 #include "gnuplot.hpp"
+#include "history_plots.hpp"
 #include "tire_report.hpp"
 
 using namespace contensou;
@@ -31,13 +32,9 @@ std::string csv_history(const LandingRun& run) {
   for (std::size_t i = 0; i < columns.size(); ++i) o << (i ? "," : "") << columns[i];
   o << '\n';
   for (const LandingSample& s : run.samples) {
-    o << s.t;
-    for (int i = 0; i < kStateSize; ++i) o << ',' << s.x[i];
-    const ContactState& c = s.contact;
-    o << ',' << c.load_n << ',' << c.patch_radius_m << ',' << c.slip.vx << ',' << c.slip.vy << ','
-      << c.slip.omega << ',' << c.slip_ratio << ',' << c.friction << ',' << c.force.Fx << ','
-      << c.force.Fy << ',' << c.force.Mz << ',' << c.brake_torque_nm << ',' << (s.rolling ? 1 : 0)
-      << '\n';
+    const std::vector<double> row = history_row(s);
+    for (std::size_t i = 0; i < row.size(); ++i) o << (i ? "," : "") << row[i];
+    o << '\n';
   }
   return o.str();
 }
@@ -179,42 +176,6 @@ void print_stability(const ShimmyConfig& config, const std::vector<LandingRun>& 
   }
 }
 
-// One PNG per quantity, the models side by side; the analysis window shaded.
-void draw_histories(const std::string& dir, const std::vector<LandingRun>& runs) {
-  struct Panel {
-    const char* name;
-    const char* title;
-    std::vector<std::pair<int, const char*>> columns;  // 1-based CSV columns and labels
-  };
-  const std::vector<Panel> panels{
-      {"torsion", "torsion psi [rad]", {{4, "psi"}}},
-      {"lateral", "lateral deflection y [m]", {{2, "y"}}},
-      {"slip", "patch sliding: slip ratio vx/V and vy [m/s]", {{16, "vx/V"}, {14, "vy [m/s]"}}},
-      {"spin", "spin of the patch omega = dpsi/dt [rad/s]", {{15, "omega"}}},
-      {"forces", "friction force on the tire [N]", {{18, "Fx"}, {19, "Fy"}}},
-      {"torque", "friction torque on the tire Mz [N m]", {{20, "Mz"}}},
-      {"fore_aft", "fore-aft bending x [m] (0 when off)", {{8, "x"}}}};
-  for (const Panel& p : panels) {
-    std::ostringstream gp;
-    gp << "set terminal pngcairo noenhanced size " << 520 * runs.size() << ",420 font ',10'\n"
-       << "set output '" << p.name << ".png'\nset datafile separator ','\n"
-       << "set multiplot layout 1," << runs.size() << " title '" << p.title << "'\n"
-       << "set xlabel 't [s]'\nset grid\nset key top right\n";
-    for (const LandingRun& r : runs) {
-      gp << "set title '" << to_string(r.contact) << (r.metrics.shimmy ? " (shimmy)" : "") << "'\n"
-         << "set object 1 rect from " << r.window_start_s << ", graph 0 to " << r.window_end_s
-         << ", graph 1 behind fillcolor rgb '#eeeeee' fillstyle solid noborder\nplot ";
-      for (std::size_t k = 0; k < p.columns.size(); ++k)
-        gp << (k ? ", " : "") << "'" << to_string(r.contact)
-           << ".csv' using 1:" << p.columns[k].first << " with lines lw 1 title '"
-           << p.columns[k].second << "'";
-      gp << "\n";
-    }
-    gp << "unset multiplot\n";
-    run_gnuplot(dir, p.name, gp.str());
-  }
-}
-
 void progress_bar(const std::string& label, int done, int total) {
   if (!isatty(STDERR_FILENO)) return;
   const int width = 40, filled = total > 0 ? width * done / total : width;
@@ -228,6 +189,49 @@ std::string short_name(const std::string& parameter) {
   return parameter.substr(parameter.rfind('.') + 1);
 }
 
+// "structure.offset_m" -> "offset [m]": a configuration key as an axis label, its unit suffix
+// spelled out ("[-]" for a pure number).
+std::string parameter_axis_label(const std::string& parameter) {
+  static const std::vector<std::pair<std::string, std::string>> units{
+      {"_nms_per_rad", "N m s/rad"}, {"_nm_per_rad", "N m/rad"}, {"_nm2_per_rad", "N m^2/rad"},
+      {"_ns_per_m", "N s/m"},        {"_n_per_m", "N/m"},        {"_kgm2", "kg m^2"},
+      {"_mps", "m/s"},               {"_nm", "N m"},             {"_kg", "kg"},
+      {"_pa", "Pa"},                 {"_rad", "rad"},            {"_n", "N"},
+      {"_m", "m"},                   {"_s", "s"}};
+  std::string name = short_name(parameter), unit = "-";
+  for (const auto& [suffix, u] : units)
+    if (name.size() > suffix.size() &&
+        name.compare(name.size() - suffix.size(), suffix.size(), suffix) == 0) {
+      name.erase(name.size() - suffix.size());
+      unit = u;
+      break;
+    }
+  std::replace(name.begin(), name.end(), '_', ' ');
+  return name + " [" + unit + "]";
+}
+
+// The map's axes and ranges, its coloured column where the cell is valid, and the cells it could
+// not compute as black crosses counted in the key (gnuplot, columns by their CSV names).
+std::string map_plot_body(const StabilityMap& m, const std::string& base, const std::string& value) {
+  const long invalid = std::count_if(m.cells.begin(), m.cells.end(),
+                                     [](const MapCell& c) { return !c.valid; });
+  const std::string xy = "\"" + m.x.parameter + "\":\"" + m.y.parameter + "\"";
+  std::ostringstream gp;
+  gp << "set datafile separator ','\nset datafile columnheaders\n"
+     << "set xlabel '" << parameter_axis_label(m.x.parameter) << "'\nset ylabel '"
+     << parameter_axis_label(m.y.parameter) << "'\nset xrange [" << m.x.from << ":" << m.x.to
+     << "]\nset yrange [" << m.y.from << ":" << m.y.to << "]\nset key outside below\n"
+     << "plot '" << base << ".csv' using " << xy << ":(column(\"valid\") > 0 ? column(\"" << value
+     << "\") : NaN) with image notitle";
+  if (invalid > 0)
+    gp << ", '' using \"" << m.x.parameter << "\":(column(\"valid\") > 0 ? NaN : column(\""
+       << m.y.parameter << "\")) with points pt 2 ps 0.8 lc rgb 'black' title '"
+       << invalid << " of " << m.cells.size()
+       << " cells not computed (brake short of its target slip or solve failed: CSV column "
+          "error)'";
+  return gp.str();
+}
+
 // Writes the map's CSV and PNG; returns its summary.
 nlohmann::json write_map(const std::string& dir, const StabilityMap& m) {
   const std::string base = "map_" + short_name(m.x.parameter) + "_" + short_name(m.y.parameter) +
@@ -238,21 +242,22 @@ nlohmann::json write_map(const std::string& dir, const StabilityMap& m) {
   csv << m.x.parameter << ',' << m.y.parameter
       << ",growth_rate_per_s,frequency_Hz,final_amplitude_rad,shimmy,valid,error\n";
   double g_max = 1e-3;
-  int shimmy_cells = 0, failed = 0;
+  int shimmy_cells = 0, failed = 0, invalid = 0;
   for (int j = 0; j < m.y.points; ++j) {
     for (int i = 0; i < m.x.points; ++i) {
       const MapCell& c = m.cells[static_cast<std::size_t>(j * m.x.points + i)];
+      invalid += !c.valid;
       csv << c.x << ',' << c.y << ',' << c.growth_rate_per_s << ',' << c.frequency_hz << ','
           << c.last_amplitude_rad << ',' << c.shimmy << ',' << c.valid << ",\"" << c.error
           << "\"\n";
       if (c.valid) g_max = std::max(g_max, std::abs(c.growth_rate_per_s));
       shimmy_cells += c.shimmy;
       failed += !c.error.empty();
-      // Shimmy boundary: midpoints between neighbours that disagree.
+      // Shimmy boundary: midpoints between computed neighbours that disagree.
       for (const auto& [di, dj] : {std::pair{1, 0}, std::pair{0, 1}}) {
         if (i + di >= m.x.points || j + dj >= m.y.points) continue;
         const MapCell& d = m.cells[static_cast<std::size_t>((j + dj) * m.x.points + i + di)];
-        if (d.shimmy != c.shimmy) boundary << 0.5 * (c.x + d.x) << ',' << 0.5 * (c.y + d.y) << '\n';
+        if (c.valid && d.valid && d.shimmy != c.shimmy) boundary << 0.5 * (c.x + d.x) << ',' << 0.5 * (c.y + d.y) << '\n';
       }
     }
     csv << '\n';  // gnuplot reads blank-line-separated rows as a grid
@@ -261,18 +266,15 @@ nlohmann::json write_map(const std::string& dir, const StabilityMap& m) {
   write_file_atomically(dir + "/" + base + "_boundary.csv", boundary.str() + "\n");
   std::ostringstream gp;
   gp << "set terminal pngcairo noenhanced size 760,620 font ',10'\nset output '" << base
-     << ".png'\n"
-     << "set datafile separator ','\nset title '" << to_string(m.contact) << ", "
+     << ".png'\nset title '" << to_string(m.contact) << ", "
      << (m.linear ? std::string(to_string(m.phase)) + ": largest oscillatory eigenvalue real part"
                   : std::string("simulated landing: torsional growth rate"))
      << " [1/s]; black: stability boundary'\n"
-     << "set xlabel '" << m.x.parameter << "'\nset ylabel '" << m.y.parameter << "'\n"
      << "set palette defined (0 '#2166ac', 0.5 '#f7f7f7', 1 '#b2182b')\n"
      << "set cbrange [" << -g_max << ":" << g_max << "]\nset cblabel 'growth rate [1/s]'\n"
-     << "set xrange [" << m.x.from << ":" << m.x.to << "]\nset yrange [" << m.y.from << ":"
-     << m.y.to << "]\n"
-     << "plot '" << base << ".csv' skip 1 using 1:2:($7 > 0 ? $3 : NaN) with image notitle, '"
-     << base << "_boundary.csv' using 1:2 with points pt 7 ps 0.5 lc rgb 'black' notitle\n";
+     << map_plot_body(m, base, "growth_rate_per_s") << ", '" << base
+     << "_boundary.csv' using 1:2 with points pt 7 ps 0.5 lc rgb 'black' title 'stability "
+        "boundary'\n";
   run_gnuplot(dir, base, gp.str());
   return {{"x", m.x.parameter},
           {"y", m.y.parameter},
@@ -281,6 +283,7 @@ nlohmann::json write_map(const std::string& dir, const StabilityMap& m) {
           {"points", {m.x.points, m.y.points}},
           {"shimmy_cells", shimmy_cells},
           {"failed_cells", failed},
+          {"not_computed_cells", invalid},
           {"csv", base + ".csv"},
           {"png", base + ".png"}};
 }
@@ -304,13 +307,11 @@ nlohmann::json write_probability_map(const std::string& dir, const StabilityMap&
   write_file_atomically(dir + "/" + base + ".csv", csv.str());
   std::ostringstream gp;
   gp << "set terminal pngcairo noenhanced size 760,620 font ',10'\nset output '" << base
-     << ".png'\nset datafile separator ','\nset title '" << to_string(m.contact) << ", "
+     << ".png'\nset title '" << to_string(m.contact) << ", "
      << to_string(m.phase) << ": probability of shimmy over the tire report draws'\n"
-     << "set xlabel '" << m.x.parameter << "'\nset ylabel '" << m.y.parameter << "'\n"
      << "set palette defined (0 '#f7f7f7', 0.5 '#f4a582', 1 '#b2182b')\nset cbrange [0:1]\n"
-     << "set xrange [" << m.x.from << ":" << m.x.to << "]\nset yrange [" << m.y.from << ":"
-     << m.y.to << "]\n"
-     << "plot '" << base << ".csv' skip 1 using 1:2:($5 > 0 ? $3 : NaN) with image notitle\n";
+     << "set cblabel 'probability of shimmy'\n"
+     << map_plot_body(m, base, "shimmy_probability") << "\n";
   run_gnuplot(dir, base, gp.str());
   return {{"x", m.x.parameter},          {"y", m.y.parameter},
           {"phase", to_string(m.phase)}, {"model", to_string(m.contact)},

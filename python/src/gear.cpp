@@ -47,13 +47,8 @@ nb::dict simulate(const std::string& text, const std::string& model, bool record
   std::vector<double> h;
   h.reserve(n * w);
   for (const LandingSample& s : r.samples) {
-    const ContactState& k = s.contact;
-    h.push_back(s.t);
-    for (int i = 0; i < kStateSize; ++i) h.push_back(s.x[i]);
-    for (double v :
-         {k.load_n, k.patch_radius_m, k.slip.vx, k.slip.vy, k.slip.omega, k.slip_ratio, k.friction,
-          k.force.Fx, k.force.Fy, k.force.Mz, k.brake_torque_nm, s.rolling ? 1.0 : 0.0})
-      h.push_back(v);
+    const std::vector<double> row = app::history_row(s);
+    h.insert(h.end(), row.begin(), row.end());
   }
   nb::dict d;
   d["columns"] = app::history_columns();

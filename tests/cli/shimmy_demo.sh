@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # contensou-shimmy: the demo writes summary.json with the three models, their CSVs and the
-# stability verdicts of both phases; the legacy gear is classically unstable; --tire runs the
+# stability verdicts of both phases; the plots name columns the CSVs have, with units; the legacy gear is classically unstable; --tire runs the
 # Monte Carlo; a small map runs; bad configurations, gear names and tire reports give one stderr
 # line naming the file:line:column or the option, and no summary.
 # Usage: shimmy_demo.sh PATH/TO/contensou-shimmy
@@ -93,6 +93,9 @@ PY
   || fail "map run"
 [ -s "$dir/map/map_forward_speed_mps_torsional_damping_nms_per_rad_touchdown_coupled.csv" ] \
   || fail "no map CSV: $(ls "$dir/map")"
+# Pictures that cannot lie: every plotted column by its header name, in the CSV it reads, with its
+# unit on the axis and inside the y range (the scripts are written with or without gnuplot).
+python3 "$(dirname "$0")/check_plots.py" "$dir/demo" "$dir/map" || fail "plot scripts"
 
 # expect NAME FRAGMENT CONFIG_TEXT
 expect() {

@@ -1,0 +1,63 @@
+#include "history.hpp"
+
+#include <stdexcept>
+
+namespace contensou::app {
+
+const std::vector<HistoryColumn>& history_column_table() {
+  static_assert(kStateSize == 11, "history_column_table: one entry per state");
+  static const std::vector<HistoryColumn> table{
+      {"t_s", "time t", "s"},
+      {"y_m", "lateral deflection y of the strut at the axle", "m"},
+      {"ydot_mps", "lateral deflection rate dy/dt", "m/s"},
+      {"psi_rad", "torsion psi of the strut", "rad"},
+      {"psidot_radps", "torsion rate dpsi/dt", "rad/s"},
+      {"wheel_spin_radps", "wheel spin", "rad/s"},
+      {"lambda_m", "string lateral deflection lambda", "m"},
+      {"x_m", "fore-aft bending x", "m"},
+      {"xdot_mps", "fore-aft bending rate dx/dt", "m/s"},
+      {"wheel_spin2_radps", "second wheel spin", "rad/s"},
+      {"carcass_y_m", "carcass lateral deflection", "m"},
+      {"carcass_psi_rad", "carcass torsion", "rad"},
+      {"load_n", "normal load N", "N"},
+      {"patch_radius_m", "patch radius R", "m"},
+      {"vx_mps", "patch sliding velocity vx", "m/s"},
+      {"vy_mps", "patch sliding velocity vy", "m/s"},
+      {"omega_radps", "patch spin omega", "rad/s"},
+      {"slip_ratio", "slip ratio vx/V", "1"},
+      {"friction", "friction coefficient f", "1"},
+      {"Fx_n", "friction force Fx", "N"},
+      {"Fy_n", "friction force Fy", "N"},
+      {"Mz_nm", "friction torque Mz", "N m"},
+      {"brake_nm", "brake torque", "N m"},
+      {"rolling", "rolling (1) or sliding (0)", "1"}};
+  return table;
+}
+
+const std::vector<std::string>& history_columns() {
+  static const std::vector<std::string> names = [] {
+    std::vector<std::string> n;
+    for (const HistoryColumn& c : history_column_table()) n.push_back(c.name);
+    return n;
+  }();
+  return names;
+}
+
+std::vector<double> history_row(const LandingSample& s) {
+  const ContactState& c = s.contact;
+  std::vector<double> row{s.t};
+  for (int i = 0; i < kStateSize; ++i) row.push_back(s.x[i]);
+  for (double v : {c.load_n, c.patch_radius_m, c.slip.vx, c.slip.vy, c.slip.omega, c.slip_ratio,
+                   c.friction, c.force.Fx, c.force.Fy, c.force.Mz, c.brake_torque_nm,
+                   s.rolling ? 1.0 : 0.0})
+    row.push_back(v);
+  return row;
+}
+
+const HistoryColumn& history_column(const std::string& name) {
+  for (const HistoryColumn& c : history_column_table())
+    if (c.name == name) return c;
+  throw std::invalid_argument("no history column '" + name + "'");
+}
+
+}  // namespace contensou::app
