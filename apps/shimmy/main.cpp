@@ -16,6 +16,8 @@
 #include "contensou/friction/error.hpp"
 #include "gnuplot.hpp"
 #include "history_plots.hpp"
+#include "overrides.hpp"
+#include "scenarios.hpp"
 #include "tire_report.hpp"
 
 using namespace contensou;
@@ -79,7 +81,7 @@ nlohmann::json report_json(const StabilityReport& r) {
           {"friction", r.friction},
           {"frozen_slip_ratio",
            r.state.frozen_spin ? nlohmann::json(r.state.touchdown_slip) : nlohmann::json(nullptr)},
-          {"energy_per_cycle_J_at_1mrad",
+          {"energy_per_cycle_J",
            {{"spin_torque", r.energy.spin_torque},
             {"trail_lateral_force", r.energy.trail_lateral_force},
             {"offset_drag", r.energy.offset_drag},
@@ -362,8 +364,10 @@ void print_tire_uncertainty(const ShimmyConfig& config, const TireInput& tire, u
   summary["tire_uncertainty"] = j;
 }
 
-int run(const ShimmyConfig& config, const std::string& out, bool maps, int map_size,
-        unsigned threads, const TireInput* tire) {
+// One configuration: every model's landing, its CSV and pictures, and the stability verdicts of
+// both phases, all in `out`; returns the summary (without writing it).
+nlohmann::json run_landings(const ShimmyConfig& config, const std::string& out, unsigned threads,
+                            const TireInput* tire) {
   std::filesystem::create_directories(out);
   nlohmann::json summary;
   std::vector<LandingRun> runs;
@@ -420,8 +424,12 @@ int run(const ShimmyConfig& config, const std::string& out, bool maps, int map_s
   summary["analysis_window_s"] = {runs.front().window_start_s, runs.front().window_end_s};
   summary["configuration"] = to_json(config);
   draw_histories(out, runs);
+  return summary;
+}
 
-  if (maps) {
+// The configuration's stability maps, each model's, into `out`; their summaries into `summary`.
+void run_maps(const ShimmyConfig& config, const std::string& out, int map_size, unsigned threads,
+              const TireInput* tire, nlohmann::json& summary) {
     for (const MapSpec& spec : config.maps) {
       MapAxis x = spec.x, y = spec.y;
       if (map_size > 0) x.points = y.points = map_size;
@@ -450,10 +458,101 @@ int run(const ShimmyConfig& config, const std::string& out, bool maps, int map_s
         }
       }
     }
+}
+
+// What feeds the oscillation of one model in one scenario: the energy its dominant mode gains
+// per cycle from each source (linear_stability.hpp, EnergyPerCycle), from the summary.
+void print_energy_row(const std::string& scenario, const std::string& model,
+                      const nlohmann::json& run, const char* phase) {
+  const nlohmann::json& st = run["stability"][phase];
+  const nlohmann::json& e = st["energy_per_cycle_J"];
+  const auto get = [&](const char* key) { return e[key].get<double>(); };
+  const std::vector<std::pair<const char*, double>> sources{
+      {"offset drag", get("offset_drag")},
+      {"spin torque", get("spin_torque")},
+      {"lateral forces",
+       get("trail_lateral_force") + get("lateral_friction") + get("carcass_lever")},
+      {"damping", get("torsional_damping") + get("lateral_damping")}};
+  const auto fed = std::max_element(sources.begin(), sources.end(),
+                                    [](const auto& a, const auto& b) { return a.second < b.second; });
+  const auto number = [](const nlohmann::json& v) {
+    return v.is_number() ? v.get<double>() : std::nan("");
+  };
+  std::printf("%-13s %-13s %6s %9.3f %8.2f %9.3f %-9s", scenario.c_str(), model.c_str(),
+              run["shimmy"].get<bool>() ? "yes" : "no", number(run["growth_rate_per_s"]),
+              number(run["frequency_Hz"]), st["growth_rate_per_s"].get<double>(),
+              st["mode"].get<std::string>().c_str());
+  for (const auto& [name, value] : sources) std::printf(" %10.3g", value);
+  double scale = 0.0;
+  for (const auto& source : sources) scale += std::abs(source.second);
+  std::printf(" %10.3g  %s\n", get("total"), fed->second > 1e-3 * scale ? fed->first : "-");
+}
+
+// The seed's claim (the coupling of sliding and spin excites shimmy), as the scenarios find it:
+// where the coupled model is unstable and the classical tire is not, and where it grows faster.
+void print_seed_verdict(const nlohmann::json& scenarios) {
+  std::string only, faster;
+  for (const NamedScenario& n : named_scenarios()) {
+    if (!scenarios.contains(n.name)) continue;
+    const nlohmann::json& models = scenarios[n.name]["summary"]["models"];
+    if (!models.contains("coupled") || !models.contains("nonholonomic")) continue;
+    const char* phase = to_string(n.phase);
+    const double c = models["coupled"]["stability"][phase]["growth_rate_per_s"].get<double>();
+    const double k = models["nonholonomic"]["stability"][phase]["growth_rate_per_s"].get<double>();
+    if (c > 0 && k <= 0) only += (only.empty() ? "" : ", ") + n.name;
+    if (c > 0 && c > k) faster += (faster.empty() ? "" : ", ") + n.name;
   }
-  write_file_atomically(out + "/summary.json", summary.dump(2) + "\n");
-  std::printf("wrote %s/summary.json, CSV time histories and PNGs\n", out.c_str());
-  return 0;
+  std::printf(
+      "\nthe seed's claim (the coupling of sliding and spin excites shimmy), by the eigenvalues:\n"
+      "  coupled unstable where the classical tire is stable: %s\n"
+      "  coupled growing faster than the classical tire: %s\n",
+      only.empty() ? "none of these scenarios" : only.c_str(),
+      faster.empty() ? "none of these scenarios" : faster.c_str());
+}
+
+// The table that closes a run of scenarios: the simulated verdict, the eigenvalue verdict of
+// the scenario's phase, and the energy balance of its dominant mode.
+void print_scenario_table(const nlohmann::json& scenarios) {
+  std::printf(
+      "\nsummary: the simulated landing (shimmy, growth and frequency on the analysis window) "
+      "and the\nlinearisation about the scenario's phase (eig. growth, the mode it moves most), "
+      "with the energy the\nmode gains per cycle [J] at 1 mrad of torsion or 1 mm of deflection, "
+      "from each source (> 0 feeds it, < 0 drains it):\noffset drag -l Fx, the spin torque Mz, the lateral "
+      "forces (trail, lateral friction, carcass), damping.\nThe fall of f with slip speed acts "
+      "through the drag and the lateral forces (docs/shimmy.md, 6.3).\n"
+      "%-13s %-13s %6s %9s %8s %9s %-9s %10s %10s %10s %10s %10s  %s\n",
+      "scenario", "model", "shimmy", "growth", "freq[Hz]", "eig.", "mode", "offset", "spin",
+      "lateral", "damping", "total", "fed by");
+  for (const NamedScenario& n : named_scenarios()) {
+    if (!scenarios.contains(n.name)) continue;
+    const nlohmann::json& models = scenarios[n.name]["summary"]["models"];
+    for (auto it = models.begin(); it != models.end(); ++it)
+      print_energy_row(n.name, it.key(), *it, to_string(n.phase));
+  }
+  print_seed_verdict(scenarios);
+}
+
+// The named scenarios, each in out/<name>/ with its own summary; then the table over all.
+nlohmann::json run_scenarios(const ShimmyConfig& config, const std::vector<std::string>& names,
+                             const std::vector<std::string>& overrides, const std::string& out,
+                             unsigned threads, const TireInput* tire) {
+  nlohmann::json scenarios;
+  for (const std::string& name : names) {
+    const NamedScenario& n = named_scenario(name);
+    std::vector<std::string> sets = n.overrides;
+    sets.insert(sets.end(), overrides.begin(), overrides.end());
+    const ShimmyConfig c = apply_overrides(config, sets);
+    std::printf("\n== scenario %s: %s\n", n.name.c_str(), n.description.c_str());
+    nlohmann::json summary = run_landings(c, out + "/" + n.name, threads, tire);
+    write_file_atomically(out + "/" + n.name + "/summary.json", summary.dump(2) + "\n");
+    scenarios[n.name] = {{"description", n.description},
+                         {"overrides", n.overrides},
+                         {"phase", to_string(n.phase)},
+                         {"folder", n.name},
+                         {"summary", std::move(summary)}};
+  }
+  print_scenario_table(scenarios);
+  return scenarios;
 }
 
 }  // namespace
@@ -473,8 +572,10 @@ int main(int argc, char** argv) {
   app.add_option("--config", config_path, "JSON configuration (defaults: docs/shimmy.md)")
       ->check(CLI::ExistingFile);
   app.add_option("--gear", gear,
-                 "named gear the configuration starts from: default (classically stable with a "
-                 "margin of 1.4) or legacy (the gear of issue 5)")
+                 "named gear the configuration starts from: default (a one-wheel main gear, 80 kN "
+                 "static load, 0.57 m wheel, wheel 0.25 m beside the strut axis, torsional damping "
+                 "245 N m s/rad: 1.4 times what the classical tire needs) or legacy (the same "
+                 "gear with 100 N m s/rad, which shimmies on the classical tire)")
       ->check(CLI::IsMember({"default", "legacy"}))
       ->capture_default_str();
   app.add_option("--out", out, "output directory")->capture_default_str();
@@ -483,7 +584,24 @@ int main(int argc, char** argv) {
       ->check(CLI::Range(2, 1000));
   app.add_option("--threads", threads, "threads for the maps (0: all cores)")
       ->capture_default_str();
-  app.add_flag("--print-config", print_config, "print the configuration as JSON and exit");
+  std::vector<std::string> overrides;
+  app.add_option("--set", overrides,
+                 "KEY=VALUE: one configuration value by its JSON name, after --gear and --config "
+                 "(repeatable; e.g. --set structure.offset_m=0.45 --set "
+                 "scenario.forward_speed_mps=58; --print-config lists the keys)")
+      ->expected(1)
+      ->multi_option_policy(CLI::MultiOptionPolicy::TakeAll);
+  std::vector<std::string> scenario_list;
+  std::string scenario_help = "a named scenario (repeatable, or all); by default all of them "
+                              "unless --config or --set is given, which run the configuration "
+                              "as it is:";
+  for (const NamedScenario& n : named_scenarios())
+    scenario_help += "\n  " + n.name + ": " + n.description;
+  app.add_option("--scenario", scenario_list, scenario_help)
+      ->expected(1)
+      ->multi_option_policy(CLI::MultiOptionPolicy::TakeAll);
+  app.add_flag("--print-config", print_config,
+               "print the configuration (after --config and --set) as JSON and exit");
   app.add_option("--tire", tire_path,
                  "a contensou-identify report (--json): its fitted law is the tire, and a Monte "
                  "Carlo over its covariance gives the growth rate's 95 % band and P(shimmy)")
@@ -498,6 +616,7 @@ int main(int argc, char** argv) {
     config.gear_name = gear;
     config.gear = gear_config_by_name(gear);
     if (!config_path.empty()) config = read_shimmy_config(config_path, gear);
+    config = apply_overrides(config, overrides);
     if (print_config) {
       std::cout << to_json(config).dump(2) << '\n';
       return 0;
@@ -514,7 +633,33 @@ int main(int argc, char** argv) {
         throw std::runtime_error("--tire " + tire_path + ": " + e.what());
       }
     }
-    return run(config, out, maps, map_size, threads, tire ? &*tire : nullptr);
+    std::vector<std::string> names;
+    for (const std::string& n : scenario_list) {
+      if (n != "all") {
+        named_scenario(n);  // throws for an unknown name, before anything runs
+        names.push_back(n);
+      }
+    }
+    const bool all = std::find(scenario_list.begin(), scenario_list.end(), "all") !=
+                     scenario_list.end();
+    if (all || (scenario_list.empty() && config_path.empty() && overrides.empty())) {
+      names.clear();
+      for (const NamedScenario& n : named_scenarios()) names.push_back(n.name);
+    }
+    const TireInput* t = tire ? &*tire : nullptr;
+    nlohmann::json summary;
+    if (names.empty()) {
+      summary = run_landings(config, out, threads, t);
+    } else {
+      summary["scenarios"] = run_scenarios(config, names, overrides, out, threads, t);
+      summary["gear"] = config.gear_name;
+      summary["configuration"] = to_json(config);
+    }
+    if (maps) run_maps(config, out, map_size, threads, t, summary);
+    write_file_atomically(out + "/summary.json", summary.dump(2) + "\n");
+    std::printf("wrote %s/summary.json, CSV time histories and PNGs%s\n", out.c_str(),
+                names.empty() ? "" : " (a folder per scenario)");
+    return 0;
   } catch (const std::exception& e) {
     std::fprintf(stderr, "%s: %s\n", kName, e.what());
     return 1;

@@ -287,7 +287,11 @@ StabilityReport assess_stability(const GearModel& model_in, StabilityPhase phase
     rep.mode_kind = fore_aft > std::max(std::abs(psi) * 1.0, std::abs(y))
                         ? "fore-aft"
                         : (std::abs(psi) * 1.0 >= std::abs(y) ? "torsion" : "lateral");
-    v *= (std::abs(psi) > 1e-300 ? 1e-3 / std::abs(psi) : 1.0);
+    // Amplitude: 1 mrad of torsion or 1 mm of lateral or fore-aft deflection, whichever the mode
+    // moves most (|psi| x 1 m against |y| and |x|, as mode_kind), so that a lateral mode's energy
+    // is not that of a tiny torsion blown up to 1 mrad.
+    const double largest = std::max({std::abs(psi) * 1.0, std::abs(y), fore_aft});
+    v *= (largest > 1e-300 ? 1e-3 / largest : 1.0);
     // Complex amplitudes of the contact forces along the mode.
     Eigen::Vector4cd F = Eigen::Vector4cd::Zero();
     for (int k = 0; k < n; ++k)

@@ -12,11 +12,15 @@ fails=0
 fail() { echo "FAIL $*"; fails=$((fails + 1)); }
 
 "$app" --out "$dir/demo" > "$dir/stdout" 2> "$dir/stderr" || fail "demo run: $(cat "$dir/stderr")"
-for m in coupled decoupled nonholonomic; do
-  [ -s "$dir/demo/$m.csv" ] || fail "no $m.csv"
-  python3 - "$dir/demo/summary.json" "$m" <<'PY' || fail "summary entry for $m"
+# The default run: the named scenarios, each in its folder with the three models.
+for s in touchdown braked-slide large-offset; do
+  for m in coupled decoupled nonholonomic; do
+    [ -s "$dir/demo/$s/$m.csv" ] || fail "no $s/$m.csv"
+    python3 - "$dir/demo/summary.json" "$s" "$m" <<'PY' || fail "summary entry for $s $m"
 import json, sys
-run = json.load(open(sys.argv[1]))["models"][sys.argv[2]]
+scenario = json.load(open(sys.argv[1]))["scenarios"][sys.argv[2]]
+assert scenario["description"] and scenario["folder"] == sys.argv[2]
+run = scenario["summary"]["models"][sys.argv[3]]
 for key in ["shimmy", "frequency_Hz", "growth_rate_per_s", "peak_torsion_rad", "peak_lateral_m",
             "spin_up_s", "steps", "wall_s"]:
     assert key in run, key
@@ -28,12 +32,48 @@ for phase in ["touchdown", "braked_slide"]:
     assert st["quasi_steady_state_converged"], (phase, st)
     assert isinstance(st["stable"], bool) and st["verdict"], (phase, st)
     assert len(st["eigenvalues_per_s"]) >= 4, (phase, st)
+    # Energy per cycle at 1 mrad or 1 mm: joules of order one, not 1e4 (a lateral mode scaled
+    # by its tiny torsion).
+    assert abs(st["energy_per_cycle_J"]["total"]) < 100, (phase, st["energy_per_cycle_J"])
 PY
+  done
+  python3 "$(dirname "$0")/check_plots.py" "$dir/demo/$s" > /dev/null || fail "plot scripts of $s"
 done
-grep -q "braked_slide" "$dir/stdout" || fail "no braked-slide verdict printed"
+# Shimmy where the physics gives it: the large offset grows in the time history of a model, and
+# its summary line names what feeds it.
+python3 - "$dir/demo/summary.json" <<'PY' || fail "no model shimmies in large-offset"
+import json, sys
+models = json.load(open(sys.argv[1]))["scenarios"]["large-offset"]["summary"]["models"]
+assert any(m["shimmy"] and m["growth_rate_per_s"] > 0 for m in models.values()), models
+PY
+grep -q "^large-offset  coupled .* yes .*offset drag$" "$dir/stdout" \
+  || fail "no energy row for large-offset: $(tail -15 "$dir/stdout")"
+grep -q "the seed's claim" "$dir/stdout" || fail "no verdict on the seed's claim"
 grep -q "margin 1.4" "$dir/stdout" || fail "no classical margin printed: $(cat "$dir/stdout")"
 python3 -c 'import json, sys; assert json.load(open(sys.argv[1]))["gear"] == "default"' \
   "$dir/demo/summary.json" || fail "summary gear name"
+
+# --set: a value by its JSON name, validated; --scenario by name.
+"$app" --set structure.offset_m=0.45 --set scenario.forward_speed_mps=58 --print-config \
+  > "$dir/set.json" 2> "$dir/err" || fail "--set: $(cat "$dir/err")"
+python3 -c 'import json, sys; c = json.load(open(sys.argv[1]))
+assert c["structure"]["offset_m"] == 0.45 and c["scenario"]["forward_speed_mps"] == 58' \
+  "$dir/set.json" || fail "--set values not in the configuration"
+expect_option() {
+  "$app" "${@:3}" --out "$dir/badopt" > /dev/null 2> "$dir/err"
+  local rc=$?
+  if [ "$rc" -eq 0 ] || ! grep -qF -- "$2" "$dir/err" || [ -e "$dir/badopt/summary.json" ]; then
+    fail "$1: rc=$rc, stderr: $(cat "$dir/err")"
+  else
+    echo "ok   $1: $(cat "$dir/err")"
+  fi
+}
+expect_option "--set unknown key" "did you mean 'structure.offset_m'" --set structure.offst_m=0.4
+expect_option "--set not a number" "structure.offset_m: expected a number" --set structure.offset_m=abc
+expect_option "--set out of range" "must be positive" --set structure.torsional_inertia_kgm2=-2
+expect_option "--set without value" "expected KEY=VALUE" --set structure.offset_m
+expect_option "--scenario unknown" "unknown scenario (known: touchdown, braked-slide, large-offset" \
+  --scenario landing
 
 # The legacy gear: classically unstable, by name.
 "$app" --gear legacy --out "$dir/legacy" > "$dir/legacy_stdout" 2>&1 || fail "legacy run"
@@ -51,11 +91,11 @@ cat > "$dir/report.json" <<'JSON'
   "correlation": {"names": ["F0_N", "a", "M0_Nm", "m", "kx"],
    "matrix": [[1, 0, 0, 0, 0], [0, 1, 0, 0.6, 0], [0, 0, 1, 0, 0], [0, 0.6, 0, 1, 0], [0, 0, 0, 0, 1]]}}}
 JSON
-"$app" --out "$dir/tire" --tire "$dir/report.json" --draws 20 > "$dir/tire_stdout" 2> "$dir/err" \
+"$app" --out "$dir/tire" --scenario braked-slide --tire "$dir/report.json" --draws 20 > "$dir/tire_stdout" 2> "$dir/err" \
   || fail "--tire run: $(cat "$dir/err")"
 python3 - "$dir/tire/summary.json" <<'PY' || fail "tire_uncertainty in summary"
 import json, sys
-t = json.load(open(sys.argv[1]))["tire_uncertainty"]
+t = json.load(open(sys.argv[1]))["scenarios"]["braked-slide"]["summary"]["tire_uncertainty"]
 for phase in ["touchdown", "braked_slide"]:
     b = t[phase]
     assert b["draws"] == 20 and b["band95_per_s"][0] <= b["median_growth_rate_per_s"] <= b["band95_per_s"][1], b

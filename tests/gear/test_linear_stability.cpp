@@ -199,6 +199,24 @@ TEST(LinearStability, EnergyPerCycleMatchesTheGrowthRate) {
   }
 }
 
+// A lateral mode is scaled to 1 mm of lateral deflection (its torsion is smaller than 1 mrad x
+// 1 m), so its energy per cycle is bounded by 2 |growth| E T with E <= (m + I / 1 m^2) (1e-3 w)^2
+// / 2; scaled to 1 mrad of its tiny torsion it read -3.7e4 J on the default touchdown.
+TEST(LinearStability, EnergyOfALateralModeIsScaledByItsLateralDeflection) {
+  const GearModel m = make_gear_model(GearConfig{}, ContactModel::coupled);
+  StabilityOptions o;
+  o.simulate_perturbation = false;
+  const StabilityReport r = assess_stability(m, StabilityPhase::touchdown, o);
+  ASSERT_EQ(r.mode_kind, "lateral");
+  const double w = 2 * kPi * r.frequency_hz;
+  const GearStructure& g = m.config.structure;
+  const double E = 0.5 * (g.lateral_mass_kg + g.torsional_inertia_kgm2) * std::pow(1e-3 * w, 2);
+  const double bound = 2 * std::abs(r.growth_rate_per_s) * E * 2 * kPi / w;
+  EXPECT_LE(std::abs(r.energy.total()), 1.15 * bound) << r.energy.total();
+  EXPECT_GT(std::abs(r.energy.total()), 1e-3 * bound) << r.energy.total();
+  EXPECT_EQ(r.energy.total() > 0, r.growth_rate_per_s > 0);
+}
+
 TEST(LinearStability, EigenvalueMapCellsMatchSingleAssessments) {
   const GearModel m = make_gear_model(GearConfig{}, ContactModel::coupled);
   const MapAxis x{"scenario.forward_speed_mps", 40.0, 80.0, 3};

@@ -90,7 +90,9 @@ struct StabilityReport {
   // falling part of f(w).
   double drag_slope_ns_per_m = 0.0;
   double friction = 0.0;  // f at the state
-  EnergyPerCycle energy;  // of the dominant oscillatory mode
+  // Of the dominant oscillatory mode at an amplitude of 1 mrad of torsion or 1 mm of lateral or
+  // fore-aft deflection, whichever the mode moves most (|psi| x 1 m against |y|, |x|) [J].
+  EnergyPerCycle energy;
   // The standard perturbation: psi' += 0.1 rad/s at the quasi-steady state, integrated with
   // CVODE for perturbation_window_s in the same mode; the growth rate fitted to the torsion's
   // rate peaks (analyse_oscillation), NaN if it does not oscillate.
