@@ -93,14 +93,17 @@ ShimmyConfig apply_overrides(const ShimmyConfig& config,
     nlohmann::json& leaf = leaf_at(j, key, what);
     nlohmann::json value = nlohmann::json::parse(text, nullptr, false);
     leaf = value.is_discarded() ? nlohmann::json(text) : value;
-    const std::string path = "--set";
-    try {
-      parse_shimmy_config(j.dump(), path, config.gear_name);
-    } catch (const std::exception& e) {
-      throw std::runtime_error(what + ": " + without_location(e.what(), path));
-    }
   }
-  return parse_shimmy_config(j.dump(), "--set", config.gear_name);
+  // Validated together: keys that depend on each other (both carcass stiffnesses) may be set
+  // one by one. The errors name the key.
+  const std::string path = "--set";
+  try {
+    return parse_shimmy_config(j.dump(), path, config.gear_name);
+  } catch (const std::exception& e) {
+    std::string all;
+    for (const std::string& a : assignments) all += (all.empty() ? "" : " ") + a;
+    throw std::runtime_error("--set " + all + ": " + without_location(e.what(), path));
+  }
 }
 
 }  // namespace contensou::app
