@@ -70,9 +70,9 @@ BENCHMARK_CAPTURE(BM_Landing, decoupled, ContactModel::decoupled, false, true)
     ->Unit(benchmark::kMillisecond);
 BENCHMARK_CAPTURE(BM_Landing, decoupled_dq, ContactModel::decoupled, false, false)
     ->Unit(benchmark::kMillisecond);
-BENCHMARK_CAPTURE(BM_Landing, nonholonomic, ContactModel::nonholonomic, false, true)
+BENCHMARK_CAPTURE(BM_Landing, von_schlippe, ContactModel::von_schlippe, false, true)
     ->Unit(benchmark::kMillisecond);
-BENCHMARK_CAPTURE(BM_Landing, nonholonomic_dq, ContactModel::nonholonomic, false, false)
+BENCHMARK_CAPTURE(BM_Landing, von_schlippe_dq, ContactModel::von_schlippe, false, false)
     ->Unit(benchmark::kMillisecond);
 BENCHMARK_CAPTURE(BM_Landing, coupled_exact_integrals, ContactModel::coupled, true, true)
     ->Unit(benchmark::kMillisecond);

@@ -33,7 +33,7 @@ twin_map='[{"x": {"parameter": "scenario.forward_speed_mps", "from": 30, "to": 9
   "y": {"parameter": "structure.wheel_spacing_m", "from": 0, "to": 1.2, "points": 50}}]'
 cmd="contensou-shimmy --map --set maps=<speed x structure.wheel_spacing_m>"
 "$shimmy" --out "$tmp/twin" --map --set "maps=$twin_map" > /dev/null
-for m in coupled nonholonomic; do
+for m in coupled von_schlippe; do
   copy_picture "map_forward_speed_mps_wheel_spacing_m_braked_slide_$m.png" \
     "$tmp/twin/map_forward_speed_mps_wheel_spacing_m_braked_slide_$m.png" "$cmd"
 done

@@ -25,7 +25,7 @@ struct ShimmyConfig {
   std::string gear_name = "default";  // the named gear the file's values start from
   GearConfig gear;
   std::vector<ContactModel> models{ContactModel::coupled, ContactModel::decoupled,
-                                   ContactModel::nonholonomic};
+                                   ContactModel::von_schlippe};
   SolverOptions solver;
   ShimmyCriterion criterion;
   std::vector<MapSpec> maps{

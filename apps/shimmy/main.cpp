@@ -126,7 +126,7 @@ void print_stability(const ShimmyConfig& config, const std::vector<LandingRun>& 
       char buf[200];
       if (!r->state.converged) {
         verdict = "no quasi-steady state found";
-      } else if (r == &td && run.contact == ContactModel::nonholonomic) {
+      } else if (r == &td && run.contact == ContactModel::von_schlippe) {
         const double crit = classical_critical_damping(model);
         const double c = config.gear.structure.torsional_damping_nms_per_rad;
         if (crit > 0)
@@ -495,10 +495,10 @@ void print_seed_verdict(const nlohmann::json& scenarios) {
   for (const NamedScenario& n : named_scenarios()) {
     if (!scenarios.contains(n.name)) continue;
     const nlohmann::json& models = scenarios[n.name]["summary"]["models"];
-    if (!models.contains("coupled") || !models.contains("nonholonomic")) continue;
+    if (!models.contains("coupled") || !models.contains("von_schlippe")) continue;
     const char* phase = to_string(n.phase);
     const double c = models["coupled"]["stability"][phase]["growth_rate_per_s"].get<double>();
-    const double k = models["nonholonomic"]["stability"][phase]["growth_rate_per_s"].get<double>();
+    const double k = models["von_schlippe"]["stability"][phase]["growth_rate_per_s"].get<double>();
     if (c > 0 && k <= 0) only += (only.empty() ? "" : ", ") + n.name;
     if (c > 0 && c > k) faster += (faster.empty() ? "" : ", ") + n.name;
   }
@@ -560,7 +560,7 @@ nlohmann::json run_scenarios(const ShimmyConfig& config, const std::vector<std::
 int main(int argc, char** argv) {
   CLI::App app{
       "A one-wheel main landing gear through touchdown, sliding and spin-up: shimmy "
-      "with coupled, decoupled and nonholonomic tire contact (docs/shimmy.md)",
+      "with coupled, decoupled and von_schlippe (classical string) tire contact (docs/shimmy.md)",
       kName};
   std::string config_path, out = "out/shimmy", gear = "default";
   bool maps = false, print_config = false;

@@ -21,7 +21,7 @@ import numpy as np
 
 from . import _core
 
-MODELS = ("coupled", "decoupled", "nonholonomic")
+MODELS = ("coupled", "decoupled", "von_schlippe")
 
 
 def _normalise(data: Mapping[str, Any]) -> dict[str, Any]:

@@ -20,17 +20,19 @@ const char* to_string(ContactModel model) {
       return "coupled";
     case ContactModel::decoupled:
       return "decoupled";
-    case ContactModel::nonholonomic:
-      return "nonholonomic";
+    case ContactModel::von_schlippe:
+      return "von_schlippe";
   }
   return "?";
 }
 
 ContactModel contact_model_from_string(const std::string& name) {
   for (ContactModel m :
-       {ContactModel::coupled, ContactModel::decoupled, ContactModel::nonholonomic})
+       {ContactModel::coupled, ContactModel::decoupled, ContactModel::von_schlippe})
     if (name == to_string(m)) return m;
-  throw InvalidArgument("contact model", name, "must be coupled, decoupled or nonholonomic");
+  if (name == "nonholonomic") return ContactModel::von_schlippe;  // the former name
+  throw InvalidArgument("contact model", name,
+                        "must be coupled, decoupled or von_schlippe (alias nonholonomic)");
 }
 
 void validate(const GearConfig& c) {
@@ -194,17 +196,15 @@ GearState initial_state(const GearModel& model) {
   GearState x = GearState::Zero();
   x[kPsi] = model.config.scenario.initial_torsion_rad;
   x[kY] = model.config.scenario.initial_lateral_m;
-  if (model.contact == ContactModel::nonholonomic)
-    x[kSpin] = model.config.scenario.forward_speed_mps / model.config.structure.wheel_radius_m;
-  if (model.contact == ContactModel::nonholonomic && model.config.structure.wheel_spacing_m > 0.0)
-    x[kSpin2] = x[kSpin];
+  // Every model touches down with the wheel at rest: the string tire too slides (on its friction
+  // circle) until the wheel has spun up, like for like with the dry-friction models.
   return x;
 }
 
 GearMode initial_mode(const GearModel& model) {
   GearMode mode;
   mode.loaded = model.config.scenario.touchdown_time_s <= 0.0;
-  mode.rolling = model.contact == ContactModel::nonholonomic;
+  mode.rolling = model.contact == ContactModel::von_schlippe;
   const LandingScenario& s = model.config.scenario;
   mode.brake_command = s.braking && s.brake_on_s <= 0.0;
   return mode;

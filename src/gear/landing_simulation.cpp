@@ -39,6 +39,9 @@ struct Problem {
   const GearModel* model;
   GearMode mode;
   std::vector<int> active;
+  // The string tire (von_schlippe) slides on its friction circle until its slip ratio first falls
+  // below rolling_slip; that instant is its spin-up (an event only: its forces do not switch).
+  bool string_spun_up = false;
   int size() const { return static_cast<int>(active.size()); }
 };
 
@@ -93,7 +96,7 @@ int jacobian(sunrealtype t, N_Vector y, N_Vector, SUNMatrix J, void* data, N_Vec
 int roots(sunrealtype t, N_Vector y, sunrealtype* g, void* data) {
   const Problem& p = *static_cast<const Problem*>(data);
   const LandingScenario& s = p.model->config.scenario;
-  const bool switching = p.model->contact != ContactModel::nonholonomic;
+  const bool switching = p.model->contact != ContactModel::von_schlippe;
   // The patch's slip ratio vx / V from the kinematics alone (no friction law per event check).
   const GearStructure& gs = p.model->config.structure;
   const GearState x = to_state(p, y);
@@ -106,7 +109,9 @@ int roots(sunrealtype t, N_Vector y, sunrealtype* g, void* data) {
       V;
   g[kLoadOnset] = t - s.touchdown_time_s;
   g[kFullLoad] = t - (s.touchdown_time_s + s.load_ramp_s);
-  g[kSpinUp] = switching && p.mode.loaded && !p.mode.rolling ? ratio - s.rolling_slip : 1.0;
+  const bool spinning_up = switching ? p.mode.loaded && !p.mode.rolling
+                                     : p.mode.loaded && !p.string_spun_up;
+  g[kSpinUp] = spinning_up ? ratio - s.rolling_slip : 1.0;
   g[kSliding] = switching && p.mode.rolling ? ratio - s.sliding_slip : -1.0;
   g[kBrakeOn] = s.braking ? t - s.brake_on_s : -1.0;
   g[kBrakeOff] = s.braking ? t - s.brake_off_s : -1.0;
@@ -152,7 +157,6 @@ LandingRun simulate_landing(const GearModel& model, const SolverOptions& options
   LandingRun run;
   run.contact = model.contact;
   std::tie(run.window_start_s, run.window_end_s) = analysis_window(s);
-  if (model.contact == ContactModel::nonholonomic) run.spin_up_s = 0.0;
 
   Problem problem{&model, initial_mode(model), active_states(model)};
   const int n = problem.size();
@@ -296,7 +300,11 @@ LandingRun simulate_landing(const GearModel& model, const SolverOptions& options
       run.events.push_back({t, "load onset"});
     }
     if (found[kFullLoad]) run.events.push_back({t, "full load"});
-    if (found[kSpinUp]) {
+    if (found[kSpinUp] && model.contact == ContactModel::von_schlippe) {
+      problem.string_spun_up = true;
+      if (!run.spin_up_s) run.spin_up_s = t - s.touchdown_time_s;
+      run.events.push_back({t, "spin-up"});
+    } else if (found[kSpinUp]) {
       // The string takes the sliding lateral force over, so Fy is continuous.
       const ContactState cs = contact_state(model, mode, t, x);
       mode.rolling = true;

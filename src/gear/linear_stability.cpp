@@ -52,7 +52,7 @@ QuasiSteadyState quasi_steady_state(const GearModel& model, StabilityPhase phase
                                     double touchdown_slip) {
   const LandingScenario& s = model.config.scenario;
   const double V = s.forward_speed_mps, r = model.config.structure.wheel_radius_m;
-  const bool sliding = model.contact != ContactModel::nonholonomic;
+  const bool sliding = model.contact != ContactModel::von_schlippe;
   const bool twin = model.config.structure.wheel_spacing_m > 0.0;
   QuasiSteadyState q;
   q.phase = phase;
@@ -331,7 +331,7 @@ constexpr std::array<double, 5> kTouchdownSlips{0.9, 0.7, 0.5, 0.3, 0.1};
 }
 
 StabilityReport assess_touchdown(const GearModel& model, const StabilityOptions& options) {
-  if (model.contact == ContactModel::nonholonomic)
+  if (model.contact == ContactModel::von_schlippe)
     return assess_stability(model, StabilityPhase::touchdown, options);
   StabilityOptions quick = options;
   quick.simulate_perturbation = false;
@@ -359,7 +359,7 @@ double linear_growth_rate(const GearModel& model, StabilityPhase phase) {
 
 double classical_critical_damping(const GearModel& model_in) {
   GearModel model = without_drift(model_in);
-  model.contact = ContactModel::nonholonomic;
+  model.contact = ContactModel::von_schlippe;
   model.exact.reset();
   const auto unstable = [&](double c) {
     model.config.structure.torsional_damping_nms_per_rad = c;

@@ -14,7 +14,7 @@ fail() { echo "FAIL $*"; fails=$((fails + 1)); }
 "$app" --out "$dir/demo" > "$dir/stdout" 2> "$dir/stderr" || fail "demo run: $(cat "$dir/stderr")"
 # The default run: the named scenarios, each in its folder with the three models.
 for s in touchdown braked-slide large-offset; do
-  for m in coupled decoupled nonholonomic; do
+  for m in coupled decoupled von_schlippe; do
     [ -s "$dir/demo/$s/$m.csv" ] || fail "no $s/$m.csv"
     python3 - "$dir/demo/summary.json" "$s" "$m" <<'PY' || fail "summary entry for $s $m"
 import json, sys
@@ -53,6 +53,11 @@ grep -q "margin 1.4" "$dir/stdout" || fail "no classical margin printed: $(cat "
 python3 -c 'import json, sys; assert json.load(open(sys.argv[1]))["gear"] == "default"' \
   "$dir/demo/summary.json" || fail "summary gear name"
 
+# The classical model's former name is an alias.
+"$app" --set 'models=["nonholonomic"]' --print-config > "$dir/alias.json" 2> "$dir/err" \
+  || fail "alias nonholonomic: $(cat "$dir/err")"
+python3 -c 'import json, sys; assert json.load(open(sys.argv[1]))["models"] == ["von_schlippe"]' \
+  "$dir/alias.json" || fail "nonholonomic not read as von_schlippe"
 # --set: a value by its JSON name, validated; --scenario by name.
 "$app" --set structure.offset_m=0.45 --set scenario.forward_speed_mps=58 --print-config \
   > "$dir/set.json" 2> "$dir/err" || fail "--set: $(cat "$dir/err")"
@@ -77,7 +82,7 @@ expect_option "--scenario unknown" "unknown scenario (known: touchdown, braked-s
 
 # The legacy gear: classically unstable, by name.
 "$app" --gear legacy --out "$dir/legacy" > "$dir/legacy_stdout" 2>&1 || fail "legacy run"
-grep -q "nonholonomic  touchdown .*SHIMMY" "$dir/legacy_stdout" || fail "legacy gear not classically unstable"
+grep -q "von_schlippe  touchdown .*SHIMMY" "$dir/legacy_stdout" || fail "legacy gear not classically unstable"
 "$app" --gear boeing --out "$dir/nogear" > /dev/null 2> "$dir/err" && fail "--gear boeing accepted"
 grep -q -- "--gear" "$dir/err" || fail "--gear error does not name the option: $(cat "$dir/err")"
 
@@ -156,7 +161,7 @@ expect "not a number" "bad.json:1:15: scenario.forward_speed_mps: expected a num
   '{"scenario": {"forward_speed_mps": "fast"}}'
 expect "bad value" "structure.torsional_inertia_kgm2 = -25: must be positive" \
   $'{"structure":\n {"torsional_inertia_kgm2": -25}}'
-expect "bad model" "must be coupled, decoupled or nonholonomic" '{"models": ["rolling"]}'
+expect "bad model" "must be coupled, decoupled or von_schlippe (alias nonholonomic)" '{"models": ["rolling"]}'
 expect "bad map parameter" "unknown parameter 'scenario.speed'" \
   '{"maps": [{"x": {"parameter": "scenario.speed"}, "y": {"parameter": "structure.offset_m"}}]}'
 expect "bad map phase" "maps.phase: expected touchdown or braked_slide" \

@@ -167,7 +167,7 @@ TEST(Carcass, EigenvalueCriterionWithCarcassStates) {
   const GearConfig rigid;
   const GearConfig c = carcass_from_string_tire(rigid);
   for (ContactModel m :
-       {ContactModel::coupled, ContactModel::decoupled, ContactModel::nonholonomic}) {
+       {ContactModel::coupled, ContactModel::decoupled, ContactModel::von_schlippe}) {
     for (StabilityPhase phase : {StabilityPhase::braked_slide, StabilityPhase::touchdown}) {
       const StabilityReport r = eigen_report(c, m, phase);
       ASSERT_TRUE(r.state.converged) << to_string(m) << " " << to_string(phase);
@@ -181,8 +181,8 @@ TEST(Carcass, EigenvalueCriterionWithCarcassStates) {
   }
   // Classical: the torsional eigenvalue is the rigid model's to 1e-6 (relative).
   for (StabilityPhase phase : {StabilityPhase::braked_slide, StabilityPhase::touchdown}) {
-    const StabilityReport a = eigen_report(rigid, ContactModel::nonholonomic, phase);
-    const StabilityReport b = eigen_report(c, ContactModel::nonholonomic, phase);
+    const StabilityReport a = eigen_report(rigid, ContactModel::von_schlippe, phase);
+    const StabilityReport b = eigen_report(c, ContactModel::von_schlippe, phase);
     const std::complex<double> ta(a.torsion_growth_rate_per_s, a.torsion_frequency_hz);
     const std::complex<double> tb(b.torsion_growth_rate_per_s, b.torsion_frequency_hz);
     EXPECT_LT(std::abs(ta - tb), 1e-6 * std::abs(ta)) << to_string(phase);

@@ -150,7 +150,7 @@ TEST(LandingGear, SomieskiNoseGearBoundaryMatchesRouthHurwitz) {
   for (const auto& [V, e] : {std::pair{30.0, 0.05}, std::pair{70.0, 0.05}, std::pair{70.0, 0.12},
                              std::pair{100.0, 0.0}}) {
     GearConfig c = nose_gear(V, e);
-    const GearModel probe = make_gear_model(c, ContactModel::nonholonomic);
+    const GearModel probe = make_gear_model(c, ContactModel::von_schlippe);
     const double R =
         contact_state(probe, {true, true, false}, 1.0, GearState::Zero()).patch_radius_m;
     const double expected = routh_hurwitz_critical_damping(c, R);
@@ -160,7 +160,7 @@ TEST(LandingGear, SomieskiNoseGearBoundaryMatchesRouthHurwitz) {
     for (int i = 0; i < 60; ++i) {
       c.structure.torsional_damping_nms_per_rad = 0.5 * (lo + hi);
       const bool unstable =
-          max_real_eigenvalue(nose_gear_matrix(make_gear_model(c, ContactModel::nonholonomic))) > 0;
+          max_real_eigenvalue(nose_gear_matrix(make_gear_model(c, ContactModel::von_schlippe))) > 0;
       (unstable ? lo : hi) = 0.5 * (lo + hi);
     }
     EXPECT_NEAR(0.5 * (lo + hi), expected, 1e-5 * expected) << "V = " << V << ", e = " << e;
@@ -172,12 +172,12 @@ TEST(LandingGear, SimulatedNoseGearGrowsBelowTheBoundaryAndDecaysAbove) {
   c.structure.lateral_stiffness_n_per_m = 1e10;  // a rigid strut laterally
   c.structure.lateral_damping_ns_per_m = 3.5e6;
   c.scenario.initial_torsion_rad = 1e-3;
-  const GearModel probe = make_gear_model(c, ContactModel::nonholonomic);
+  const GearModel probe = make_gear_model(c, ContactModel::von_schlippe);
   const double R = contact_state(probe, {true, true, false}, 1.0, GearState::Zero()).patch_radius_m;
   const double critical = routh_hurwitz_critical_damping(c, R);
   for (double factor : {0.7, 1.3}) {
     c.structure.torsional_damping_nms_per_rad = factor * critical;
-    const LandingRun r = simulate_landing(make_gear_model(c, ContactModel::nonholonomic), {1e-8});
+    const LandingRun r = simulate_landing(make_gear_model(c, ContactModel::von_schlippe), {1e-8});
     ASSERT_TRUE(r.metrics.torsion.valid());
     if (factor < 1)
       EXPECT_GT(r.metrics.torsion.growth_rate_per_s, 0.1);
@@ -218,7 +218,7 @@ TEST(LandingGear, MirroredGearGivesMirroredMotion) {
   GearConfig m = c;
   m.structure.offset_m = -c.structure.offset_m;
   m.scenario.drift_speed_mps = -c.scenario.drift_speed_mps;
-  for (ContactModel cm : {ContactModel::coupled, ContactModel::nonholonomic}) {
+  for (ContactModel cm : {ContactModel::coupled, ContactModel::von_schlippe}) {
     const LandingRun a = simulate_landing(make_gear_model(c, cm), {1e-9});
     const LandingRun b = simulate_landing(make_gear_model(m, cm), {1e-9});
     ASSERT_EQ(a.samples.size(), b.samples.size());
@@ -311,7 +311,7 @@ TEST(StabilityMap, CellsMatchSingleRunsAndCoverTheGrid) {
 TEST(LandingGear, StructuredJacobianMatchesDifferencesOfTheRightHandSide) {
   for (bool exact : {false, true}) {
     for (ContactModel cm :
-         {ContactModel::coupled, ContactModel::decoupled, ContactModel::nonholonomic}) {
+         {ContactModel::coupled, ContactModel::decoupled, ContactModel::von_schlippe}) {
       if (exact && cm != ContactModel::coupled) continue;
       for (double spacing : {0.0, 0.8}) {
         GearConfig c;
@@ -370,7 +370,7 @@ TEST(LandingGear, GyroscopicCouplingGivesTheCoupledOscillatorFrequencies) {
   c.structure.gyroscopic_length_m = 1.5;
   c.structure.torsional_damping_nms_per_rad = 0.0;
   c.structure.lateral_damping_ns_per_m = 0.0;
-  const GearModel m = make_gear_model(c, ContactModel::nonholonomic);
+  const GearModel m = make_gear_model(c, ContactModel::von_schlippe);
   const GearStructure& g = c.structure;
   GearState x = GearState::Zero();
   x[kSpin] = c.scenario.forward_speed_mps / g.wheel_radius_m;
@@ -403,7 +403,7 @@ TEST(LandingGear, GyroscopicCouplingGivesTheCoupledOscillatorFrequencies) {
 // (rtol 1e-7: both within 2e-3 1/s and 1e-5 of the peak of a run at rtol 1e-10), and Adams takes
 // fewer steps on the gear's lightly damped modes (docs/shimmy.md, "Numerics").
 TEST(LandingGear, AdamsAndBdfGiveTheSameLanding) {
-  for (ContactModel cm : {ContactModel::coupled, ContactModel::nonholonomic}) {
+  for (ContactModel cm : {ContactModel::coupled, ContactModel::von_schlippe}) {
     const GearModel m = make_gear_model(GearConfig{}, cm);
     SolverOptions adams, bdf, reference{1e-10};
     adams.record = bdf.record = reference.record = false;
@@ -426,4 +426,33 @@ TEST(LandingGear, AdamsAndBdfGiveTheSameLanding) {
     EXPECT_LT(a.steps, b.steps) << to_string(cm);
     EXPECT_EQ(a.convergence_failures, 0) << to_string(cm);
   }
+}
+
+// Like for like: the string tire touches down with the wheel at rest, as the dry-friction models
+// do, and slides on its friction circle until the wheel has spun up. Its drag is then mu N with
+// the same f(w), so the spin-up (I Omega' = -Fx r until Omega r = (1 - rolling_slip) V) takes
+// the time the coupled model's does, and mid-way the two drags agree.
+TEST(LandingGear, StringTireSpinsUpFromRestLikeTheSlidingModels) {
+  SolverOptions o;
+  o.record = true;
+  GearConfig c;
+  c.scenario.braking = false;
+  const LandingRun string_tire = simulate_landing(make_gear_model(c, ContactModel::von_schlippe), o);
+  const LandingRun coupled = simulate_landing(make_gear_model(c, ContactModel::coupled), o);
+  ASSERT_TRUE(string_tire.spin_up_s && coupled.spin_up_s);
+  EXPECT_NEAR(*string_tire.spin_up_s, *coupled.spin_up_s, 0.05 * *coupled.spin_up_s);
+  EXPECT_EQ(string_tire.samples.front().x[kSpin], 0.0);
+  const double mid = c.scenario.touchdown_time_s + 0.5 * *coupled.spin_up_s;
+  const auto at = [&](const LandingRun& r) {
+    return *std::min_element(r.samples.begin(), r.samples.end(),
+                             [&](const LandingSample& a, const LandingSample& b) {
+                               return std::abs(a.t - mid) < std::abs(b.t - mid);
+                             });
+  };
+  const LandingSample s = at(string_tire), k = at(coupled);
+  EXPECT_GT(s.contact.slip_ratio, 0.3);  // still sliding half-way
+  EXPECT_NEAR(s.contact.force.Fx, k.contact.force.Fx, 0.05 * std::abs(k.contact.force.Fx));
+  bool spin_up_event = false;
+  for (const LandingEvent& e : string_tire.events) spin_up_event |= e.what == "spin-up";
+  EXPECT_TRUE(spin_up_event);
 }

@@ -51,7 +51,7 @@ TEST(LinearStability, ClassicalCriticalDampingOfARigidStrutMatchesRouthHurwitz) 
     c.structure.offset_m = 0.0;
     c.structure.lateral_stiffness_n_per_m = 1e11;  // no lateral bending
     c.structure.lateral_damping_ns_per_m = 1e6;
-    const GearModel m = make_gear_model(c, ContactModel::nonholonomic);
+    const GearModel m = make_gear_model(c, ContactModel::von_schlippe);
     const double expected = routh_hurwitz_critical_damping(c, patch_radius(m));
     EXPECT_NEAR(classical_critical_damping(m), expected, 2e-3 * expected) << "V = " << V;
   }
@@ -63,7 +63,7 @@ TEST(LinearStability, DefaultGearIsClassicallyStableWithAMarginOf1p3To1p5Over30T
   for (double V = 30.0; V <= 90.0 + 1e-9; V += 2.5) {
     GearConfig c;
     c.scenario.forward_speed_mps = V;
-    const GearModel m = make_gear_model(c, ContactModel::nonholonomic);
+    const GearModel m = make_gear_model(c, ContactModel::von_schlippe);
     const double crit = classical_critical_damping(m);
     if (crit > worst) {
       worst = crit;
@@ -75,18 +75,18 @@ TEST(LinearStability, DefaultGearIsClassicallyStableWithAMarginOf1p3To1p5Over30T
   EXPECT_GE(margin, 1.3) << "worst at " << worst_speed << " m/s";
   EXPECT_LE(margin, 1.5) << "worst at " << worst_speed << " m/s";
   // The legacy gear is the classically unstable one.
-  EXPECT_GT(linear_growth_rate(make_gear_model(legacy_gear_config(), ContactModel::nonholonomic),
+  EXPECT_GT(linear_growth_rate(make_gear_model(legacy_gear_config(), ContactModel::von_schlippe),
                                StabilityPhase::touchdown),
             0.0);
 }
 
 TEST(LinearStability, NonlinearResponseChangesSignAtTheEigenvalueBoundary) {
   GearConfig c;
-  const double crit = classical_critical_damping(make_gear_model(c, ContactModel::nonholonomic));
+  const double crit = classical_critical_damping(make_gear_model(c, ContactModel::von_schlippe));
   for (double factor : {0.8, 1.2}) {
     c.structure.torsional_damping_nms_per_rad = factor * crit;
     const StabilityReport r =
-        assess_stability(make_gear_model(c, ContactModel::nonholonomic), StabilityPhase::touchdown);
+        assess_stability(make_gear_model(c, ContactModel::von_schlippe), StabilityPhase::touchdown);
     ASSERT_TRUE(std::isfinite(r.perturbation_growth_rate_per_s));
     EXPECT_EQ(r.perturbation_growth_rate_per_s > 0, factor < 1) << factor;
     EXPECT_NEAR(r.perturbation_growth_rate_per_s, r.torsion_growth_rate_per_s, 0.05) << factor;
@@ -105,7 +105,7 @@ TEST(LinearStability, KinematicShimmyWavelengthIsTwelveHalfContactLengths) {
   c.structure.trail_m = 0.0;
   c.structure.offset_m = 0.0;
   c.scenario.drift_speed_mps = 0.0;
-  GearModel m = make_gear_model(c, ContactModel::nonholonomic);
+  GearModel m = make_gear_model(c, ContactModel::von_schlippe);
   const double a = patch_radius(m);
   m.config.rolling.relaxation_length_m = 3.0 * a;
   const double V = c.scenario.forward_speed_mps;
@@ -144,7 +144,7 @@ TEST(LinearStability, KinematicShimmyWavelengthIsTwelveHalfContactLengths) {
 
 TEST(LinearStability, BrakedQuasiSteadyStateBalancesTheAntiSkid) {
   for (ContactModel cm :
-       {ContactModel::coupled, ContactModel::decoupled, ContactModel::nonholonomic}) {
+       {ContactModel::coupled, ContactModel::decoupled, ContactModel::von_schlippe}) {
     const GearModel m = make_gear_model(GearConfig{}, cm);
     const QuasiSteadyState q = quasi_steady_state(m, StabilityPhase::braked_slide);
     ASSERT_TRUE(q.converged) << to_string(cm);
@@ -169,7 +169,7 @@ TEST(LinearStability, BrakedQuasiSteadyStateBalancesTheAntiSkid) {
 }
 
 TEST(LinearStability, PerturbationGrowthMatchesTheTorsionalEigenvalue) {
-  for (ContactModel cm : {ContactModel::coupled, ContactModel::nonholonomic}) {
+  for (ContactModel cm : {ContactModel::coupled, ContactModel::von_schlippe}) {
     const StabilityReport r =
         assess_stability(make_gear_model(legacy_gear_config(), cm), StabilityPhase::braked_slide);
     ASSERT_TRUE(std::isfinite(r.perturbation_growth_rate_per_s)) << to_string(cm);
@@ -184,7 +184,7 @@ TEST(LinearStability, PerturbationGrowthMatchesTheTorsionalEigenvalue) {
 // period the work of all non-conservative terms is 2 sigma E (2 pi / w). At a resonance the mean
 // energy is twice the mean kinetic energy, (I |psi'^|^2 + m |y'^|^2) / 2 for amplitudes ^.
 TEST(LinearStability, EnergyPerCycleMatchesTheGrowthRate) {
-  for (ContactModel cm : {ContactModel::coupled, ContactModel::nonholonomic}) {
+  for (ContactModel cm : {ContactModel::coupled, ContactModel::von_schlippe}) {
     const GearModel m = make_gear_model(legacy_gear_config(), cm);
     StabilityOptions o;
     o.simulate_perturbation = false;
@@ -263,14 +263,14 @@ TEST(LinearStability, SomieskiParameterTableGivesTheDerivedBoundary) {
   c.rolling.aligning_coefficient_m = 2.0;
   c.rolling.tread_moment_nm2_per_rad = 270.0;
   // Half contact length a = 0.1 m: the patch radius R = sqrt(N / (2 pi p* A^1)) sets p*.
-  GearModel probe = make_gear_model(c, ContactModel::nonholonomic);
+  GearModel probe = make_gear_model(c, ContactModel::von_schlippe);
   c.tire.inflation_pressure_pa = 9000.0 / (2 * kPi * 0.01 * probe.moment_1);
-  probe = make_gear_model(c, ContactModel::nonholonomic);
+  probe = make_gear_model(c, ContactModel::von_schlippe);
   ASSERT_NEAR(patch_radius(probe), 0.1, 1e-12);
   const auto critical = [&](double V) {
     GearConfig v = c;
     v.scenario.forward_speed_mps = V;
-    return classical_critical_damping(make_gear_model(v, ContactModel::nonholonomic));
+    return classical_critical_damping(make_gear_model(v, ContactModel::von_schlippe));
   };
   EXPECT_NEAR(critical(70.0), 46.67, 0.05);
   EXPECT_NEAR(critical(30.0), 22.81, 0.05);
@@ -313,7 +313,7 @@ TEST(LinearStability, FreeplayShiftsTheStaticTwistByItsHalfWidth) {
   // Inside the band (straight rolling, psi = 0) the spring does not act: the classical
   // linearisation loses the torsional stiffness, d(dpsi'/dt)/dpsi ~ 0.
   GearConfig r = c;
-  const GearModel rolling = make_gear_model(r, ContactModel::nonholonomic);
+  const GearModel rolling = make_gear_model(r, ContactModel::von_schlippe);
   GearState x0 = GearState::Zero();
   x0[kSpin] = r.scenario.forward_speed_mps / r.structure.wheel_radius_m;
   const GearJacobian J = gear_jacobian(rolling, GearMode{false, true, false}, 0.0, x0);
@@ -364,8 +364,8 @@ TEST(LinearStability, TwinGearsOffsetLeverIsHalfTheWheelSpacing) {
   GearConfig twin = single;
   twin.structure.offset_m = 0.0;
   twin.structure.wheel_spacing_m = 2 * L;
-  const GearModel ms = make_gear_model(single, ContactModel::nonholonomic);
-  const GearModel mt = make_gear_model(twin, ContactModel::nonholonomic);
+  const GearModel ms = make_gear_model(single, ContactModel::von_schlippe);
+  const GearModel mt = make_gear_model(twin, ContactModel::von_schlippe);
   GearState x = GearState::Zero();
   x[kSpin] = x[kSpin2] = single.scenario.forward_speed_mps / single.structure.wheel_radius_m;
   const GearMode rolling{true, true, false};

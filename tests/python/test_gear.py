@@ -79,7 +79,7 @@ def app_run(shimmy_app, tmp_path_factory):
     out = tmp_path_factory.mktemp("shimmy")
     cfg = c.LandingConfig()
     d = cfg.to_dict()
-    d["models"] = ["coupled", "nonholonomic"]
+    d["models"] = ["coupled", "von_schlippe"]
     spec = {k: {"parameter": a[0], "from": a[1], "to": a[2], "points": a[3]} for k, a in zip("xy", AXES)}
     if "method" in (d["maps"] or [{}])[0]:
         spec["method"] = "simulation"  # a configuration that also offers eigenvalue maps
@@ -91,7 +91,7 @@ def app_run(shimmy_app, tmp_path_factory):
     return cfg, out
 
 
-@pytest.mark.parametrize("model", ["coupled", "nonholonomic"])
+@pytest.mark.parametrize("model", ["coupled", "von_schlippe"])
 def test_landing_equals_the_apps_histories_and_metrics(app_run, model):
     cfg, out = app_run
     r = c.simulate_landing(cfg, model)

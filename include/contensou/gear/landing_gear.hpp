@@ -39,9 +39,11 @@ struct ExactLaw;
 
 // Which tire-ground law acts while the tire slides (docs/shimmy.md, "Contact models").
 enum class ContactModel {
-  coupled,      // the fractional law of theory.md section 4 (or the exact integrals)
-  decoupled,    // Coulomb sliding force and an independent Coulomb spin torque, regularised
-  nonholonomic  // rolling from touchdown: stretched string, no slip, no spin friction
+  coupled,       // the fractional law of theory.md section 4 (or the exact law)
+  decoupled,     // Coulomb sliding force and an independent Coulomb spin torque, regularised
+  von_schlippe,  // the classical tire: von Schlippe stretched string, combined slip on a
+                 // friction circle, no spin friction (RollingTire)
+  nonholonomic = von_schlippe  // the former name, kept as an alias
 };
 const char* to_string(ContactModel model);
 ContactModel contact_model_from_string(const std::string& name);  // throws InvalidArgument
@@ -116,7 +118,7 @@ struct SlidingTire {
 };
 
 // The rolling tire (von Schlippe / Somieski stretched string; Pacejka 2012, ch. 5) with combined
-// slip on a friction circle (docs/shimmy.md, "nonholonomic"):
+// slip on a friction circle (docs/shimmy.md, "von_schlippe"):
 //   lambda' = -(vy + a psi') - (V / sigma) lambda,   alpha = lambda / sigma,  s = vx / V,
 //   demanded forces Dx = -C_x s N, Dy = C_Fa alpha N, D = |(Dx, Dy)|, cap = mu N,
 //   (Fx, Fy) = (Dx, Dy) cap tanh(D / cap) / D    (|F| <= mu N: braking and cornering share it),
@@ -207,7 +209,7 @@ using GearState = Eigen::Matrix<double, kStateSize, 1>;
 // The discrete part of the state, changed only at events.
 struct GearMode {
   bool loaded = false;         // after load onset
-  bool rolling = false;        // rolling tire (after spin-up); always true for nonholonomic
+  bool rolling = false;        // rolling tire (after spin-up); always true for von_schlippe
   bool brake_command = false;  // between brake on and brake off
 };
 
@@ -249,7 +251,7 @@ GearModel make_gear_model(const GearConfig& config, ContactModel contact);
 // N(t): zero before touchdown, the smooth ramp, then the static load.
 double vertical_load(const LandingScenario& s, double t);
 
-// The initial state at t = 0 (wheel at rest, or rolling for the nonholonomic model).
+// The initial state at t = 0 (wheel at rest, every model).
 GearState initial_state(const GearModel& model);
 GearMode initial_mode(const GearModel& model);
 
