@@ -82,6 +82,7 @@ SlipMoments half_ring_table(const ExactModel<double>& m, double s, double eps,
   if (std::max(coarse.nodes.size(), fine.nodes.size()) > kMost)
     throw std::invalid_argument("slip_speed_measure: at most 64 ring nodes");
   std::array<double, kMost> tt, ww, pp, lo, hi;
+  const double inv_d = 1.0 / D, inv_d2 = inv_d * inv_d;
   for (std::size_t j = 0; j + 1 < cuts.size(); ++j) {
     const double a = cuts[j], b = cuts[j + 1];
     if (!(b > a)) continue;
@@ -124,12 +125,12 @@ SlipMoments half_ring_table(const ExactModel<double>& m, double s, double eps,
       pp[i] = c[0] + x * (c[1] + x * (c[2] + x * c[3]));
     }
     for (int i = 0; i < n; ++i) {
-      const double s2 = lo[i] * hi[i] / (D * D);  // sin^2(phi)
-      const double c = 1.0 - lo[i] / D;           // cos(phi) = (C - t) / D
-      const double root = std::sqrt(lo[i] * hi[i]);
+      const double q = lo[i] * hi[i], root = std::sqrt(q);
       if (!(root > 0.0)) continue;
+      const double s2 = q * inv_d2;          // sin^2(phi)
+      const double c = 1.0 - lo[i] * inv_d;  // cos(phi) = (C - t) / D
       // y = eps - s cos(phi) = (eps - s) + s (1 - cos(phi)), 1 - cos(phi) = (t - t_min) / D.
-      add_ring_point(ww[i] * (pp[i] - p_c) / root, c, s2, (eps - s) + s * lo[i] / D, s, out);
+      add_ring_point(ww[i] * (pp[i] - p_c) / root, c, s2, (eps - s) + s * lo[i] * inv_d, s, out);
     }
   }
   return out;
