@@ -305,8 +305,9 @@ void BM_LawBuildTableFalling(benchmark::State& state, double tolerance) {
 
 void register_law_benchmarks() {
   for (double tol : {1e-8, 1e-6})
-    benchmark::RegisterBenchmark((std::string("build:table101+f(w)/tol:") + (tol > 1e-7 ? "1e-6" : "1e-8")).c_str(),
-                                 BM_LawBuildTableFalling, tol)
+    benchmark::RegisterBenchmark(
+        (std::string("build:table101+f(w)/tol:") + (tol > 1e-7 ? "1e-6" : "1e-8")).c_str(),
+        BM_LawBuildTableFalling, tol)
         ->Unit(benchmark::kMillisecond)
         ->Iterations(1);
   for (bool j : {false, true}) {

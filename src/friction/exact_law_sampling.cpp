@@ -68,6 +68,150 @@ void law_functions_from_moments(const SlipMoments& raw, double sigma, double loa
   g[kLawShiftSum] = (c + d) / den;
 }
 
+namespace {
+
+// The series of P_m below in k^2: P_m = pi/2 sum_j C(2j, j) 4^-j w_(m+j) k^(2j),
+// w_n = C(2n, n) 4^-n (coefficient[j][m]), to kSeriesTerms terms (k^2 <= 1/5: below 1e-18).
+constexpr int kSeriesTerms = 27;
+struct EllipticSeries {
+  double coefficient[kSeriesTerms][4];
+  EllipticSeries() {
+    double c = 1.0, w[kSeriesTerms + 4];
+    w[0] = 1.0;
+    for (int n = 0; n + 1 < kSeriesTerms + 4; ++n)
+      w[n + 1] = w[n] * (2.0 * n + 1.0) / (2.0 * n + 2.0);
+    for (int j = 0; j < kSeriesTerms; ++j) {
+      for (int m = 0; m < 4; ++m) coefficient[j][m] = 0.5 * kPi * c * w[m + j];
+      c *= (2.0 * j + 1.0) / (2.0 * j + 2.0);
+    }
+  }
+};
+
+// P_m = integral_0^(pi/2) sin^(2m)(psi) / sqrt(1 - k^2 sin^2(psi)) d psi, m = 0..3, from k^2 and
+// k' = sqrt(1 - k^2) (given apart: it is accurate where k^2 is near 1). k^2 <= 1/5: the
+// hypergeometric series; above: the arithmetic-geometric mean for K and K - E, then
+// (2m + 1) k^2 P_(m+1) = 2m (1 + k^2) P_m - (2m - 1) P_(m-1) (it loses below 1e-15 from 1/5 on).
+void elliptic_moments(double k2, double kp, double* P) {
+  if (k2 <= 0.2) {
+    static const EllipticSeries series;
+    double sum[4] = {0.0, 0.0, 0.0, 0.0};
+    for (int j = kSeriesTerms - 1; j >= 0; --j)
+      for (int m = 0; m < 4; ++m) sum[m] = sum[m] * k2 + series.coefficient[j][m];
+    for (int m = 0; m < 4; ++m) P[m] = sum[m];
+    return;
+  }
+  // a_n, b_n -> AGM(1, k'); K - E = K sum_n 2^(n-1) c_n^2, c_0 = k, c_(n+1) = (a_n - b_n) / 2.
+  double a = 1.0, b = kp, s = 0.5 * k2, scale = 0.5;
+  for (int i = 0; i < 40; ++i) {
+    const double c = 0.5 * (a - b), an = 0.5 * (a + b);
+    b = std::sqrt(a * b);
+    a = an;
+    scale *= 2.0;
+    s += scale * c * c;
+    if (c < 1e-9 * a) break;  // the next c is below 1e-18
+  }
+  const double K = 0.5 * kPi / a;
+  P[0] = K;
+  P[1] = K * s / k2;
+  P[2] = (2.0 * (1.0 + k2) * P[1] - P[0]) / (3.0 * k2);
+  P[3] = (4.0 * (1.0 + k2) * P[2] - 3.0 * P[1]) / (5.0 * k2);
+}
+
+// The six ring integrals (over theta in [0, 2 pi]) at radius rho about O, centre of sliding
+// (0, e), u_hat = (e - y, x) / |r - r_c| (slip_speed_measure.hpp): with sin(theta) = 2 x - 1,
+// x = sin^2(psi), |r - r_c| = (rho + e) sqrt(1 - k^2 x), k^2 = 4 rho e / (rho + e)^2, each is
+// 4 / (rho + e) times a polynomial in x integrated as P_m. d = rho - e (exact near the ring
+// through the centre).
+void ring_about_origin(double rho, double e, double d, double* out) {
+  const double sum = rho + e, kp = std::abs(d) / sum, k2 = 4.0 * rho * e / (sum * sum);
+  double P[4];
+  elliptic_moments(k2, kp, P);
+  const double f = 4.0 / sum, r2 = rho * rho;
+  out[0] = f * (sum * P[0] - 2.0 * rho * P[1]);
+  out[1] = f * 4.0 * r2 * (P[1] - P[2]);
+  out[2] = f * rho * (-sum * P[0] + (2.0 * e + 4.0 * rho) * P[1] - 4.0 * rho * P[2]);
+  out[3] = f * 4.0 * r2 * (sum * P[1] - (e + 3.0 * rho) * P[2] + 2.0 * rho * P[3]);
+  out[4] = f * 4.0 * r2 * rho * (-P[1] + 3.0 * P[2] - 2.0 * P[3]);
+  out[5] = f * r2 *
+           (sum * P[0] - (4.0 * e + 6.0 * rho) * P[1] + (4.0 * e + 12.0 * rho) * P[2] -
+            8.0 * rho * P[3]);
+}
+
+// The rules of ring_moments: Gauss-Legendre of 4..16 nodes, and tanh-sinh (step 1/8, nodes
+// as offsets from the ends, down to 1e-20 of the width) for intervals at the centre's ring.
+struct RingQuadrature {
+  std::vector<GaussLegendreRule> gauss;  // gauss[n] has n nodes
+  std::vector<double> offset, weight;    // of one half of [-1, 1], offset from its end
+  RingQuadrature() {
+    for (int n = 0; n <= 16; ++n) gauss.push_back(n < 4 ? GaussLegendreRule{} : gauss_legendre(n));
+    const double h = 0.125;
+    for (int j = 0;; ++j) {
+      const double u = 0.5 * kPi * std::sinh(j * h), e2u = std::exp(2.0 * u);
+      const double off = 2.0 / (1.0 + e2u);  // 1 - tanh(u)
+      if (off < 1e-20) break;
+      const double c = std::cosh(u);
+      offset.push_back(off);
+      weight.push_back(h * 0.5 * kPi * std::cosh(j * h) / (c * c));
+    }
+  }
+};
+
+const RingQuadrature& ring_quadrature() {
+  static const RingQuadrature q;
+  return q;
+}
+
+// Adds the integral over rho in [a, b] (one cubic piece c of the table about t0) of
+// rho p(rho^2) times the six ring integrals.
+void add_ring_interval(const std::array<double, 4>& c, double t0, double a, double b, double e,
+                       SlipMoments& out) {
+  const RingQuadrature& q = ring_quadrature();
+  auto add = [&](double rho, double d, double w) {
+    const double s = rho * rho - t0;
+    const double p = c[0] + s * (c[1] + s * (c[2] + s * c[3]));
+    double r[6];
+    ring_about_origin(rho, e, d, r);
+    for (int i = 0; i < 6; ++i) out[i] += w * rho * p * r[i];
+  };
+  const double half = 0.5 * (b - a), mid = 0.5 * (a + b);
+  // Distance of the nearest singularity (rho = e, and rho = -e near O) in half widths.
+  const double r = std::min(std::abs(mid - e), mid + e) / half;
+  if (r >= 3.0) {  // Gauss-Legendre: error ~ (r + sqrt(r^2 - 1))^(-2n)
+    const double B = r + std::sqrt(r * r - 1.0);
+    const int n = std::clamp(static_cast<int>(std::ceil(20.0 / std::log(B))), 6, 16);
+    const GaussLegendreRule& g = q.gauss[n];
+    for (int i = 0; i < n; ++i) {
+      const double rho = mid + half * g.nodes[i];
+      add(rho, rho - e, half * g.weights[i]);
+    }
+    return;
+  }
+  // Near the centre's ring (a log singularity at or beyond an end): tanh-sinh.
+  for (std::size_t j = 0; j < q.offset.size(); ++j) {
+    const double off = half * q.offset[j], w = half * q.weight[j];
+    add(a + off, (a - e) + off, w);
+    if (j > 0) add(b - off, (b - e) - off, w);
+  }
+}
+
+}  // namespace
+
+SlipMoments table_ring_moments(const ExactModel<double>& unit, double e) {
+  SlipMoments out{};
+  const std::vector<double>& knot = unit.knot;
+  for (std::size_t k = 0; k < unit.piece.size(); ++k) {
+    const double a = std::sqrt(knot[k]), b = std::sqrt(knot[k + 1]);
+    if (!(b > a)) continue;
+    if (e > a && e < b) {
+      add_ring_interval(unit.piece[k], knot[k], a, e, e, out);
+      add_ring_interval(unit.piece[k], knot[k], e, b, e, out);
+    } else {
+      add_ring_interval(unit.piece[k], knot[k], a, b, e, out);
+    }
+  }
+  return out;
+}
+
 // Samples the six functions of t from five adaptive integrals of the unit model in the sliding
 // frame, v = sigma x, omega = eta > 0 (sigma + eta = 1):
 //   P1 kappa = 1, k = 0:            Fx = -A,  Mz = -(a - b)
@@ -97,6 +241,11 @@ Resultants<double> ConstantSampler::probe(double kappa, double kx, double ky,
 
 void ConstantSampler::operator()(double t, double* g) const {
   const double sigma = 0.5 * (1.0 + t), eta = 0.5 * (1.0 - t), h = std::sqrt(0.5);
+  // A table: its rings about O in closed form (away from the limits).
+  if (!unit_.piece.empty() && sigma > 0.0 && eta > 0.0) {
+    law_functions_from_moments(table_ring_moments(unit_, sigma / eta), sigma, unit_.load_area, g);
+    return;
+  }
   const Resultants<double> p1 = probe(1.0, 0.0, 0.0, {sigma, 0.0, eta});
   const double Mz2 = probe(2.0, 0.0, 0.0, {sigma, 0.0, eta}).Mz;
   const double Mz3 = probe(1.0, 0.0, 1.0, {sigma, 0.0, eta}).Mz;

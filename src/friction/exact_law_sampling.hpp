@@ -23,6 +23,11 @@ ExactModel<double> unit_model(const ExactModel<double>& model);
 // The six table functions from the six raw integrals (slip_speed_measure.hpp) at sigma > 0.
 void law_functions_from_moments(const SlipMoments& raw, double sigma, double load, double* g);
 
+// A table's six raw integrals (slip_speed_measure.hpp) for constant friction with the centre of
+// sliding at (0, e), e > 0: rings about O in closed form (elliptic integrals), integrated over
+// rho piece by piece (exact_law_sampling.cpp).
+SlipMoments table_ring_moments(const ExactModel<double>& unit, double e);
+
 // Constant friction: the six functions at t from five adaptive integrals (exact_law.cpp).
 class ConstantSampler {
  public:

@@ -2,8 +2,10 @@
 #include "contensou/friction/slip_speed_measure.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <numbers>
+#include <stdexcept>
 
 #include "contensou/friction/adaptive_integration.hpp"
 #include "contensou/friction/quadrature.hpp"
@@ -72,11 +74,19 @@ SlipMoments half_ring_table(const ExactModel<double>& m, double s, double eps,
           ? std::numbers::pi
           : 2.0 * std::asin(std::sqrt(std::clamp((1.0 - t_min) / (t_max - t_min), 0.0, 1.0)));
   SlipMoments out = constant_ring(p_c, s, eps, phi_end);
-  const int most = static_cast<int>(std::max(coarse.nodes.size(), fine.nodes.size()));
-  std::vector<double> tt(most), ww(most), pp(most), lo(most), hi(most);
+  // Piece j between the cuts is the table's piece k0 + j (the one holding t_min first).
+  const std::size_t k0 =
+      std::min<std::size_t>(std::max<std::ptrdiff_t>(first - m.knot.begin(), 1), m.piece.size()) -
+      1;
+  constexpr std::size_t kMost = 64;
+  if (std::max(coarse.nodes.size(), fine.nodes.size()) > kMost)
+    throw std::invalid_argument("slip_speed_measure: at most 64 ring nodes");
+  std::array<double, kMost> tt, ww, pp, lo, hi;
+  const double inv_d = 1.0 / D, inv_d2 = inv_d * inv_d;
   for (std::size_t j = 0; j + 1 < cuts.size(); ++j) {
     const double a = cuts[j], b = cuts[j + 1];
     if (!(b > a)) continue;
+    const std::size_t k = std::min(k0 + j, m.piece.size() - 1);
     // A piece far from both ends of the ring's range: v = sqrt(t - t_min) on the lower half,
     // sqrt(t_max - t) on the upper half (dt / sqrt(t - t_min) = 2 dv: the near square root
     // gone, the far one smooth). A piece near both: the angle phi itself, t = t_min + (t_max -
@@ -109,14 +119,18 @@ SlipMoments half_ring_table(const ExactModel<double>& m, double s, double eps,
       }
       tt[i] = std::clamp(t_min + lo[i], a, b);
     }
-    profile_at(m, tt.data(), n, pp.data());
+    for (int i = 0; i < n; ++i) {  // the piece's cubic (no search; no Hertz edge on a table)
+      const std::array<double, 4>& c = m.piece[k];
+      const double x = tt[i] - m.knot[k];
+      pp[i] = c[0] + x * (c[1] + x * (c[2] + x * c[3]));
+    }
     for (int i = 0; i < n; ++i) {
-      const double s2 = lo[i] * hi[i] / (D * D);  // sin^2(phi)
-      const double c = 1.0 - lo[i] / D;           // cos(phi) = (C - t) / D
-      const double root = std::sqrt(lo[i] * hi[i]);
+      const double q = lo[i] * hi[i], root = std::sqrt(q);
       if (!(root > 0.0)) continue;
+      const double s2 = q * inv_d2;          // sin^2(phi)
+      const double c = 1.0 - lo[i] * inv_d;  // cos(phi) = (C - t) / D
       // y = eps - s cos(phi) = (eps - s) + s (1 - cos(phi)), 1 - cos(phi) = (t - t_min) / D.
-      add_ring_point(ww[i] * (pp[i] - p_c) / root, c, s2, (eps - s) + s * lo[i] / D, s, out);
+      add_ring_point(ww[i] * (pp[i] - p_c) / root, c, s2, (eps - s) + s * lo[i] * inv_d, s, out);
     }
   }
   return out;
@@ -273,13 +287,24 @@ void table_panel_rule(const ExactModel<double>& m, const Panel& p, const std::ve
     nu.push_back(panel_point(p, u[j], dnu));
     weight.push_back(SlipMoments{});
   }
+  // The Lagrange basis in the first barycentric form: l_j(x) = prod_i (x - u_i) lambda_j /
+  // (x - u_j), lambda_j = 1 / prod_(i != j) (u_j - u_i).
+  std::vector<double> lambda(n, 1.0), l(n);
+  for (std::size_t j = 0; j < n; ++j)
+    for (std::size_t i = 0; i < n; ++i)
+      if (i != j) lambda[j] /= u[j] - u[i];
   for (std::size_t k = 0; k < fine_nu.size(); ++k) {
     const double x = panel_coordinate(p, fine_nu[k]);
+    double all = 1.0;
+    std::size_t at = n;  // a node x equals
+    for (std::size_t i = 0; i < n; ++i) {
+      if (x == u[i]) at = i;
+      all *= x - u[i];
+    }
+    for (std::size_t j = 0; j < n; ++j)
+      l[j] = at < n ? (j == at ? 1.0 : 0.0) : all * lambda[j] / (x - u[j]);
     for (std::size_t j = 0; j < n; ++j) {
-      double l = 1.0;  // the Lagrange basis polynomial of node j at x
-      for (std::size_t i = 0; i < n; ++i)
-        if (i != j) l *= (x - u[i]) / (u[j] - u[i]);
-      for (int c = 0; c < 6; ++c) weight[base + j][c] += l * fine_w[k][c];
+      for (int c = 0; c < 6; ++c) weight[base + j][c] += l[j] * fine_w[k][c];
     }
   }
 }
