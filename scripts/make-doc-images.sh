@@ -26,7 +26,9 @@ cmd="contensou-shimmy --map"
 "$shimmy" --out "$tmp/default" --map > "$tmp/default.txt"
 copy_picture shimmy_torsion.png "$tmp/default/large-offset/torsion.png" "$cmd"
 copy_picture shimmy_torque.png "$tmp/default/large-offset/torque.png" "$cmd"
-for png in "$tmp"/default/map_*.png; do copy_picture "$(basename "$png")" "$png" "$cmd"; done
+for png in "$tmp"/default/map_*.png "$tmp"/default/overlay_*.png; do
+  copy_picture "$(basename "$png")" "$png" "$cmd"
+done
 
 # Twin-wheel gear: speed x wheel spacing, braked slide.
 twin_map='[{"x": {"parameter": "scenario.forward_speed_mps", "from": 30, "to": 90, "points": 50},

@@ -39,6 +39,12 @@ struct ShimmyConfig {
        {"tire.friction.kinetic_coefficient", 0.2, 0.8, 50}},
       {{"scenario.forward_speed_mps", 30.0, 90.0, 50}, {"structure.offset_m", 0.0, 0.5, 50}},
       {{"scenario.forward_speed_mps", 30.0, 90.0, 50},
+       {"structure.offset_m", 0.0, 0.5, 50},
+       "eigenvalues",
+       StabilityPhase::touchdown},
+      {{"scenario.forward_speed_mps", 30.0, 90.0, 50},
+       {"structure.torsional_damping_nms_per_rad", 0.0, 400.0, 50}},
+      {{"scenario.forward_speed_mps", 30.0, 90.0, 50},
        {"scenario.static_load_n", 20.0e3, 140.0e3, 50}}};
 };
 

@@ -15,6 +15,8 @@
 #include "config.hpp"
 #include "contensou/friction/error.hpp"
 #include "gnuplot.hpp"
+#include "axis_label.hpp"
+#include "boundary_overlay.hpp"
 #include "history_plots.hpp"
 #include "overrides.hpp"
 #include "scenarios.hpp"
@@ -187,30 +189,6 @@ void progress_bar(const std::string& label, int done, int total) {
   std::fflush(stderr);
 }
 
-std::string short_name(const std::string& parameter) {
-  return parameter.substr(parameter.rfind('.') + 1);
-}
-
-// "structure.offset_m" -> "offset [m]": a configuration key as an axis label, its unit suffix
-// spelled out ("[-]" for a pure number).
-std::string parameter_axis_label(const std::string& parameter) {
-  static const std::vector<std::pair<std::string, std::string>> units{
-      {"_nms_per_rad", "N m s/rad"}, {"_nm_per_rad", "N m/rad"}, {"_nm2_per_rad", "N m^2/rad"},
-      {"_ns_per_m", "N s/m"},        {"_n_per_m", "N/m"},        {"_kgm2", "kg m^2"},
-      {"_mps", "m/s"},               {"_nm", "N m"},             {"_kg", "kg"},
-      {"_pa", "Pa"},                 {"_rad", "rad"},            {"_n", "N"},
-      {"_m", "m"},                   {"_s", "s"}};
-  std::string name = short_name(parameter), unit = "-";
-  for (const auto& [suffix, u] : units)
-    if (name.size() > suffix.size() &&
-        name.compare(name.size() - suffix.size(), suffix.size(), suffix) == 0) {
-      name.erase(name.size() - suffix.size());
-      unit = u;
-      break;
-    }
-  std::replace(name.begin(), name.end(), '_', ' ');
-  return name + " [" + unit + "]";
-}
 
 // The map's axes and ranges, its coloured column where the cell is valid, and the cells it could
 // not compute as black crosses counted in the key (gnuplot, columns by their CSV names).
@@ -265,7 +243,8 @@ nlohmann::json write_map(const std::string& dir, const StabilityMap& m) {
     csv << '\n';  // gnuplot reads blank-line-separated rows as a grid
   }
   write_file_atomically(dir + "/" + base + ".csv", csv.str());
-  write_file_atomically(dir + "/" + base + "_boundary.csv", boundary.str() + "\n");
+  write_file_atomically(dir + "/" + base + "_boundary.csv",
+                        m.x.parameter + ',' + m.y.parameter + '\n' + boundary.str() + "\n");
   std::ostringstream gp;
   gp << "set terminal pngcairo noenhanced size 760,620 font ',10'\nset output '" << base
      << ".png'\nset title '" << to_string(m.contact) << ", "
@@ -274,9 +253,9 @@ nlohmann::json write_map(const std::string& dir, const StabilityMap& m) {
      << " [1/s]; black: stability boundary'\n"
      << "set palette defined (0 '#2166ac', 0.5 '#f7f7f7', 1 '#b2182b')\n"
      << "set cbrange [" << -g_max << ":" << g_max << "]\nset cblabel 'growth rate [1/s]'\n"
-     << map_plot_body(m, base, "growth_rate_per_s") << ", '" << base
-     << "_boundary.csv' using 1:2 with points pt 7 ps 0.5 lc rgb 'black' title 'stability "
-        "boundary'\n";
+     << map_plot_body(m, base, "growth_rate_per_s") << ", '" << base << "_boundary.csv' using \""
+     << m.x.parameter << "\":\"" << m.y.parameter
+     << "\" with points pt 7 ps 0.5 lc rgb 'black' title 'stability boundary'\n";
   run_gnuplot(dir, base, gp.str());
   return {{"x", m.x.parameter},
           {"y", m.y.parameter},
@@ -430,6 +409,8 @@ nlohmann::json run_landings(const ShimmyConfig& config, const std::string& out, 
 // The configuration's stability maps, each model's, into `out`; their summaries into `summary`.
 void run_maps(const ShimmyConfig& config, const std::string& out, int map_size, unsigned threads,
               const TireInput* tire, nlohmann::json& summary) {
+  std::vector<StabilityMap> linear_maps;
+  std::vector<std::string> bases;
     for (const MapSpec& spec : config.maps) {
       MapAxis x = spec.x, y = spec.y;
       if (map_size > 0) x.points = y.points = map_size;
@@ -444,6 +425,9 @@ void run_maps(const ShimmyConfig& config, const std::string& out, int map_size, 
                 : linear_stability_map(model, x, y, spec.phase, threads, bar);
         summary["maps"].push_back(write_map(out, m));
         summary["maps"].back()["model"] = to_string(cm);
+        bases.push_back(summary["maps"].back()["csv"].get<std::string>());
+        bases.back().erase(bases.back().size() - 4);  // ".csv"
+        linear_maps.push_back(m);
         if (tire && cm == ContactModel::coupled && spec.method != "simulation") {
           // A draw per cell costs a linearisation: at most 25 x 25 cells unless --map-size.
           MapAxis px = x, py = y;
@@ -458,6 +442,8 @@ void run_maps(const ShimmyConfig& config, const std::string& out, int map_size, 
         }
       }
     }
+  summary["overlays"] = write_boundary_overlays(
+      out, linear_maps, bases, [&](ContactModel cm) { return gear_model(config, cm, tire); });
 }
 
 // What feeds the oscillation of one model in one scenario: the energy its dominant mode gains
@@ -469,7 +455,7 @@ void print_energy_row(const std::string& scenario, const std::string& model,
   const auto get = [&](const char* key) { return e[key].get<double>(); };
   const std::vector<std::pair<const char*, double>> sources{
       {"offset drag", get("offset_drag")},
-      {"spin torque", get("spin_torque")},
+      {model == "von_schlippe" ? "aligning torque" : "spin torque", get("spin_torque")},
       {"lateral forces",
        get("trail_lateral_force") + get("lateral_friction") + get("carcass_lever")},
       {"damping", get("torsional_damping") + get("lateral_damping")}};

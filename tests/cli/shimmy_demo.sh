@@ -141,6 +141,24 @@ PY
 # Pictures that cannot lie: every plotted column by its header name, in the CSV it reads, with its
 # unit on the axis and inside the y range (the scripts are written with or without gnuplot).
 python3 "$(dirname "$0")/check_plots.py" "$dir/demo" "$dir/map" || fail "plot scripts"
+# The boundaries of the three models in one figure, with their unstable cells counted.
+"$app" --out "$dir/overlay" --map --map-size 5 --set 'maps=[{"x": {"parameter":
+  "scenario.forward_speed_mps", "from": 30, "to": 90}, "y": {"parameter":
+  "structure.torsional_damping_nms_per_rad", "from": 0, "to": 400}, "phase": "touchdown"}]' \
+  > /dev/null 2> "$dir/err" || fail "overlay run: $(cat "$dir/err")"
+python3 "$(dirname "$0")/check_plots.py" "$dir/overlay" > /dev/null || fail "overlay plot scripts"
+python3 - "$dir/overlay/summary.json" <<'PY' || fail "no boundary overlay in the map summary"
+import json, sys
+s = json.load(open(sys.argv[1]))
+(o,) = s["overlays"]
+assert o["png"] == "overlay_forward_speed_mps_torsional_damping_nms_per_rad_touchdown.png", o
+assert set(o["models"]) == {"coupled", "decoupled", "von_schlippe"}, o
+for m in s["maps"]:
+    assert o["models"][m["model"]]["unstable_cells"] == m["shimmy_cells"], (m, o)
+    assert m["not_computed_cells"] >= 0
+PY
+[ -s "$dir/overlay/overlay_forward_speed_mps_torsional_damping_nms_per_rad_touchdown.gp" ] \
+  || fail "no overlay script"
 
 # expect NAME FRAGMENT CONFIG_TEXT
 expect() {

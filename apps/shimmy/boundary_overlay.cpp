@@ -1,0 +1,149 @@
+#include "boundary_overlay.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <map>
+#include <sstream>
+
+#include "contensou/gear/linear_stability.hpp"
+#include "axis_label.hpp"
+#include "gnuplot.hpp"
+
+namespace contensou::app {
+
+std::string feeding_source(const GearModel& model, StabilityPhase phase) {
+  StabilityOptions o;
+  o.simulate_perturbation = false;
+  const StabilityReport r = phase == StabilityPhase::touchdown ? assess_touchdown(model, o)
+                                                               : assess_stability(model, phase, o);
+  if (!r.state.converged) return "";
+  if (r.mode_kind == "fore-aft") return "fore-aft (gear walk)";
+  const EnergyPerCycle& e = r.energy;
+  const std::vector<std::pair<const char*, double>> sources{
+      {"offset drag", e.offset_drag},
+      // Mz is spin friction on a sliding patch, the aligning moment on the string tire.
+      {model.contact == ContactModel::von_schlippe ? "aligning torque" : "spin torque",
+       e.spin_torque},
+      {"lateral forces", e.trail_lateral_force + e.lateral_friction + e.carcass_lever}};
+  const auto best = std::max_element(sources.begin(), sources.end(), [](const auto& a, const auto& b) {
+    return a.second < b.second;
+  });
+  return best->second > 0.0 ? best->first : "";
+}
+
+namespace {
+
+const char* const kColours[] = {"#d62728", "#1f77b4", "#2ca02c", "#9467bd"};
+
+// The cell of `m` nearest to the centroid of the cells where `inside` holds (a point inside the
+// region where it is convex enough), or nullptr if there is none.
+template <class Inside>
+const MapCell* central_cell(const StabilityMap& m, Inside inside) {
+  double cx = 0.0, cy = 0.0;
+  int n = 0;
+  for (const MapCell& c : m.cells)
+    if (inside(c)) {
+      cx += c.x;
+      cy += c.y;
+      ++n;
+    }
+  if (n == 0) return nullptr;
+  cx /= n;
+  cy /= n;
+  const double sx = m.x.to - m.x.from, sy = m.y.to - m.y.from;
+  const MapCell* best = nullptr;
+  double best_d = 0.0;
+  for (const MapCell& c : m.cells) {
+    if (!inside(c)) continue;
+    const double d = std::hypot((c.x - cx) / sx, (c.y - cy) / sy);
+    if (!best || d < best_d) {
+      best = &c;
+      best_d = d;
+    }
+  }
+  return best;
+}
+
+// One overlay: the boundaries of the maps `group` (indices into maps) and their labels.
+nlohmann::json write_overlay(const std::string& dir, const std::vector<StabilityMap>& maps,
+                             const std::vector<std::string>& bases, const std::vector<int>& group,
+                             const std::function<GearModel(ContactModel)>& model_of) {
+  const StabilityMap& first = maps[static_cast<std::size_t>(group.front())];
+  const std::string name = "overlay_" + short_name(first.x.parameter) + "_" +
+                           short_name(first.y.parameter) + "_" + to_string(first.phase);
+  std::ostringstream gp, labels, plots;
+  gp.precision(10);
+  nlohmann::json summary{{"png", name + ".png"}, {"phase", to_string(first.phase)}};
+  for (std::size_t k = 0; k < group.size(); ++k) {
+    const StabilityMap& m = maps[static_cast<std::size_t>(group[k])];
+    const std::string colour = kColours[k % 4];
+    const long unstable = std::count_if(m.cells.begin(), m.cells.end(),
+                                        [](const MapCell& c) { return c.valid && c.shimmy; });
+    std::string source;
+    if (const MapCell* c = central_cell(m, [](const MapCell& cell) { return cell.valid && cell.shimmy; })) {
+      GearModel model = model_of(m.contact);
+      *gear_parameter(model.config, m.x.parameter) = c->x;
+      *gear_parameter(model.config, m.y.parameter) = c->y;
+      source = feeding_source(model, m.phase);
+      labels << "set label " << k + 1 << " \"" << to_string(m.contact) << " unstable: "
+             << (source.empty() ? "?" : source) << "\" at " << c->x << "," << c->y
+             << " front center tc rgb '" << colour << "' offset 0,0.8 point pt 7 ps 1 lc rgb '"
+             << colour << "'\n";
+    }
+    // A model without a boundary has no points to plot: its key entry comes from NaN.
+    plots << (k ? ", " : "");
+    if (unstable > 0)
+      plots << "'" << bases[static_cast<std::size_t>(group[k])] << "_boundary.csv' using \""
+            << m.x.parameter << "\":\"" << m.y.parameter << "\"";
+    else
+      plots << "NaN";
+    plots << " with points pt 7 ps 0.5 lc rgb '" << colour << "' title '" << to_string(m.contact)
+          << ": unstable in " << unstable << " of " << m.cells.size() << " cells'";
+    summary["models"][to_string(m.contact)] = {{"unstable_cells", unstable},
+                                               {"cells", m.cells.size()},
+                                               {"fed_by", source}};
+  }
+  // The region where every model is stable, labelled at its centre.
+  const auto all_stable = [&](const MapCell& c) {
+    const std::size_t i = static_cast<std::size_t>(&c - first.cells.data());
+    for (int g : group) {
+      const MapCell& d = maps[static_cast<std::size_t>(g)].cells[i];
+      if (!d.valid || d.shimmy) return false;
+    }
+    return true;
+  };
+  if (const MapCell* c = central_cell(first, all_stable))
+    labels << "set label " << group.size() + 1 << " \"stable in every model\" at " << c->x << ","
+           << c->y << " center front\n";
+  gp << "set terminal pngcairo noenhanced size 820,680 font ',10'\nset output '" << name
+     << ".png'\nset datafile separator ','\nset datafile columnheaders\n"
+     << "set title \"stability boundaries, " << to_string(first.phase)
+     << " (eigenvalues); each model is unstable on the side of its label,\\nwhich names the "
+        "source that feeds the mode there (energy per cycle)\"\n"
+     << "set xlabel '" << parameter_axis_label(first.x.parameter) << "'\nset ylabel '"
+     << parameter_axis_label(first.y.parameter) << "'\n"
+     << "set xrange [" << first.x.from << ":" << first.x.to << "]\nset yrange [" << first.y.from
+     << ":" << first.y.to << "]\nset grid\nset key outside below\n"
+     << labels.str() << "plot " << plots.str() << "\n";
+  run_gnuplot(dir, name, gp.str());
+  return summary;
+}
+
+}  // namespace
+
+nlohmann::json write_boundary_overlays(const std::string& dir,
+                                       const std::vector<StabilityMap>& maps,
+                                       const std::vector<std::string>& bases,
+                                       const std::function<GearModel(ContactModel)>& model_of) {
+  std::map<std::string, std::vector<int>> groups;
+  for (std::size_t i = 0; i < maps.size(); ++i)
+    if (maps[i].linear)
+      groups[maps[i].x.parameter + "|" + maps[i].y.parameter + "|" + to_string(maps[i].phase)]
+          .push_back(static_cast<int>(i));
+  nlohmann::json out = nlohmann::json::array();
+  for (const auto& [key, group] : groups)
+    if (group.size() >= 2) out.push_back(write_overlay(dir, maps, bases, group, model_of));
+  return out;
+}
+
+}  // namespace contensou::app
