@@ -18,6 +18,7 @@
 #include "axis_label.hpp"
 #include "boundary_overlay.hpp"
 #include "history_plots.hpp"
+#include "limit_cycle.hpp"
 #include "overrides.hpp"
 #include "scenarios.hpp"
 #include "tire_report.hpp"
@@ -343,6 +344,27 @@ void print_tire_uncertainty(const ShimmyConfig& config, const TireInput& tire, u
   summary["tire_uncertainty"] = j;
 }
 
+// Each run's oscillation at the end of its window against the eigenvalues of the phase it is in
+// (braked slide when braking, else touchdown), into the summary (limit_cycle.hpp).
+void add_limit_cycles(const ShimmyConfig& config, const std::vector<LandingRun>& runs,
+                      nlohmann::json& summary) {
+  const char* phase = config.gear.scenario.braking ? "braked_slide" : "touchdown";
+  for (const LandingRun& r : runs) {
+    nlohmann::json& model = summary["models"][to_string(r.contact)];
+    const nlohmann::json& st = model["stability"][phase];
+    const LimitCycle c =
+        assess_limit_cycle(r, config.gear.structure, st["growth_rate_per_s"].get<double>(),
+                           st["frequency_Hz"].get<double>(), config.criterion);
+    model["limit_cycle"] = {{"measured", c.measured},
+                            {"phase", phase},
+                            {"amplitude_rad", c.amplitude_rad},
+                            {"earlier_amplitude_rad", c.earlier_amplitude_rad},
+                            {"trend_per_s", c.trend_per_s},
+                            {"torque_link_amplitude_nm", c.torque_link_nm},
+                            {"verdict", c.verdict}};
+  }
+}
+
 // One configuration: every model's landing, its CSV and pictures, and the stability verdicts of
 // both phases, all in `out`; returns the summary (without writing it).
 nlohmann::json run_landings(const ShimmyConfig& config, const std::string& out, unsigned threads,
@@ -398,6 +420,7 @@ nlohmann::json run_landings(const ShimmyConfig& config, const std::string& out, 
     runs.push_back(std::move(r));
   }
   print_stability(config, runs, tire, summary);
+  add_limit_cycles(config, runs, summary);
   if (tire) print_tire_uncertainty(config, *tire, threads, summary);
   summary["gear"] = config.gear_name;
   summary["analysis_window_s"] = {runs.front().window_start_s, runs.front().window_end_s};
@@ -514,6 +537,14 @@ void print_scenario_table(const nlohmann::json& scenarios) {
     const nlohmann::json& models = scenarios[n.name]["summary"]["models"];
     for (auto it = models.begin(); it != models.end(); ++it)
       print_energy_row(n.name, it.key(), *it, to_string(n.phase));
+  }
+  std::printf("\nat the end of each analysis window (last 3 periods against the 3 before):\n");
+  for (const NamedScenario& n : named_scenarios()) {
+    if (!scenarios.contains(n.name)) continue;
+    const nlohmann::json& models = scenarios[n.name]["summary"]["models"];
+    for (auto it = models.begin(); it != models.end(); ++it)
+      std::printf("%-13s %-13s %s\n", n.name.c_str(), it.key().c_str(),
+                  (*it)["limit_cycle"]["verdict"].get<std::string>().c_str());
   }
   print_seed_verdict(scenarios);
 }

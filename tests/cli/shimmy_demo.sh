@@ -49,6 +49,21 @@ PY
 grep -q "^large-offset  coupled .* yes .*offset drag$" "$dir/stdout" \
   || fail "no energy row for large-offset: $(tail -15 "$dir/stdout")"
 grep -q "the seed's claim" "$dir/stdout" || fail "no verdict on the seed's claim"
+# The limit cycle of the large offset: its amplitude above the threshold and the torque-link load
+# the strut's spring carries at that amplitude (k_psi x amplitude, the damper adds a few %).
+python3 - "$dir/demo/summary.json" <<'PY' || fail "limit cycle of large-offset"
+import json, sys
+s = json.load(open(sys.argv[1]))["scenarios"]["large-offset"]["summary"]
+c = s["models"]["coupled"]["limit_cycle"]
+k = s["configuration"]["structure"]["torsional_stiffness_nm_per_rad"]
+assert c["measured"] and c["amplitude_rad"] > 1e-3 and "limit cycle" in c["verdict"], c
+assert abs(c["torque_link_amplitude_nm"] - k * c["amplitude_rad"]) < 0.1 * k * c["amplitude_rad"], c
+PY
+# Eigenvalues unstable, simulated growth negative: a limit cycle reached from above, said so.
+"$app" --scenario braked-slide --set scenario.forward_speed_mps=30 --set structure.offset_m=0.5 \
+  --out "$dir/above" > "$dir/above.txt" 2>&1 || fail "30 m/s, 0.5 m run"
+grep -q "^braked-slide  von_schlippe  shimmy: a limit cycle .*reached from above" "$dir/above.txt" \
+  || fail "classical 30 m/s, 0.5 m not reconciled: $(tail -8 "$dir/above.txt")"
 grep -q "margin 1.4" "$dir/stdout" || fail "no classical margin printed: $(cat "$dir/stdout")"
 python3 -c 'import json, sys; assert json.load(open(sys.argv[1]))["gear"] == "default"' \
   "$dir/demo/summary.json" || fail "summary gear name"
