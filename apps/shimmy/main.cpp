@@ -572,6 +572,114 @@ nlohmann::json run_scenarios(const ShimmyConfig& config, const std::vector<std::
   return scenarios;
 }
 
+// The command line (one struct, filled by add_options).
+struct Options {
+  std::string config_path, out = "out/shimmy", gear = "default", tire_path;
+  bool maps = false, print_config = false;
+  int map_size = 0, draws = 300;
+  unsigned threads = 0, seed = 1;
+  std::vector<std::string> overrides, scenarios;
+};
+
+void add_options(CLI::App& app, Options& o) {
+  app.add_option("--config", o.config_path, "JSON configuration (defaults: docs/shimmy.md)")
+      ->check(CLI::ExistingFile);
+  app.add_option("--gear", o.gear,
+                 "named gear the configuration starts from: default (a one-wheel main gear, 80 kN "
+                 "static load, 0.57 m wheel, wheel 0.25 m beside the strut axis, torsional damping "
+                 "245 N m s/rad: 1.4 times what the classical tire needs) or legacy (the same "
+                 "gear with 100 N m s/rad, which shimmies on the classical tire)")
+      ->check(CLI::IsMember({"default", "legacy"}))
+      ->capture_default_str();
+  app.add_option("--out", o.out, "output directory")->capture_default_str();
+  app.add_flag("--map", o.maps, "also draw the stability maps of the configuration");
+  app.add_option("--map-size", o.map_size, "points per map axis (overrides the configuration)")
+      ->check(CLI::Range(2, 1000));
+  app.add_option("--threads", o.threads, "threads for the maps (0: all cores)")
+      ->capture_default_str();
+  app.add_option("--set", o.overrides,
+                 "KEY=VALUE: one configuration value by its JSON name, after --gear and --config "
+                 "(repeatable; e.g. --set structure.offset_m=0.45 --set "
+                 "scenario.forward_speed_mps=58; --print-config lists the keys)")
+      ->expected(1)
+      ->multi_option_policy(CLI::MultiOptionPolicy::TakeAll);
+  std::string scenario_help = "a named scenario (repeatable, or all); by default all of them "
+                              "unless --config or --set is given, which run the configuration "
+                              "as it is:";
+  for (const NamedScenario& n : named_scenarios())
+    scenario_help += "\n  " + n.name + ": " + n.description;
+  app.add_option("--scenario", o.scenarios, scenario_help)
+      ->expected(1)
+      ->multi_option_policy(CLI::MultiOptionPolicy::TakeAll);
+  app.add_flag("--print-config", o.print_config,
+               "print the configuration (after --config and --set) as JSON and exit");
+  app.add_option("--tire", o.tire_path,
+                 "a contensou-identify report (--json): its fitted law is the tire, and a Monte "
+                 "Carlo over its covariance gives the growth rate's 95 % band and P(shimmy)")
+      ->check(CLI::ExistingFile);
+  app.add_option("--draws", o.draws, "Monte Carlo draws for --tire")
+      ->check(CLI::Range(10, 100000))
+      ->capture_default_str();
+  app.add_option("--seed", o.seed, "random seed of the draws")->capture_default_str();
+}
+
+// The report of --tire, its mean law and the Monte Carlo draws.
+TireInput read_tire_input(const Options& o) {
+  TireInput tire;
+  tire.path = o.tire_path;
+  tire.distribution = read_tire_report(o.tire_path);
+  tire.mean = tire_law_coefficients(tire.distribution.mean, tire.distribution.radius_m);
+  try {
+    tire.draws = draw_tire_laws(tire.distribution, o.draws, o.seed);
+  } catch (const InvalidArgument& e) {
+    throw std::runtime_error("--tire " + o.tire_path + ": " + e.what());
+  }
+  return tire;
+}
+
+// The scenarios to run: those named (checked before anything runs), all of them for "all" or by
+// default, none when a configuration is given (--config, --set) without --scenario.
+std::vector<std::string> scenarios_to_run(const Options& o) {
+  std::vector<std::string> names;
+  for (const std::string& n : o.scenarios)
+    if (n != "all") names.push_back(named_scenario(n).name);
+  const bool all = std::find(o.scenarios.begin(), o.scenarios.end(), "all") != o.scenarios.end();
+  if (all || (o.scenarios.empty() && o.config_path.empty() && o.overrides.empty())) {
+    names.clear();
+    for (const NamedScenario& n : named_scenarios()) names.push_back(n.name);
+  }
+  return names;
+}
+
+int run(const Options& o) {
+  ShimmyConfig config;
+  config.gear_name = o.gear;
+  config.gear = gear_config_by_name(o.gear);
+  if (!o.config_path.empty()) config = read_shimmy_config(o.config_path, o.gear);
+  config = apply_overrides(config, o.overrides);
+  if (o.print_config) {
+    std::cout << to_json(config).dump(2) << '\n';
+    return 0;
+  }
+  std::optional<TireInput> tire;
+  if (!o.tire_path.empty()) tire = read_tire_input(o);
+  const std::vector<std::string> names = scenarios_to_run(o);
+  const TireInput* t = tire ? &*tire : nullptr;
+  nlohmann::json summary;
+  if (names.empty()) {
+    summary = run_landings(config, o.out, o.threads, t);
+  } else {
+    summary["scenarios"] = run_scenarios(config, names, o.overrides, o.out, o.threads, t);
+    summary["gear"] = config.gear_name;
+    summary["configuration"] = to_json(config);
+  }
+  if (o.maps) run_maps(config, o.out, o.map_size, o.threads, t, summary);
+  write_file_atomically(o.out + "/summary.json", summary.dump(2) + "\n");
+  std::printf("wrote %s/summary.json, CSV time histories and PNGs%s\n", o.out.c_str(),
+              names.empty() ? "" : " (a folder per scenario)");
+  return 0;
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -579,104 +687,11 @@ int main(int argc, char** argv) {
       "A one-wheel main landing gear through touchdown, sliding and spin-up: shimmy "
       "with coupled, decoupled and von_schlippe (classical string) tire contact (docs/shimmy.md)",
       kName};
-  std::string config_path, out = "out/shimmy", gear = "default";
-  bool maps = false, print_config = false;
-  int map_size = 0;
-  unsigned threads = 0;
-  std::string tire_path;
-  int draws = 300;
-  unsigned seed = 1;
-  app.add_option("--config", config_path, "JSON configuration (defaults: docs/shimmy.md)")
-      ->check(CLI::ExistingFile);
-  app.add_option("--gear", gear,
-                 "named gear the configuration starts from: default (a one-wheel main gear, 80 kN "
-                 "static load, 0.57 m wheel, wheel 0.25 m beside the strut axis, torsional damping "
-                 "245 N m s/rad: 1.4 times what the classical tire needs) or legacy (the same "
-                 "gear with 100 N m s/rad, which shimmies on the classical tire)")
-      ->check(CLI::IsMember({"default", "legacy"}))
-      ->capture_default_str();
-  app.add_option("--out", out, "output directory")->capture_default_str();
-  app.add_flag("--map", maps, "also draw the stability maps of the configuration");
-  app.add_option("--map-size", map_size, "points per map axis (overrides the configuration)")
-      ->check(CLI::Range(2, 1000));
-  app.add_option("--threads", threads, "threads for the maps (0: all cores)")
-      ->capture_default_str();
-  std::vector<std::string> overrides;
-  app.add_option("--set", overrides,
-                 "KEY=VALUE: one configuration value by its JSON name, after --gear and --config "
-                 "(repeatable; e.g. --set structure.offset_m=0.45 --set "
-                 "scenario.forward_speed_mps=58; --print-config lists the keys)")
-      ->expected(1)
-      ->multi_option_policy(CLI::MultiOptionPolicy::TakeAll);
-  std::vector<std::string> scenario_list;
-  std::string scenario_help = "a named scenario (repeatable, or all); by default all of them "
-                              "unless --config or --set is given, which run the configuration "
-                              "as it is:";
-  for (const NamedScenario& n : named_scenarios())
-    scenario_help += "\n  " + n.name + ": " + n.description;
-  app.add_option("--scenario", scenario_list, scenario_help)
-      ->expected(1)
-      ->multi_option_policy(CLI::MultiOptionPolicy::TakeAll);
-  app.add_flag("--print-config", print_config,
-               "print the configuration (after --config and --set) as JSON and exit");
-  app.add_option("--tire", tire_path,
-                 "a contensou-identify report (--json): its fitted law is the tire, and a Monte "
-                 "Carlo over its covariance gives the growth rate's 95 % band and P(shimmy)")
-      ->check(CLI::ExistingFile);
-  app.add_option("--draws", draws, "Monte Carlo draws for --tire")
-      ->check(CLI::Range(10, 100000))
-      ->capture_default_str();
-  app.add_option("--seed", seed, "random seed of the draws")->capture_default_str();
+  Options options;
+  add_options(app, options);
   CLI11_PARSE(app, argc, argv);
   try {
-    ShimmyConfig config;
-    config.gear_name = gear;
-    config.gear = gear_config_by_name(gear);
-    if (!config_path.empty()) config = read_shimmy_config(config_path, gear);
-    config = apply_overrides(config, overrides);
-    if (print_config) {
-      std::cout << to_json(config).dump(2) << '\n';
-      return 0;
-    }
-    std::optional<TireInput> tire;
-    if (!tire_path.empty()) {
-      tire.emplace();
-      tire->path = tire_path;
-      tire->distribution = read_tire_report(tire_path);
-      tire->mean = tire_law_coefficients(tire->distribution.mean, tire->distribution.radius_m);
-      try {
-        tire->draws = draw_tire_laws(tire->distribution, draws, seed);
-      } catch (const InvalidArgument& e) {
-        throw std::runtime_error("--tire " + tire_path + ": " + e.what());
-      }
-    }
-    std::vector<std::string> names;
-    for (const std::string& n : scenario_list) {
-      if (n != "all") {
-        named_scenario(n);  // throws for an unknown name, before anything runs
-        names.push_back(n);
-      }
-    }
-    const bool all = std::find(scenario_list.begin(), scenario_list.end(), "all") !=
-                     scenario_list.end();
-    if (all || (scenario_list.empty() && config_path.empty() && overrides.empty())) {
-      names.clear();
-      for (const NamedScenario& n : named_scenarios()) names.push_back(n.name);
-    }
-    const TireInput* t = tire ? &*tire : nullptr;
-    nlohmann::json summary;
-    if (names.empty()) {
-      summary = run_landings(config, out, threads, t);
-    } else {
-      summary["scenarios"] = run_scenarios(config, names, overrides, out, threads, t);
-      summary["gear"] = config.gear_name;
-      summary["configuration"] = to_json(config);
-    }
-    if (maps) run_maps(config, out, map_size, threads, t, summary);
-    write_file_atomically(out + "/summary.json", summary.dump(2) + "\n");
-    std::printf("wrote %s/summary.json, CSV time histories and PNGs%s\n", out.c_str(),
-                names.empty() ? "" : " (a folder per scenario)");
-    return 0;
+    return run(options);
   } catch (const std::exception& e) {
     std::fprintf(stderr, "%s: %s\n", kName, e.what());
     return 1;
