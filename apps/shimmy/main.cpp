@@ -92,6 +92,7 @@ nlohmann::json report_json(const StabilityReport& r) {
             {"lateral_friction", r.energy.lateral_friction},
             {"lateral_damping", r.energy.lateral_damping},
             {"carcass_lever", r.energy.carcass_lever},
+            {"of_which_fall_of_friction", r.energy.fall_of_friction},
             {"total", r.energy.total()}}}};
 }
 
@@ -492,9 +493,13 @@ void print_energy_row(const std::string& scenario, const std::string& model,
               number(run["frequency_Hz"]), st["growth_rate_per_s"].get<double>(),
               st["mode"].get<std::string>().c_str());
   for (const auto& [name, value] : sources) std::printf(" %10.3g", value);
+  std::printf(" %10.3g", get("of_which_fall_of_friction"));
   double scale = 0.0;
   for (const auto& source : sources) scale += std::abs(source.second);
-  std::printf(" %10.3g  %s\n", get("total"), fed->second > 1e-3 * scale ? fed->first : "-");
+  std::string fed_by = fed->second > 1e-3 * scale ? fed->first : "-";
+  if (fed_by != "-" && get("of_which_fall_of_friction") > 0.5 * fed->second)
+    fed_by += " (the fall of f)";
+  std::printf(" %10.3g  %s\n", get("total"), fed_by.c_str());
 }
 
 // The seed's claim (the coupling of sliding and spin excites shimmy), as the scenarios find it:
@@ -528,10 +533,11 @@ void print_scenario_table(const nlohmann::json& scenarios) {
       "with the energy the\nmode gains per cycle [J] at 1 mrad of torsion or 1 mm of deflection, "
       "from each source (> 0 feeds it, < 0 drains it):\noffset drag -l Fx, the spin torque Mz, the lateral "
       "forces (trail, lateral friction, carcass), damping.\nThe fall of f with slip speed acts "
-      "through the drag and the lateral forces (docs/shimmy.md, 6.3).\n"
-      "%-13s %-13s %6s %9s %8s %9s %-9s %10s %10s %10s %10s %10s  %s\n",
+      "through the drag, spin torque and lateral forces;\n'f(w) part' is their share due to it "
+      "(the same mode with f held at its operating value).\n"
+      "%-13s %-13s %6s %9s %8s %9s %-9s %10s %10s %10s %10s %10s %10s  %s\n",
       "scenario", "model", "shimmy", "growth", "freq[Hz]", "eig.", "mode", "offset", "spin",
-      "lateral", "damping", "total", "fed by");
+      "lateral", "damping", "f(w) part", "total", "fed by");
   for (const NamedScenario& n : named_scenarios()) {
     if (!scenarios.contains(n.name)) continue;
     const nlohmann::json& models = scenarios[n.name]["summary"]["models"];

@@ -226,6 +226,44 @@ OscillationEstimate perturbation_response(const GearModel& model, const QuasiSte
   return analyse_oscillation(t, rate, psi);
 }
 
+// The work per cycle of each term along the mode v (complex amplitudes of the active states,
+// angular frequency w), the contact forces along it from Jc (linear_stability.hpp).
+EnergyPerCycle mode_energy(const GearModel& model, const QuasiSteadyState& q,
+                           const Eigen::Matrix<double, 4, kStateSize>& Jc,
+                           const Eigen::VectorXcd& v, double w) {
+  const auto index_of = [&](int state) {
+    for (std::size_t k = 0; k < q.states.size(); ++k)
+      if (q.states[k] == state) return static_cast<int>(k);
+    return -1;
+  };
+  Eigen::Vector4cd F = Eigen::Vector4cd::Zero();
+  for (std::size_t k = 0; k < q.states.size(); ++k)
+    F += Jc.col(q.states[k]).cast<std::complex<double>>() * v[static_cast<int>(k)];
+  const std::complex<double> psi_dot = v[index_of(kPsiDot)], y_dot = v[index_of(kYDot)];
+  const auto work = [&](std::complex<double> force, std::complex<double> rate) {
+    return std::numbers::pi / w * (force * std::conj(rate)).real();
+  };
+  const GearStructure& g = model.config.structure;
+  EnergyPerCycle e;
+  e.spin_torque = work(F[2], psi_dot);
+  e.trail_lateral_force = work(-g.trail_m * F[1], psi_dot);
+  e.offset_drag = work(-g.offset_m * F[0], psi_dot);
+  e.torsional_damping = work(-g.torsional_damping_nms_per_rad * psi_dot, psi_dot);
+  e.lateral_friction = work(F[3], y_dot);
+  e.lateral_damping = work(-g.lateral_damping_ns_per_m * y_dot, y_dot);
+  if (g.carcass_compliance()) {
+    const double fx0 = contact_state(model, q.mode, q.t, q.x).force.Fx;
+    e.carcass_lever = work(-(q.x[kCarcassY] * F[0] + fx0 * v[index_of(kCarcassY)]), psi_dot);
+  }
+  return e;
+}
+
+// The part of the energy the friction forces and torque do.
+double friction_work(const EnergyPerCycle& e) {
+  return e.spin_torque + e.trail_lateral_force + e.offset_drag + e.lateral_friction +
+         e.carcass_lever;
+}
+
 }  // namespace
 
 StabilityReport assess_stability(const GearModel& model_in, StabilityPhase phase,
@@ -292,27 +330,14 @@ StabilityReport assess_stability(const GearModel& model_in, StabilityPhase phase
     // is not that of a tiny torsion blown up to 1 mrad.
     const double largest = std::max({std::abs(psi) * 1.0, std::abs(y), fore_aft});
     v *= (largest > 1e-300 ? 1e-3 / largest : 1.0);
-    // Complex amplitudes of the contact forces along the mode.
-    Eigen::Vector4cd F = Eigen::Vector4cd::Zero();
-    for (int k = 0; k < n; ++k)
-      F += Jc.col(q.states[static_cast<std::size_t>(k)]).cast<std::complex<double>>() * v[k];
-    const std::complex<double> psi_dot = v[index_of(kPsiDot)], y_dot = v[index_of(kYDot)];
-    const double w = ev.imag();
-    const auto work = [&](std::complex<double> force, std::complex<double> rate) {
-      return std::numbers::pi / w * (force * std::conj(rate)).real();
-    };
-    const GearStructure& g = model.config.structure;
-    rep.energy.spin_torque = work(F[2], psi_dot);
-    rep.energy.trail_lateral_force = work(-g.trail_m * F[1], psi_dot);
-    rep.energy.offset_drag = work(-g.offset_m * F[0], psi_dot);
-    rep.energy.torsional_damping = work(-g.torsional_damping_nms_per_rad * psi_dot, psi_dot);
-    rep.energy.lateral_friction = work(F[3], y_dot);
-    rep.energy.lateral_damping = work(-g.lateral_damping_ns_per_m * y_dot, y_dot);
-    if (g.carcass_compliance()) {
-      const double fx0 = contact_state(model, q.mode, q.t, q.x).force.Fx;
-      rep.energy.carcass_lever =
-          work(-(q.x[kCarcassY] * F[0] + fx0 * v[index_of(kCarcassY)]), psi_dot);
-    }
+    rep.energy = mode_energy(model, q, Jc, v, ev.imag());
+    // The fall of friction with slip speed: the same mode with f held at its operating value.
+    GearModel flat = model;
+    flat.config.tire.friction.static_coefficient = rep.friction;
+    flat.config.tire.friction.kinetic_coefficient = rep.friction;
+    rep.energy.fall_of_friction =
+        friction_work(rep.energy) -
+        friction_work(mode_energy(flat, q, contact_jacobian(flat, q), v, ev.imag()));
   }
   rep.perturbation_growth_rate_per_s = std::numeric_limits<double>::quiet_NaN();
   rep.perturbation_frequency_hz = std::numeric_limits<double>::quiet_NaN();

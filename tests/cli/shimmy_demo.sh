@@ -46,7 +46,7 @@ import json, sys
 models = json.load(open(sys.argv[1]))["scenarios"]["large-offset"]["summary"]["models"]
 assert any(m["shimmy"] and m["growth_rate_per_s"] > 0 for m in models.values()), models
 PY
-grep -q "^large-offset  coupled .* yes .*offset drag$" "$dir/stdout" \
+grep -q "^large-offset  coupled .* yes .*offset drag (the fall of f)$" "$dir/stdout" \
   || fail "no energy row for large-offset: $(tail -15 "$dir/stdout")"
 grep -q "the seed's claim" "$dir/stdout" || fail "no verdict on the seed's claim"
 # The limit cycle of the large offset: its amplitude above the threshold and the torque-link load

@@ -386,3 +386,27 @@ TEST(LinearStability, TwinGearsOffsetLeverIsHalfTheWheelSpacing) {
   EXPECT_EQ(std::count(qt.states.begin(), qt.states.end(), kSpin2), 1);
   EXPECT_NEAR(qt.x[kSpin2], qt.x[kSpin], 1e-6 * qt.x[kSpin]);  // symmetric at l = 0
 }
+
+// The fall of friction with slip speed, split off the friction terms: zero when f is constant;
+// with the wheel far beside the strut axis (0.45 m, braked at 58 m/s) it is what feeds the
+// torsion: the friction terms without it would drain energy.
+TEST(LinearStability, FallOfFrictionIsWhatFeedsTheLargeOffset) {
+  GearConfig c;
+  c.structure.offset_m = 0.45;
+  c.scenario.forward_speed_mps = 58.0;
+  StabilityOptions o;
+  o.simulate_perturbation = false;
+  const StabilityReport r =
+      assess_stability(make_gear_model(c, ContactModel::coupled), StabilityPhase::braked_slide, o);
+  ASSERT_GT(r.growth_rate_per_s, 0.0);
+  const EnergyPerCycle& e = r.energy;
+  const double friction = e.spin_torque + e.trail_lateral_force + e.offset_drag + e.lateral_friction;
+  EXPECT_GT(e.fall_of_friction, 0.0);
+  EXPECT_LT(friction - e.fall_of_friction, 0.0) << friction << " " << e.fall_of_friction;
+  GearConfig flat = c;
+  flat.tire.friction.kinetic_coefficient = flat.tire.friction.static_coefficient;
+  const StabilityReport q =
+      assess_stability(make_gear_model(flat, ContactModel::coupled), StabilityPhase::braked_slide, o);
+  EXPECT_NEAR(q.energy.fall_of_friction, 0.0, 1e-9);
+  EXPECT_LT(q.growth_rate_per_s, 0.0);  // constant f: sliding friction damps
+}

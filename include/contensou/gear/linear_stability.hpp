@@ -63,6 +63,9 @@ struct EnergyPerCycle {
   // Carcass compliance only (GearStructure::carcass_*): the drag's lever grows by e_y,
   // -(e_y Fx)' = -(e_y0 dFx + Fx0 de_y) on psi'.
   double carcass_lever = 0.0;
+  // Of the friction terms above, the part due to the fall of friction with slip speed: their sum
+  // less the same with f held at its operating value (df/dw = 0). Not a term of total().
+  double fall_of_friction = 0.0;
   double total() const {
     return spin_torque + trail_lateral_force + offset_drag + torsional_damping + lateral_friction +
            lateral_damping + carcass_lever;
