@@ -118,6 +118,19 @@ class ExactLaw(_core._ExactLaw):
         super().__init__(model, tol, _check_threads(threads))
 
 
+def _law_on_arrays(loop, law, vx: ArrayLike, vy: ArrayLike, omega: ArrayLike, jacobian: bool,
+                   threads: int) -> Union[np.ndarray, tuple[np.ndarray, np.ndarray]]:
+    """A compiled law loop over broadcast (vx, vy, omega): (..., 3) and the (..., 3, 3) Jacobian."""
+    shape, (x, y, w) = _flatten(vx, vy, omega)
+    n = int(np.prod(shape, dtype=np.int64))
+    force = np.empty((n, 3))
+    jac = np.empty((n, 3, 3)) if jacobian else None
+    loop(law, x, y, w, force, jac, _check_threads(threads))
+    if jac is None:
+        return force.reshape(shape + (3,))
+    return force.reshape(shape + (3,)), jac.reshape(shape + (3, 3))
+
+
 @overload
 def exact_law_resultants(
     law: ExactLaw, vx: ArrayLike, vy: ArrayLike, omega: ArrayLike, *,
@@ -151,14 +164,7 @@ def exact_law_resultants(
     """The exact law at every (vx, vy, omega) (broadcast): (..., 3), and with ``jacobian=True``
     also d(Fx, Fy, Mz)/d(vx, vy, omega) as (..., 3, 3) (the exact derivative of the law; at
     v = 0 and omega = 0 its limits). Zero at rest."""
-    shape, (x, y, w) = _flatten(vx, vy, omega)
-    n = int(np.prod(shape, dtype=np.int64))
-    force = np.empty((n, 3))
-    jac = np.empty((n, 3, 3)) if jacobian else None
-    _core._exact_law_loop(law, x, y, w, force, jac, _check_threads(threads))
-    if jac is None:
-        return force.reshape(shape + (3,))
-    return force.reshape(shape + (3,)), jac.reshape(shape + (3, 3))
+    return _law_on_arrays(_core._exact_law_loop, law, vx, vy, omega, jacobian, threads)
 
 
 def fractional_resultants(
@@ -172,14 +178,7 @@ def fractional_resultants(
 ) -> Union[np.ndarray, tuple[np.ndarray, np.ndarray]]:
     """The fractional law at every (vx, vy, omega) (broadcast): (..., 3), and with
     ``jacobian=True`` also d(Fx, Fy, Mz)/d(vx, vy, omega) as (..., 3, 3) (analytic)."""
-    shape, (x, y, w) = _flatten(vx, vy, omega)
-    n = int(np.prod(shape, dtype=np.int64))
-    force = np.empty((n, 3))
-    jac = np.empty((n, 3, 3)) if jacobian else None
-    _core._fractional_loop(law, x, y, w, force, jac, _check_threads(threads))
-    if jac is None:
-        return force.reshape(shape + (3,))
-    return force.reshape(shape + (3,)), jac.reshape(shape + (3, 3))
+    return _law_on_arrays(_core._fractional_loop, law, vx, vy, omega, jacobian, threads)
 
 
 def shape_values(profile: PressureProfile, rho: ArrayLike) -> np.ndarray:

@@ -55,6 +55,14 @@ inline void check_lengths(const InArray& vx, const InArray& vy, const InArray& o
                                   " points do not broadcast to " + std::to_string(n));
 }
 
+// The outputs of a law loop: force (n, 3) and, when given, jacobian (n, 3, 3).
+inline void check_law_outputs(const OutArray2& force, const OutArray3& jacobian, std::size_t n) {
+  if (force.shape(1) != 3 || (jacobian.is_valid() && (jacobian.shape(0) != n ||
+                                                      jacobian.shape(1) != 3 ||
+                                                      jacobian.shape(2) != 3)))
+    throw std::invalid_argument("outputs must be (n, 3) and (n, 3, 3)");
+}
+
 // Runs body(begin, end) over [0, n) in `threads` contiguous chunks (0: one per core). An
 // exception in a chunk stops that chunk; the one of the lowest chunk is rethrown after all have
 // joined, so the first bad point is reported whatever the number of threads. Call with the GIL

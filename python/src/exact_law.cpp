@@ -26,9 +26,7 @@ void exact_law_loop(const ExactLaw& law, InArray vx, InArray vy, InArray omega, 
   const std::size_t n = force.shape(0);
   check_lengths(vx, vy, omega, n);
   const bool with_jacobian = jacobian.is_valid();
-  if (force.shape(1) != 3 || (with_jacobian && (jacobian.shape(0) != n || jacobian.shape(1) != 3 ||
-                                                jacobian.shape(2) != 3)))
-    throw std::invalid_argument("outputs must be (n, 3) and (n, 3, 3)");
+  check_law_outputs(force, jacobian, n);
   double* F = force.data();
   double* J = with_jacobian ? jacobian.data() : nullptr;
   const Strided x(vx), y(vy), w(omega);
