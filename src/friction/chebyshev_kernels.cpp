@@ -22,6 +22,7 @@ const KernelTable& kernels() {
     }
     if (__builtin_cpu_supports("avx2") && __builtin_cpu_supports("fma")) {
       avx2::register_kernels(t);
+      avx2::register_blocked_kernels(t);
       return t;
     }
 #endif

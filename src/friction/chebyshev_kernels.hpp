@@ -14,6 +14,8 @@ using KernelTable = std::array<std::array<std::array<ChebyshevKernel, 2>, 5>, 2>
 #if CONTENSOU_HAVE_AVX2_KERNELS
 namespace avx2 {
 void register_kernels(KernelTable& table);
+// The slip-speed table's kernels with slopes in register-sized blocks (16 ymm registers).
+void register_blocked_kernels(KernelTable& table);
 }  // namespace avx2
 namespace avx512 {
 void register_kernels(KernelTable& table);
