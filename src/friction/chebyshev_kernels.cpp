@@ -22,6 +22,7 @@ const KernelTable& kernels() {
     }
     if (__builtin_cpu_supports("avx2") && __builtin_cpu_supports("fma")) {
       avx2::register_kernels(t);
+      avx2::register_blocked_kernels(t);
       return t;
     }
 #endif
@@ -39,6 +40,22 @@ ChebyshevKernel chebyshev_kernel(int functions, int degree, bool slope) {
                                                                       : -1;
   if (which < 0 || degree < 8 || degree > 16 || degree % 2) return nullptr;
   return kernels()[which][(degree - 8) / 2][slope ? 1 : 0];
+}
+
+SlipSpeedKernel slip_speed_kernel(int degree) {
+  static const FallingTable table = [] {
+    FallingTable t{};
+#if CONTENSOU_HAVE_AVX2_KERNELS
+    // AVX-512 keeps the generic path: its wide kernel holds all 54 sums in registers.
+    if (!(__builtin_cpu_supports("avx512f") && __builtin_cpu_supports("avx512dq") &&
+          __builtin_cpu_supports("avx512vl")) &&
+        __builtin_cpu_supports("avx2") && __builtin_cpu_supports("fma"))
+      avx2::register_falling_kernels(t);
+#endif
+    return t;
+  }();
+  if (degree < 8 || degree > 16 || degree % 2) return nullptr;
+  return table[(degree - 8) / 2];
 }
 
 }  // namespace contensou::detail

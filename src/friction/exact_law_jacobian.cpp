@@ -11,10 +11,12 @@ namespace contensou {
 
 namespace {
 
-// A value with its gradient in the three scaled velocities.
+// A value with its gradient in the three scaled velocities. No default values: the six
+// functions' array is written whole by friction_functions, and zeroing it first cost a
+// rep stos per call.
 struct Scalar {
-  double a = 0.0;
-  std::array<double, 3> d{};
+  double a;
+  std::array<double, 3> d;
 };
 
 Scalar operator*(const Scalar& x, const Scalar& y) {

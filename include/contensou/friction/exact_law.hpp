@@ -178,6 +178,13 @@ inline double octave_point(int j, double x) {
   return c * (1.0 + u) / (1.0 - u);
 }
 
+// The falling part's six functions with their derivatives in t and z from the coefficients c of
+// a piece (t at x on it, x' = dx/dt; z at xz in its octave, xz' = dxz/dz), in one kernel where
+// the CPU's instruction set has one (AVX2 without AVX-512; chebyshev_kernels.cpp), else null.
+using SlipSpeedKernel = void (*)(const double* c, double x, double dxdt, double xz, double dxzdz,
+                                 double* g, double* gt, double* gz);
+SlipSpeedKernel slip_speed_kernel(int degree);
+
 // The falling part's six functions at (t, z) and, if Slope, their derivatives in t and z.
 template <bool Slope>
 void falling_values(const SlipSpeedTable& s, double t, double z, double* g, double* gt,
@@ -189,6 +196,14 @@ void falling_values(const SlipSpeedTable& s, double t, double z, double* g, doub
   if constexpr (Slope)
     for (int i = 0; i < kLawFunctions; ++i) gt[i] = gz[i] = 0.0;
   if (j < 0) return;
+  if constexpr (Slope) {
+    if (const SlipSpeedKernel kernel = slip_speed_kernel(s.octaves.front().degree)) {
+      double xt, dxdt;
+      const double* c = coefficients_at(s.octaves.front(), s.octaves[j], t, xt, dxdt);
+      kernel(c, xt, dxdt, x, dxdz, g, gt, gz);
+      return;
+    }
+  }
   double B[M], dB[M], T[NZ + 1], D[NZ + 1];
   // The pieces in t are those of the first octave; every octave holds its coefficients.
   if constexpr (Slope)
