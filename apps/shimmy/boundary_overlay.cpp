@@ -5,8 +5,8 @@
 #include <map>
 #include <sstream>
 
-#include "contensou/gear/linear_stability.hpp"
 #include "axis_label.hpp"
+#include "contensou/gear/linear_stability.hpp"
 #include "gnuplot.hpp"
 
 namespace contensou::app {
@@ -25,9 +25,9 @@ std::string feeding_source(const GearModel& model, StabilityPhase phase) {
       {model.contact == ContactModel::von_schlippe ? "aligning torque" : "spin torque",
        e.spin_torque},
       {"lateral forces", e.trail_lateral_force + e.lateral_friction + e.carcass_lever}};
-  const auto best = std::max_element(sources.begin(), sources.end(), [](const auto& a, const auto& b) {
-    return a.second < b.second;
-  });
+  const auto best =
+      std::max_element(sources.begin(), sources.end(),
+                       [](const auto& a, const auto& b) { return a.second < b.second; });
   return best->second > 0.0 ? best->first : "";
 }
 
@@ -80,13 +80,14 @@ nlohmann::json write_overlay(const std::string& dir, const std::vector<Stability
     const long unstable = std::count_if(m.cells.begin(), m.cells.end(),
                                         [](const MapCell& c) { return c.valid && c.shimmy; });
     std::string source;
-    if (const MapCell* c = central_cell(m, [](const MapCell& cell) { return cell.valid && cell.shimmy; })) {
+    if (const MapCell* c =
+            central_cell(m, [](const MapCell& cell) { return cell.valid && cell.shimmy; })) {
       GearModel model = model_of(m.contact);
       *gear_parameter(model.config, m.x.parameter) = c->x;
       *gear_parameter(model.config, m.y.parameter) = c->y;
       source = feeding_source(model, m.phase);
-      labels << "set label " << k + 1 << " \"" << to_string(m.contact) << " unstable: "
-             << (source.empty() ? "?" : source) << "\" at " << c->x << "," << c->y
+      labels << "set label " << k + 1 << " \"" << to_string(m.contact)
+             << " unstable: " << (source.empty() ? "?" : source) << "\" at " << c->x << "," << c->y
              << " front center tc rgb '" << colour << "' offset 0,0.8 point pt 7 ps 1 lc rgb '"
              << colour << "'\n";
     }
@@ -99,9 +100,8 @@ nlohmann::json write_overlay(const std::string& dir, const std::vector<Stability
       plots << "NaN";
     plots << " with points pt 7 ps 0.5 lc rgb '" << colour << "' title '" << to_string(m.contact)
           << ": unstable in " << unstable << " of " << m.cells.size() << " cells'";
-    summary["models"][to_string(m.contact)] = {{"unstable_cells", unstable},
-                                               {"cells", m.cells.size()},
-                                               {"fed_by", source}};
+    summary["models"][to_string(m.contact)] = {
+        {"unstable_cells", unstable}, {"cells", m.cells.size()}, {"fed_by", source}};
   }
   // The region where every model is stable, labelled at its centre.
   const auto all_stable = [&](const MapCell& c) {

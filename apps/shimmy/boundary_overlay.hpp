@@ -22,9 +22,9 @@ std::string feeding_source(const GearModel& model, StabilityPhase phase);
 // models, writes overlay_<x>_<y>_<phase>.png (and .gp) in `dir`, reading the maps' boundary
 // CSVs (base names in `bases`, parallel to `maps`); `model_of(contact)` gives the model whose
 // parameters the maps varied. Returns a summary per overlay.
-nlohmann::json write_boundary_overlays(
-    const std::string& dir, const std::vector<StabilityMap>& maps,
-    const std::vector<std::string>& bases,
-    const std::function<GearModel(ContactModel)>& model_of);
+nlohmann::json write_boundary_overlays(const std::string& dir,
+                                       const std::vector<StabilityMap>& maps,
+                                       const std::vector<std::string>& bases,
+                                       const std::function<GearModel(ContactModel)>& model_of);
 
 }  // namespace contensou::app

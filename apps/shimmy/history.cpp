@@ -47,9 +47,9 @@ std::vector<double> history_row(const LandingSample& s) {
   const ContactState& c = s.contact;
   std::vector<double> row{s.t};
   for (int i = 0; i < kStateSize; ++i) row.push_back(s.x[i]);
-  for (double v : {c.load_n, c.patch_radius_m, c.slip.vx, c.slip.vy, c.slip.omega, c.slip_ratio,
-                   c.friction, c.force.Fx, c.force.Fy, c.force.Mz, c.brake_torque_nm,
-                   s.rolling ? 1.0 : 0.0})
+  for (double v :
+       {c.load_n, c.patch_radius_m, c.slip.vx, c.slip.vy, c.slip.omega, c.slip_ratio, c.friction,
+        c.force.Fx, c.force.Fy, c.force.Mz, c.brake_torque_nm, s.rolling ? 1.0 : 0.0})
     row.push_back(v);
   return row;
 }

@@ -69,7 +69,8 @@ std::string history_plot_script(const HistoryPanel& panel, const std::vector<Lan
      << "set multiplot layout 1," << std::max<std::size_t>(runs.size(), 1) << " title \""
      << panel_axis_label(panel)
      << "\\ngrey band: the analysis window, where growth rate and frequency are measured\"\n"
-     << "set xlabel '" << "time t [s]'\nset ylabel '" << panel_axis_label(panel) << "'\n"
+     << "set xlabel '"
+     << "time t [s]'\nset ylabel '" << panel_axis_label(panel) << "'\n"
      << "set yrange [" << lo << ":" << hi << "]\nset grid\nset key outside below horizontal\n";
   for (const LandingRun& r : runs) {
     const std::string model = to_string(r.contact);

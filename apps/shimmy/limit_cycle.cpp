@@ -16,8 +16,8 @@ std::pair<double, double> half_swings(const LandingRun& run, const GearStructure
   for (const LandingSample& s : run.samples) {
     if (s.t < from || s.t > to) continue;
     const double psi = s.x[kPsi];
-    const double moment = g.torsional_stiffness_nm_per_rad * psi +
-                          g.torsional_damping_nms_per_rad * s.x[kPsiDot];
+    const double moment =
+        g.torsional_stiffness_nm_per_rad * psi + g.torsional_damping_nms_per_rad * s.x[kPsiDot];
     lo = std::min(lo, psi);
     hi = std::max(hi, psi);
     mlo = std::min(mlo, moment);
@@ -32,12 +32,12 @@ std::string describe(const LimitCycle& c, double eigen_growth, const ShimmyCrite
   const bool unstable = eigen_growth > 0.0, above = c.amplitude_rad > k.amplitude_threshold_rad;
   const bool steady = std::abs(c.trend_per_s) <= 0.5;
   if (unstable && above && steady)
-    std::snprintf(buf, sizeof buf,
-                  "shimmy: a limit cycle of +-%.3g rad (torque link +-%.3g N m)%s", c.amplitude_rad,
-                  c.torque_link_nm,
+    std::snprintf(buf, sizeof buf, "shimmy: a limit cycle of +-%.3g rad (torque link +-%.3g N m)%s",
+                  c.amplitude_rad, c.torque_link_nm,
                   c.trend_per_s < 0 ? ", reached from above: the spin-up left a larger swing" : "");
   else if (unstable && above)
-    std::snprintf(buf, sizeof buf, "shimmy: %s at +-%.3g rad (trend %+.2f 1/s; torque link +-%.3g N m)",
+    std::snprintf(buf, sizeof buf,
+                  "shimmy: %s at +-%.3g rad (trend %+.2f 1/s; torque link +-%.3g N m)",
                   c.trend_per_s > 0 ? "still growing" : "settling toward a limit cycle",
                   c.amplitude_rad, c.trend_per_s, c.torque_link_nm);
   else if (unstable)

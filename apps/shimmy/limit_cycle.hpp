@@ -10,12 +10,12 @@
 namespace contensou::app {
 
 struct LimitCycle {
-  bool measured = false;           // the window holds at least six periods
-  double amplitude_rad = 0.0;      // half the psi swing over the window's last 3 periods
+  bool measured = false;               // the window holds at least six periods
+  double amplitude_rad = 0.0;          // half the psi swing over the window's last 3 periods
   double earlier_amplitude_rad = 0.0;  // over the 3 periods before
-  double trend_per_s = 0.0;        // ln(amplitude / earlier) / (3 periods)
-  double torque_link_nm = 0.0;     // half the swing of k_psi psi + c_psi psi' over the last 3
-  std::string verdict;             // in words; reconciles simulation and eigenvalues
+  double trend_per_s = 0.0;            // ln(amplitude / earlier) / (3 periods)
+  double torque_link_nm = 0.0;         // half the swing of k_psi psi + c_psi psi' over the last 3
+  std::string verdict;                 // in words; reconciles simulation and eigenvalues
 };
 
 // `eigen_growth_per_s` and `frequency_hz` are the linearisation's (its dominant oscillatory

@@ -12,11 +12,11 @@
 #include <optional>
 #include <sstream>
 
+#include "axis_label.hpp"
+#include "boundary_overlay.hpp"
 #include "config.hpp"
 #include "contensou/friction/error.hpp"
 #include "gnuplot.hpp"
-#include "axis_label.hpp"
-#include "boundary_overlay.hpp"
 #include "history_plots.hpp"
 #include "limit_cycle.hpp"
 #include "overrides.hpp"
@@ -191,12 +191,12 @@ void progress_bar(const std::string& label, int done, int total) {
   std::fflush(stderr);
 }
 
-
 // The map's axes and ranges, its coloured column where the cell is valid, and the cells it could
 // not compute as black crosses counted in the key (gnuplot, columns by their CSV names).
-std::string map_plot_body(const StabilityMap& m, const std::string& base, const std::string& value) {
-  const long invalid = std::count_if(m.cells.begin(), m.cells.end(),
-                                     [](const MapCell& c) { return !c.valid; });
+std::string map_plot_body(const StabilityMap& m, const std::string& base,
+                          const std::string& value) {
+  const long invalid =
+      std::count_if(m.cells.begin(), m.cells.end(), [](const MapCell& c) { return !c.valid; });
   const std::string xy = "\"" + m.x.parameter + "\":\"" + m.y.parameter + "\"";
   std::ostringstream gp;
   gp << "set datafile separator ','\nset datafile columnheaders\n"
@@ -207,8 +207,8 @@ std::string map_plot_body(const StabilityMap& m, const std::string& base, const 
      << "\") : NaN) with image notitle";
   if (invalid > 0)
     gp << ", '' using \"" << m.x.parameter << "\":(column(\"valid\") > 0 ? NaN : column(\""
-       << m.y.parameter << "\")) with points pt 2 ps 0.8 lc rgb 'black' title '"
-       << invalid << " of " << m.cells.size()
+       << m.y.parameter << "\")) with points pt 2 ps 0.8 lc rgb 'black' title '" << invalid
+       << " of " << m.cells.size()
        << " cells not computed (brake short of its target slip or solve failed: CSV column "
           "error)'";
   return gp.str();
@@ -239,7 +239,8 @@ nlohmann::json write_map(const std::string& dir, const StabilityMap& m) {
       for (const auto& [di, dj] : {std::pair{1, 0}, std::pair{0, 1}}) {
         if (i + di >= m.x.points || j + dj >= m.y.points) continue;
         const MapCell& d = m.cells[static_cast<std::size_t>((j + dj) * m.x.points + i + di)];
-        if (c.valid && d.valid && d.shimmy != c.shimmy) boundary << 0.5 * (c.x + d.x) << ',' << 0.5 * (c.y + d.y) << '\n';
+        if (c.valid && d.valid && d.shimmy != c.shimmy)
+          boundary << 0.5 * (c.x + d.x) << ',' << 0.5 * (c.y + d.y) << '\n';
       }
     }
     csv << '\n';  // gnuplot reads blank-line-separated rows as a grid
@@ -290,8 +291,8 @@ nlohmann::json write_probability_map(const std::string& dir, const StabilityMap&
   write_file_atomically(dir + "/" + base + ".csv", csv.str());
   std::ostringstream gp;
   gp << "set terminal pngcairo noenhanced size 760,620 font ',10'\nset output '" << base
-     << ".png'\nset title '" << to_string(m.contact) << ", "
-     << to_string(m.phase) << ": probability of shimmy over the tire report draws'\n"
+     << ".png'\nset title '" << to_string(m.contact) << ", " << to_string(m.phase)
+     << ": probability of shimmy over the tire report draws'\n"
      << "set palette defined (0 '#f7f7f7', 0.5 '#f4a582', 1 '#b2182b')\nset cbrange [0:1]\n"
      << "set cblabel 'probability of shimmy'\n"
      << map_plot_body(m, base, "shimmy_probability") << "\n";
@@ -435,37 +436,37 @@ void run_maps(const ShimmyConfig& config, const std::string& out, int map_size, 
               const TireInput* tire, nlohmann::json& summary) {
   std::vector<StabilityMap> linear_maps;
   std::vector<std::string> bases;
-    for (const MapSpec& spec : config.maps) {
-      MapAxis x = spec.x, y = spec.y;
-      if (map_size > 0) x.points = y.points = map_size;
-      for (ContactModel cm : config.models) {
-        const GearModel model = gear_model(config, cm, tire);
-        const std::string label = std::string(to_string(cm)) + " " + short_name(x.parameter) +
-                                  " x " + short_name(y.parameter);
-        const auto bar = [&](int done, int total) { progress_bar(label, done, total); };
-        const StabilityMap m =
-            spec.method == "simulation"
-                ? stability_map(model, x, y, config.solver, config.criterion, threads, bar)
-                : linear_stability_map(model, x, y, spec.phase, threads, bar);
-        summary["maps"].push_back(write_map(out, m));
-        summary["maps"].back()["model"] = to_string(cm);
-        bases.push_back(summary["maps"].back()["csv"].get<std::string>());
-        bases.back().erase(bases.back().size() - 4);  // ".csv"
-        linear_maps.push_back(m);
-        if (tire && cm == ContactModel::coupled && spec.method != "simulation") {
-          // A draw per cell costs a linearisation: at most 25 x 25 cells unless --map-size.
-          MapAxis px = x, py = y;
-          if (map_size <= 0) {
-            px.points = std::min(px.points, 25);
-            py.points = std::min(py.points, 25);
-          }
-          const StabilityMap p = probability_map(
-              make_gear_model(config.gear, cm), px, py, spec.phase, tire->draws.draws, threads,
-              [&](int done, int total) { progress_bar("P(shimmy) " + label, done, total); });
-          summary["probability_maps"].push_back(write_probability_map(out, p));
+  for (const MapSpec& spec : config.maps) {
+    MapAxis x = spec.x, y = spec.y;
+    if (map_size > 0) x.points = y.points = map_size;
+    for (ContactModel cm : config.models) {
+      const GearModel model = gear_model(config, cm, tire);
+      const std::string label = std::string(to_string(cm)) + " " + short_name(x.parameter) + " x " +
+                                short_name(y.parameter);
+      const auto bar = [&](int done, int total) { progress_bar(label, done, total); };
+      const StabilityMap m =
+          spec.method == "simulation"
+              ? stability_map(model, x, y, config.solver, config.criterion, threads, bar)
+              : linear_stability_map(model, x, y, spec.phase, threads, bar);
+      summary["maps"].push_back(write_map(out, m));
+      summary["maps"].back()["model"] = to_string(cm);
+      bases.push_back(summary["maps"].back()["csv"].get<std::string>());
+      bases.back().erase(bases.back().size() - 4);  // ".csv"
+      linear_maps.push_back(m);
+      if (tire && cm == ContactModel::coupled && spec.method != "simulation") {
+        // A draw per cell costs a linearisation: at most 25 x 25 cells unless --map-size.
+        MapAxis px = x, py = y;
+        if (map_size <= 0) {
+          px.points = std::min(px.points, 25);
+          py.points = std::min(py.points, 25);
         }
+        const StabilityMap p = probability_map(
+            make_gear_model(config.gear, cm), px, py, spec.phase, tire->draws.draws, threads,
+            [&](int done, int total) { progress_bar("P(shimmy) " + label, done, total); });
+        summary["probability_maps"].push_back(write_probability_map(out, p));
       }
     }
+  }
   summary["overlays"] = write_boundary_overlays(
       out, linear_maps, bases, [&](ContactModel cm) { return gear_model(config, cm, tire); });
 }
@@ -483,8 +484,9 @@ void print_energy_row(const std::string& scenario, const std::string& model,
       {"lateral forces",
        get("trail_lateral_force") + get("lateral_friction") + get("carcass_lever")},
       {"damping", get("torsional_damping") + get("lateral_damping")}};
-  const auto fed = std::max_element(sources.begin(), sources.end(),
-                                    [](const auto& a, const auto& b) { return a.second < b.second; });
+  const auto fed =
+      std::max_element(sources.begin(), sources.end(),
+                       [](const auto& a, const auto& b) { return a.second < b.second; });
   const auto number = [](const nlohmann::json& v) {
     return v.is_number() ? v.get<double>() : std::nan("");
   };
@@ -531,7 +533,8 @@ void print_scenario_table(const nlohmann::json& scenarios) {
       "\nsummary: the simulated landing (shimmy, growth and frequency on the analysis window) "
       "and the\nlinearisation about the scenario's phase (eig. growth, the mode it moves most), "
       "with the energy the\nmode gains per cycle [J] at 1 mrad of torsion or 1 mm of deflection, "
-      "from each source (> 0 feeds it, < 0 drains it):\noffset drag -l Fx, the spin torque Mz, the lateral "
+      "from each source (> 0 feeds it, < 0 drains it):\noffset drag -l Fx, the spin torque Mz, the "
+      "lateral "
       "forces (trail, lateral friction, carcass), damping.\nThe fall of f with slip speed acts "
       "through the drag, spin torque and lateral forces;\n'f(w) part' is their share due to it "
       "(the same mode with f held at its operating value).\n"
@@ -609,9 +612,10 @@ void add_options(CLI::App& app, Options& o) {
                  "scenario.forward_speed_mps=58; --print-config lists the keys)")
       ->expected(1)
       ->multi_option_policy(CLI::MultiOptionPolicy::TakeAll);
-  std::string scenario_help = "a named scenario (repeatable, or all); by default all of them "
-                              "unless --config or --set is given, which run the configuration "
-                              "as it is:";
+  std::string scenario_help =
+      "a named scenario (repeatable, or all); by default all of them "
+      "unless --config or --set is given, which run the configuration "
+      "as it is:";
   for (const NamedScenario& n : named_scenarios())
     scenario_help += "\n  " + n.name + ": " + n.description;
   app.add_option("--scenario", o.scenarios, scenario_help)

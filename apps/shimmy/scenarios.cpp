@@ -33,8 +33,8 @@ std::string scenario_names() {
 const NamedScenario& named_scenario(const std::string& name) {
   for (const NamedScenario& n : named_scenarios())
     if (n.name == name) return n;
-  throw std::runtime_error("--scenario " + name + ": unknown scenario (known: " +
-                           scenario_names() + ", all)");
+  throw std::runtime_error("--scenario " + name + ": unknown scenario (known: " + scenario_names() +
+                           ", all)");
 }
 
 }  // namespace contensou::app

@@ -57,9 +57,9 @@ inline void check_lengths(const InArray& vx, const InArray& vy, const InArray& o
 
 // The outputs of a law loop: force (n, 3) and, when given, jacobian (n, 3, 3).
 inline void check_law_outputs(const OutArray2& force, const OutArray3& jacobian, std::size_t n) {
-  if (force.shape(1) != 3 || (jacobian.is_valid() && (jacobian.shape(0) != n ||
-                                                      jacobian.shape(1) != 3 ||
-                                                      jacobian.shape(2) != 3)))
+  if (force.shape(1) != 3 ||
+      (jacobian.is_valid() &&
+       (jacobian.shape(0) != n || jacobian.shape(1) != 3 || jacobian.shape(2) != 3)))
     throw std::invalid_argument("outputs must be (n, 3) and (n, 3, 3)");
 }
 

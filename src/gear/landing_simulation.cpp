@@ -109,8 +109,8 @@ int roots(sunrealtype t, N_Vector y, sunrealtype* g, void* data) {
       V;
   g[kLoadOnset] = t - s.touchdown_time_s;
   g[kFullLoad] = t - (s.touchdown_time_s + s.load_ramp_s);
-  const bool spinning_up = switching ? p.mode.loaded && !p.mode.rolling
-                                     : p.mode.loaded && !p.string_spun_up;
+  const bool spinning_up =
+      switching ? p.mode.loaded && !p.mode.rolling : p.mode.loaded && !p.string_spun_up;
   g[kSpinUp] = spinning_up ? ratio - s.rolling_slip : 1.0;
   g[kSliding] = switching && p.mode.rolling ? ratio - s.sliding_slip : -1.0;
   g[kBrakeOn] = s.braking ? t - s.brake_on_s : -1.0;

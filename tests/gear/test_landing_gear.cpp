@@ -437,7 +437,8 @@ TEST(LandingGear, StringTireSpinsUpFromRestLikeTheSlidingModels) {
   o.record = true;
   GearConfig c;
   c.scenario.braking = false;
-  const LandingRun string_tire = simulate_landing(make_gear_model(c, ContactModel::von_schlippe), o);
+  const LandingRun string_tire =
+      simulate_landing(make_gear_model(c, ContactModel::von_schlippe), o);
   const LandingRun coupled = simulate_landing(make_gear_model(c, ContactModel::coupled), o);
   ASSERT_TRUE(string_tire.spin_up_s && coupled.spin_up_s);
   EXPECT_NEAR(*string_tire.spin_up_s, *coupled.spin_up_s, 0.05 * *coupled.spin_up_s);

@@ -400,13 +400,14 @@ TEST(LinearStability, FallOfFrictionIsWhatFeedsTheLargeOffset) {
       assess_stability(make_gear_model(c, ContactModel::coupled), StabilityPhase::braked_slide, o);
   ASSERT_GT(r.growth_rate_per_s, 0.0);
   const EnergyPerCycle& e = r.energy;
-  const double friction = e.spin_torque + e.trail_lateral_force + e.offset_drag + e.lateral_friction;
+  const double friction =
+      e.spin_torque + e.trail_lateral_force + e.offset_drag + e.lateral_friction;
   EXPECT_GT(e.fall_of_friction, 0.0);
   EXPECT_LT(friction - e.fall_of_friction, 0.0) << friction << " " << e.fall_of_friction;
   GearConfig flat = c;
   flat.tire.friction.kinetic_coefficient = flat.tire.friction.static_coefficient;
-  const StabilityReport q =
-      assess_stability(make_gear_model(flat, ContactModel::coupled), StabilityPhase::braked_slide, o);
+  const StabilityReport q = assess_stability(make_gear_model(flat, ContactModel::coupled),
+                                             StabilityPhase::braked_slide, o);
   EXPECT_NEAR(q.energy.fall_of_friction, 0.0, 1e-9);
   EXPECT_LT(q.growth_rate_per_s, 0.0);  // constant f: sliding friction damps
 }

@@ -65,7 +65,8 @@ struct LandingRun {
   ContactModel contact = ContactModel::coupled;
   std::vector<LandingSample> samples;  // empty unless options.record
   std::vector<LandingEvent> events;
-  std::optional<double> spin_up_s;  // touchdown to the end of spin-up (slip ratio below rolling_slip)
+  std::optional<double>
+      spin_up_s;  // touchdown to the end of spin-up (slip ratio below rolling_slip)
   double window_start_s = 0.0, window_end_s = 0.0;
   ShimmyMetrics metrics;
   long steps = 0;
