@@ -10,7 +10,8 @@ if [ "${1:-}" = "--sanitize" ]; then
   dir=build-asan
   # -O1 -g1 (line tables for the reports): half the compile time of -O2 -g, same findings.
   cmake -S . -B "$dir" -G Ninja -DCMAKE_BUILD_TYPE=Debug -DCMAKE_CXX_FLAGS_DEBUG="-O1 -g1" \
-    -DCONTENSOU_SANITIZE=ON -DCONTENSOU_WERROR=ON -DCONTENSOU_BUILD_BENCHMARKS=OFF
+    -DCONTENSOU_SANITIZE=ON -DCONTENSOU_WERROR=ON -DCONTENSOU_BUILD_BENCHMARKS=OFF \
+    -DCONTENSOU_BUILD_EXAMPLES=OFF
   cmake --build "$dir" --parallel
   export ASAN_OPTIONS=detect_leaks=1:abort_on_error=1 UBSAN_OPTIONS=print_stacktrace=1
 fi
