@@ -1,16 +1,53 @@
 #include "gnuplot.hpp"
 
+#include <unistd.h>
+
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <regex>
 #include <stdexcept>
+#include <utility>
+#include <vector>
 
 namespace contensou::app {
 
 bool gnuplot_available() {
   return std::system("gnuplot --version > /dev/null 2>&1") == 0;
 }
+
+namespace {
+
+// The script gnuplot runs: each `set output 'NAME'` of `script` writes to a temporary name
+// instead (.NAME.tmp-PID); the pairs (temporary, final) are returned in `outputs`.
+std::string with_temporary_outputs(const std::string& script,
+                                   std::vector<std::pair<std::string, std::string>>& outputs) {
+  static const std::regex set_output(R"((set\s+output\s+)(['"])([^'"]+)\2)");
+  const std::string suffix = ".tmp-" + std::to_string(::getpid());
+  std::string out;
+  auto last = script.cbegin();
+  for (std::sregex_iterator it(script.begin(), script.end(), set_output), end; it != end; ++it) {
+    const std::smatch& m = *it;
+    const std::string final_name = m[3].str();
+    const std::size_t slash = final_name.rfind('/') + 1;  // 0 without a folder
+    const std::string tmp =
+        final_name.substr(0, slash) + "." + final_name.substr(slash) + suffix;  // hidden
+    outputs.emplace_back(tmp, final_name);
+    out.append(last, m[0].first);
+    out += m[1].str() + m[2].str() + tmp + m[2].str();
+    last = m[0].second;
+  }
+  out.append(last, script.cend());
+  return out;
+}
+
+void remove_quietly(const std::string& path) {
+  std::error_code ec;
+  std::filesystem::remove(path, ec);
+}
+
+}  // namespace
 
 bool run_gnuplot(const std::string& dir, const std::string& name, const std::string& script) {
   const std::string gp = dir + "/" + name + ".gp";
@@ -22,32 +59,31 @@ bool run_gnuplot(const std::string& dir, const std::string& name, const std::str
                  gp.c_str(), dir.c_str(), name.c_str());
     return false;
   }
-  const std::string cmd = "cd '" + dir + "' && gnuplot '" + name + ".gp' 2> '" + name + ".log'";
-  if (std::system(cmd.c_str()) != 0) {
-    std::fprintf(stderr, "note: gnuplot failed on %s (see %s/%s.log)\n", gp.c_str(), dir.c_str(),
-                 name.c_str());
-    return false;
-  }
-  std::filesystem::remove(dir + "/" + name + ".log");
-  return true;
-}
-
-void write_file_atomically(const std::string& path, const std::string& text) {
-  const std::string tmp = path + ".tmp";
-  {
-    std::ofstream out(tmp, std::ios::binary);
-    out << text;
-    if (!out) {
-      std::filesystem::remove(tmp);
-      throw std::runtime_error(path + ": cannot write");
+  // The pictures are drawn under temporary names and renamed when gnuplot has finished, so a
+  // kill leaves the previous picture or the new one, never a truncated PNG.
+  std::vector<std::pair<std::string, std::string>> outputs;
+  const std::string run_script = with_temporary_outputs(script, outputs);
+  const std::string log = name + ".log";
+  const std::string cmd = "cd '" + dir + "' && gnuplot 2> '" + log + "'";
+  FILE* pipe = ::popen(cmd.c_str(), "w");
+  bool ok = pipe != nullptr &&
+            std::fwrite(run_script.data(), 1, run_script.size(), pipe) == run_script.size();
+  if (pipe != nullptr) ok = ::pclose(pipe) == 0 && ok;
+  for (const auto& [tmp, final_name] : outputs) {
+    std::error_code ec;
+    if (ok) std::filesystem::rename(dir + "/" + tmp, dir + "/" + final_name, ec);
+    if (!ok || ec) {
+      remove_quietly(dir + "/" + tmp);
+      ok = false;
     }
   }
-  std::error_code ec;
-  std::filesystem::rename(tmp, path, ec);
-  if (ec) {
-    std::filesystem::remove(tmp);
-    throw std::runtime_error(path + ": cannot write (" + ec.message() + ")");
+  if (!ok) {
+    std::fprintf(stderr, "note: gnuplot failed on %s (see %s/%s)\n", gp.c_str(), dir.c_str(),
+                 log.c_str());
+    return false;
   }
+  remove_quietly(dir + "/" + log);
+  return true;
 }
 
 }  // namespace contensou::app

@@ -4,6 +4,8 @@
 
 #include <string>
 
+#include "contensou/friction/file_output.hpp"
+
 namespace contensou::app {
 
 // True if `gnuplot` can be run.
@@ -12,9 +14,5 @@ bool gnuplot_available();
 // Writes `script` to dir/name.gp and runs gnuplot on it in `dir`. Returns false (after a
 // note on stderr) if gnuplot is missing or fails; the script and data stay in place.
 bool run_gnuplot(const std::string& dir, const std::string& name, const std::string& script);
-
-// Writes `text` to `path` whole or not at all (temporary file, then rename). Throws
-// std::runtime_error naming the path on failure.
-void write_file_atomically(const std::string& path, const std::string& text);
 
 }  // namespace contensou::app

@@ -42,8 +42,10 @@ Curves exact_curves(const ContactPatch& patch, const Grid& g) {
 }  // namespace
 
 ContactPatch named_patch(const std::string& profile, double radius, double friction) {
-  if (!(std::isfinite(radius) && radius > 0))
-    throw InvalidArgument("--radius", format_value(radius), "must be a positive number [m]");
+  // The coefficients are computed at N = 1 N, p* = 1 / (2 pi R^2 A^1): R^2 must stay a double.
+  if (!(std::isfinite(radius) && radius >= 1e-100 && radius <= 1e100))
+    throw InvalidArgument("--radius", format_value(radius),
+                          "must be a positive number [m] within 1e-100 ... 1e100");
   if (!(std::isfinite(friction) && friction > 0))
     throw InvalidArgument("--friction", format_value(friction), "must be a positive number");
   ContactPatch p;

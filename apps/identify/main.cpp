@@ -6,6 +6,7 @@
 #include <CLI/CLI.hpp>
 #include <cstdio>
 #include <filesystem>
+#include <optional>
 #include <sstream>
 
 #include "contensou/contensou.hpp"
@@ -14,6 +15,7 @@
 #include "contensou/identification/simulation.hpp"
 #include "gnuplot.hpp"
 #include "report.hpp"
+#include "run_guard.hpp"
 
 using namespace contensou;
 
@@ -86,7 +88,7 @@ int run_fit(const std::string& data_path, double radius, std::optional<double> l
     if (!plots_dir.empty() && app::write_plots(plots_dir, data, fit, radius))
       std::printf("pictures: %s/fit_*.png\n", plots_dir.c_str());
     if (!json_path.empty()) {
-      app::write_file_atomically(json_path, fit_report_json(info, fit) + "\n");
+      write_file_atomically(json_path, fit_report_json(info, fit) + "\n");
       std::printf("report: %s\n", json_path.c_str());
     }
     return 0;
@@ -131,7 +133,7 @@ int run_fit(const std::string& data_path, double radius, std::optional<double> l
                   plots_dir.c_str());
   }
   if (!json_path.empty()) {
-    app::write_file_atomically(json_path, loop_report_json(info, loop) + "\n");
+    write_file_atomically(json_path, loop_report_json(info, loop) + "\n");
     std::printf("report: %s\n", json_path.c_str());
   }
   return 0;
@@ -231,7 +233,7 @@ int main(int argc, char** argv) {
   double alpha = 1e-3;
   app.add_option("data", data_path,
                  "measured diagrams (CSV: vx_mps, vy_mps, omega_radps, Fx_N, ...)");
-  app.add_option("--radius", radius, "patch radius R [m]");
+  auto* radius_opt = app.add_option("--radius", radius, "patch radius R [m]");
   auto* load_opt =
       app.add_option("--normal-load", load, "normal load N [N] (f = F0/N is reported)");
   app.add_option("--profile", profile_spec,
@@ -308,6 +310,7 @@ int main(int argc, char** argv) {
   simulate->add_option("--periodic", sim.spec.rig.periodic_amplitude_n,
                        "a periodic disturbance of Fy in time [N] (outside the catalogue)");
 
+  app::prepare_output();
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
@@ -319,12 +322,20 @@ int main(int argc, char** argv) {
   FLAGS_minloglevel = verbose ? google::GLOG_INFO : google::GLOG_FATAL;
   google::InitGoogleLogging(argv[0]);
   try {
-    if (simulate->parsed()) return run_simulate(sim);
+    if (simulate->parsed()) return app::finish_output(run_simulate(sim));
     if (data_path.empty()) throw std::runtime_error("no data file given (see --help)");
-    if (radius == 0.0) throw std::runtime_error("--radius is required (patch radius in m)");
-    return run_fit(data_path, radius, load, profile_spec, pressure, fixes, loss, loss_scale,
-                   noise_model, noise_scale, json_path, plots_dir, !no_loop, alpha, speed_inside,
-                   failing_point, smoothing, profile_clip);
+    if (radius_opt->count() == 0)
+      throw std::runtime_error("--radius is required (patch radius in m)");
+    if (pressure && profile_spec.empty())
+      throw std::runtime_error("--pressure " + format_value(*pressure) +
+                               " is the reference pressure of a built-in --profile (uniform, "
+                               "hertz, seed-tire); give one, or the load as --normal-load");
+    std::optional<app::OutputFolderLock> lock;
+    if (!plots_dir.empty()) lock.emplace(plots_dir);  // before the fit: a second run stops here
+    return app::finish_output(run_fit(data_path, radius, load, profile_spec, pressure, fixes, loss,
+                                      loss_scale, noise_model, noise_scale, json_path, plots_dir,
+                                      !no_loop, alpha, speed_inside, failing_point, smoothing,
+                                      profile_clip));
   } catch (const std::exception& e) {
     std::fprintf(stderr, "%s: error: %s\n", kName, e.what());
     return 1;

@@ -2,8 +2,10 @@
 
 #include <fstream>
 #include <functional>
+#include <set>
 #include <sstream>
 #include <stdexcept>
+#include <vector>
 
 #include "contensou/friction/error.hpp"
 
@@ -86,12 +88,54 @@ ShimmyConfig read_shimmy_config(const std::string& path, const std::string& gear
   return parse_shimmy_config(buf.str(), path, gear_name);
 }
 
+nlohmann::json parse_json_without_duplicates(const std::string& text, const std::string& path) {
+  // JSON allows a key twice in an object and nlohmann::json keeps the last; a configuration
+  // that sets a value twice is a mistake to report, not to resolve silently.
+  std::vector<std::set<std::string>> keys;
+  std::vector<std::string> where, last;  // each open object's dotted name and latest key
+  std::string duplicate;
+  const auto dotted = [](const std::string& a, const std::string& b) {
+    return a.empty() ? b : a + "." + b;
+  };
+  const nlohmann::json::parser_callback_t check = [&](int, nlohmann::json::parse_event_t event,
+                                                      nlohmann::json& parsed) {
+    using E = nlohmann::json::parse_event_t;
+    if (event == E::object_start) {
+      keys.emplace_back();
+      where.push_back(where.empty() ? std::string() : dotted(where.back(), last.back()));
+      last.emplace_back();
+    } else if (event == E::object_end && !keys.empty()) {
+      keys.pop_back();
+      where.pop_back();
+      last.pop_back();
+    } else if (event == E::key && !keys.empty()) {
+      last.back() = parsed.get<std::string>();
+      if (!keys.back().insert(last.back()).second && duplicate.empty())
+        duplicate = dotted(where.back(), last.back());
+    }
+    return true;
+  };
+  nlohmann::json j = nlohmann::json::parse(text, check);
+  if (!duplicate.empty()) {
+    // Positions are not kept: point at the second quoted occurrence of the key's last part.
+    const std::string quoted = "\"" + duplicate.substr(duplicate.rfind('.') + 1) + "\"";
+    const std::size_t first = text.find(quoted);
+    const std::size_t second = first == std::string::npos ? first : text.find(quoted, first + 1);
+    const auto [line, col] = line_column(text, second == std::string::npos ? 0 : second);
+    throw ParseError(path, line, col,
+                     "the key '" + duplicate +
+                         "' appears twice in one object (JSON keeps only "
+                         "one): remove one of them");
+  }
+  return j;
+}
+
 ShimmyConfig parse_shimmy_config(const std::string& text, const std::string& path,
                                  const std::string& gear_name) {
   Reader r{path, text};
   nlohmann::json j;
   try {
-    j = nlohmann::json::parse(r.text);
+    j = parse_json_without_duplicates(r.text, path);
   } catch (const nlohmann::json::parse_error& e) {
     const auto [line, col] = line_column(r.text, e.byte > 0 ? e.byte - 1 : 0);
     std::string what = e.what();

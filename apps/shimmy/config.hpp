@@ -58,6 +58,10 @@ ShimmyConfig read_shimmy_config(const std::string& path, const std::string& gear
 
 // The same from text in memory; `path` stands for the file in error messages (the Python
 // package reads its configuration objects through this).
+// nlohmann::json::parse that refuses a key given twice in one object (ParseError naming the
+// dotted key, at its second occurrence); other errors as nlohmann::json throws them.
+nlohmann::json parse_json_without_duplicates(const std::string& text, const std::string& path);
+
 ShimmyConfig parse_shimmy_config(const std::string& text, const std::string& path,
                                  const std::string& gear_name = "default");
 

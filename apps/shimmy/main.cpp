@@ -20,6 +20,7 @@
 #include "history_plots.hpp"
 #include "limit_cycle.hpp"
 #include "overrides.hpp"
+#include "run_guard.hpp"
 #include "scenarios.hpp"
 #include "tire_report.hpp"
 
@@ -369,8 +370,19 @@ void add_limit_cycles(const ShimmyConfig& config, const std::vector<LandingRun>&
 
 // One configuration: every model's landing, its CSV and pictures, and the stability verdicts of
 // both phases, all in `out`; returns the summary (without writing it).
+// The demo analyses a landing: the gear must be fully loaded before the run ends (the library
+// also simulates a gear that never lands, as free vibration; the demo would call it "stable").
+void require_landing(const LandingScenario& s) {
+  if (!(s.touchdown_time_s + s.load_ramp_s < s.end_time_s))
+    throw InvalidArgument("scenario.touchdown_time_s", format_value(s.touchdown_time_s),
+                          "with load_ramp_s = " + format_value(s.load_ramp_s) +
+                              " the gear is not fully loaded before end_time_s = " +
+                              format_value(s.end_time_s) + ": there is no landing to analyse");
+}
+
 nlohmann::json run_landings(const ShimmyConfig& config, const std::string& out, unsigned threads,
                             const TireInput* tire) {
+  require_landing(config.gear.scenario);
   std::filesystem::create_directories(out);
   nlohmann::json summary;
   std::vector<LandingRun> runs;
@@ -671,6 +683,13 @@ int run(const Options& o) {
     std::cout << to_json(config).dump(2) << '\n';
     return 0;
   }
+  const app::OutputFolderLock lock(o.out);               // a second run into o.out stops here
+  for (const std::string& name : scenarios_to_run(o)) {  // every scenario checked before any runs
+    std::vector<std::string> sets = named_scenario(name).overrides;
+    sets.insert(sets.end(), o.overrides.begin(), o.overrides.end());
+    require_landing(apply_overrides(config, sets).gear.scenario);
+  }
+  if (scenarios_to_run(o).empty()) require_landing(config.gear.scenario);
   std::optional<TireInput> tire;
   if (!o.tire_path.empty()) tire = read_tire_input(o);
   const std::vector<std::string> names = scenarios_to_run(o);
@@ -699,9 +718,10 @@ int main(int argc, char** argv) {
       kName};
   Options options;
   add_options(app, options);
+  app::prepare_output();
   CLI11_PARSE(app, argc, argv);
   try {
-    return run(options);
+    return app::finish_output(run(options));
   } catch (const std::exception& e) {
     std::fprintf(stderr, "%s: %s\n", kName, e.what());
     return 1;

@@ -1,5 +1,7 @@
 #include "tire_report.hpp"
 
+#include "config.hpp"
+
 #include <cmath>
 #include <fstream>
 #include <nlohmann/json.hpp>
@@ -18,7 +20,7 @@ TireLawDistribution read_tire_report(const std::string& path) {
   buf << in.rdbuf();
   nlohmann::json j;
   try {
-    j = nlohmann::json::parse(buf.str());
+    j = parse_json_without_duplicates(buf.str(), path);
   } catch (const nlohmann::json::exception& e) {
     fail(std::string("not a JSON report (") + e.what() + ")");
   }
@@ -42,6 +44,12 @@ TireLawDistribution read_tire_report(const std::string& path) {
     if (!params.contains(name) || !params[name].is_object() || !params[name].contains("value"))
       fail("final.params." + name + ".value missing");
     d.mean[i] = number(params[name]["value"], "final.params." + name + ".value");
+    // A parameter the data could not determine has no distribution to draw from.
+    const nlohmann::json& determined = params[name].value("determined", nlohmann::json(true));
+    if (!determined.is_boolean() || !determined.get<bool>())
+      fail("final.params." + name +
+           " was not determined by the data (\"determined\": false): its value is arbitrary and "
+           "it has no interval; identify the tire on data that determine it");
     const nlohmann::json& s = params[name].value("std_error", nlohmann::json());
     if (!s.is_null()) se[i] = number(s, "final.params." + name + ".std_error");
     if (se[i] < 0) fail("final.params." + name + ".std_error must be >= 0");

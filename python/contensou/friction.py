@@ -38,14 +38,22 @@ def _check_threads(threads: int) -> int:
     return int(threads)
 
 
+def _real_array(name: str, a: ArrayLike) -> np.ndarray:
+    """``a`` as float64, refusing what the conversion would silently change: complex values
+    (numpy drops the imaginary part with only a warning) and non-numbers."""
+    if np.iscomplexobj(a) or (not isinstance(a, np.ndarray) and isinstance(a, complex)):
+        raise ValueError(f"{name}: complex values; give real numbers (the imaginary part would "
+                         "be lost)")
+    try:
+        out = np.asarray(a, dtype=np.float64)
+    except (TypeError, ValueError) as e:
+        raise ValueError(f"{name}: not convertible to an array of floats ({e})") from None
+    return out
+
+
 def _flatten(vx: ArrayLike, vy: ArrayLike, omega: ArrayLike) -> tuple[tuple[int, ...], list]:
     """The broadcast shape and three flat float64 arrays of that many points, or of one."""
-    arrays = []
-    for name, a in (("vx", vx), ("vy", vy), ("omega", omega)):
-        try:
-            arrays.append(np.asarray(a, dtype=np.float64))
-        except (TypeError, ValueError) as e:
-            raise ValueError(f"{name}: not convertible to an array of floats ({e})") from None
+    arrays = [_real_array(name, a) for name, a in (("vx", vx), ("vy", vy), ("omega", omega))]
     try:
         shape = np.broadcast_shapes(*(a.shape for a in arrays))
     except ValueError:
@@ -183,7 +191,7 @@ def fractional_resultants(
 
 def shape_values(profile: PressureProfile, rho: ArrayLike) -> np.ndarray:
     """The dimensionless shape p(rho) for rho in [0, 1] (after clipping if set; no shift)."""
-    r = np.asarray(rho, dtype=np.float64)
+    r = _real_array("rho", rho)
     flat = np.ascontiguousarray(r).reshape(-1)
     out = np.empty((flat.size, 1))
     profile._shape_values(flat, out)

@@ -9,6 +9,7 @@ report (``contensou-identify --json``) byte for byte.
 
 from __future__ import annotations
 
+import difflib
 import json
 import os
 from dataclasses import dataclass, field
@@ -174,6 +175,11 @@ def _column(data: Any, name: str) -> Optional[np.ndarray]:
         col = data[name]
     except (KeyError, IndexError, ValueError):
         return None
+    dtype = getattr(col, "dtype", None)
+    if (np.issubdtype(dtype, np.complexfloating) if isinstance(dtype, np.dtype)
+            else np.iscomplexobj(np.asarray(col))):
+        raise ValueError(f"column '{name}': complex values; give real numbers (the imaginary part "
+                         "would be lost)")
     try:
         if hasattr(col, "to_numpy"):  # pandas Series: missing values (None, pd.NA) become NaN
             arr = col.to_numpy(dtype=np.float64, na_value=np.nan)
@@ -188,6 +194,8 @@ def _column(data: Any, name: str) -> Optional[np.ndarray]:
 
 def _columns_of(data: Any) -> dict[str, Optional[np.ndarray]]:
     if isinstance(data, np.ndarray) and data.dtype.names is None:
+        if np.iscomplexobj(data):
+            raise ValueError("complex values; give real numbers (the imaginary part would be lost)")
         a = np.asarray(data, dtype=np.float64)
         if a.ndim != 2 or not 4 <= a.shape[1] <= len(COLUMNS):
             raise ValueError(
@@ -205,6 +213,18 @@ def _columns_of(data: Any) -> dict[str, Optional[np.ndarray]]:
             f"missing required column(s) {', '.join(missing)} (columns: {', '.join(map(str, names))};"
             f" expected vx_mps, vy_mps, omega_radps and any of Fx_N, Fy_N, Mz_Nm, Fz_N, t_s)"
         )
+    # A near miss of a known column (Fx_n, fx_N, Mz_Nmm) is refused, not dropped: its data would
+    # be silently left out. Other columns (run_id, temperature) are ignored as in the CSV reader.
+    absent = [c for c in COLUMNS if c not in names]
+    for n in names:
+        if n in COLUMNS:
+            continue
+        close = difflib.get_close_matches(str(n), absent, n=1, cutoff=0.75)
+        close = close or [c for c in absent if c.lower() == str(n).lower()]
+        if close:
+            raise ValueError(
+                f"column '{n}' is not a known column; did you mean '{close[0]}'? (rename it, "
+                f"converting its values if its unit differs)")
     return {c: (_column(data, c) if c in names else None) for c in COLUMNS}
 
 

@@ -1,5 +1,7 @@
 #include "contensou/friction/contact_patch.hpp"
 
+#include <algorithm>
+#include <cmath>
 #include <numbers>
 
 #include "contensou/friction/error.hpp"
@@ -70,6 +72,34 @@ void validate(const ContactPatch& patch) {
     require_positive("slip_speed_friction.reference_speed", s.reference_speed);
     require_positive("slip_speed_friction.exponent", s.exponent);
   }
+  require_representable_scales(patch);
+}
+
+void require_representable_scales(const ContactPatch& patch) {
+  // Finite in, finite out: the load N = 2 pi R^2 p* A^1 (theory.md section 4) and the torque
+  // scale f N R, in logarithms so that the check itself cannot overflow, must lie well inside
+  // the doubles (1e-300 ... 1e300); the profile's own values enter only through A^n.
+  const double A1 = moment(patch.profile, 1), A2 = moment(patch.profile, 2);
+  if (!std::isfinite(A1) || !std::isfinite(A2))
+    throw InvalidArgument("profile", describe(patch.profile),
+                          "its moments A^1, A^2 are not finite (" + format_value(A1) + ", " +
+                              format_value(A2) + "): its values overflow a double");
+  if (!(A1 > 0.0)) return;  // a negative pressure: refused by the exact model, naming it
+  double f = patch.friction;
+  if (patch.slip_speed_friction)
+    f = std::max({f, patch.slip_speed_friction->static_coefficient,
+                  patch.slip_speed_friction->kinetic_coefficient});
+  const double log_n = std::log(2.0 * std::numbers::pi) + 2.0 * std::log(patch.radius_m) +
+                       std::log(patch.reference_pressure_pa) + std::log(A1);
+  const double log_m = log_n + std::log(patch.radius_m) + (f > 0.0 ? std::log(f) : 0.0);
+  const double most = std::log(1e300), least = std::log(1e-300);
+  if (!(log_n < most && log_m < most && log_n > least && log_m > least))
+    throw InvalidArgument(
+        "radius_m, reference_pressure_pa",
+        format_value(patch.radius_m) + " m, " + format_value(patch.reference_pressure_pa) + " Pa",
+        "give a load N = 2 pi R^2 p* A^1 of 1e" +
+            std::to_string(static_cast<int>(std::floor(log_n / std::log(10.0)))) +
+            " N; N and f N R must lie within 1e-300 ... 1e300: use other units");
 }
 
 }  // namespace contensou

@@ -5,6 +5,8 @@
 #include <cerrno>
 #include <cmath>
 #include <cstdlib>
+#include <cstring>
+#include <filesystem>
 #include <fstream>
 #include <sstream>
 
@@ -146,7 +148,7 @@ std::optional<double> CsvTable::number(const CsvRow& row, int col) const {
   errno = 0;
   char* end = nullptr;
   const double v = std::strtod(text.c_str(), &end);
-  if (end == text.c_str() || *end != '\0')
+  if (end == text.c_str() || end != text.c_str() + text.size())  // also a NUL inside
     throw cell_error(row.line, col,
                      "not a number: '" + row.cells[static_cast<std::size_t>(col)] + "'");
   if (!std::isfinite(v) || errno == ERANGE) {
@@ -188,6 +190,9 @@ CsvTable parse_csv(const std::string& text_in, const std::string& name) {
   std::size_t width = 0;  // header columns up to the last named one
   for (const std::string& line : lines) {
     ++lineno;
+    if (const std::size_t nul = line.find('\0'); nul != std::string::npos)
+      throw ParseError(name, lineno, static_cast<int>(nul + 1),
+                       "a NUL byte: not a text file (or a corrupt one)");
     std::size_t lead = 0;
     while (lead < line.size() && is_space(line[lead])) ++lead;
     if (lead == line.size() || line[lead] == '#') continue;
@@ -224,8 +229,12 @@ CsvTable parse_csv(const std::string& text_in, const std::string& name) {
 }
 
 CsvTable read_csv(const std::string& path) {
+  std::error_code ec;
+  if (std::filesystem::is_directory(path, ec))
+    throw ParseError(path, 0, 0, "is a folder, not a CSV file");
   std::ifstream in(path, std::ios::binary);
-  if (!in) throw ParseError(path, 0, 0, "cannot open file");
+  if (!in)
+    throw ParseError(path, 0, 0, std::string("cannot open file (") + std::strerror(errno) + ")");
   std::ostringstream ss;
   ss << in.rdbuf();
   if (in.bad()) throw ParseError(path, 0, 0, "cannot read file");

@@ -19,6 +19,7 @@ FractionalWithJacobian fractional_resultants_with_jacobian(const FractionalLaw<d
   require_finite("vx", k0.vx);
   require_finite("vy", k0.vy);
   require_finite("omega", k0.omega);
+  detail::check_rim_speed(k0.omega, p.radius);
   // Homogeneous of degree 0 in (v, u, eps): evaluate on scaled velocities, divide J by s.
   // One reciprocal per square root; everything else is multiplication.
   const double R = p.radius;

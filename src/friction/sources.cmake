@@ -9,6 +9,7 @@ set(contensou_friction_sources
   exact_law_jacobian.cpp
   exact_law_sampling.cpp
   exact_resultants.cpp
+  file_output.cpp
   fractional_law.cpp
   limit_surface.cpp
   model_error.cpp

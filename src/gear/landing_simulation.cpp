@@ -7,6 +7,7 @@
 #include <array>
 #include <chrono>
 #include <cmath>
+#include <cstdio>
 #include <stdexcept>
 #include <vector>
 
@@ -151,6 +152,21 @@ LandingRun simulate_landing(const GearModel& model, const SolverOptions& options
   validate(model.config);
   require_positive("solver.relative_tolerance", options.relative_tolerance);
   require_positive("solver.output_interval_s", options.output_interval_s);
+  // The time history is kept in memory (and written by the apps): bounded, with the number.
+  constexpr double kMostSamples = 1e6;
+  const double samples = model.config.scenario.end_time_s / options.output_interval_s;
+  if (!(samples <= kMostSamples))
+    throw InvalidArgument(
+        "solver.output_interval_s", format_value(options.output_interval_s),
+        "with scenario.end_time_s = " + format_value(model.config.scenario.end_time_s) +
+            " it asks for " +
+            [&] {
+              char b[32];
+              std::snprintf(b, sizeof b, "%.3g", samples);
+              return std::string(b);
+            }() +
+            " samples; at most 1e6 are kept (a longer interval or a shorter "
+            "run)");
   if (options.max_steps < 1)
     throw InvalidArgument("solver.max_steps", std::to_string(options.max_steps), "must be >= 1");
   const LandingScenario& s = model.config.scenario;

@@ -360,7 +360,11 @@ FitSetup prepare_fit(const MeasuredData& data, const ModelSpec& spec, const Nois
     throw InvalidArgument("data", std::to_string(data.points.size()) + " rows",
                           "every row is at rest (v = omega = 0): the friction law needs rows with "
                           "sliding or spin");
-  // Refused before fitting (measured_values_needed).
+  // Refused before fitting: nothing free (Ceres cannot take an empty parameter block), or too
+  // little data (measured_values_needed).
+  if (s.p_free == 0)
+    throw InvalidArgument("fix", "F0_N, a, M0_Nm, m and kx",
+                          "every parameter is fixed, nothing is left to fit: leave one free");
   int scales = 0;
   for (int c = 0; c < kChannels; ++c) scales += s.counts[c] > 0 && !noise.given;
   const int needed = s.p_free + scales + 1;

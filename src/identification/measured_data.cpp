@@ -3,11 +3,12 @@
 #include <algorithm>
 #include <cstdio>
 #include <cstdlib>
-#include <fstream>
+#include <sstream>
 #include <stdexcept>
 
 #include "contensou/friction/csv.hpp"
 #include "contensou/friction/error.hpp"
+#include "contensou/friction/file_output.hpp"
 
 namespace contensou {
 
@@ -108,8 +109,7 @@ MeasuredData read_measured_csv(const std::string& path) {
 
 void write_measured_csv(const std::string& path, const MeasuredData& data,
                         const std::string& comment) {
-  std::ofstream out(path);
-  if (!out) throw std::runtime_error(path + ": cannot open for writing");
+  std::ostringstream out;
   if (!comment.empty()) {
     std::string line;
     for (char c : comment + "\n") {
@@ -141,7 +141,7 @@ void write_measured_csv(const std::string& path, const MeasuredData& data,
     if (has_t) out << "," << cell(p.time);
     out << "\n";
   }
-  if (!out) throw std::runtime_error(path + ": write failed");
+  write_file_atomically(path, out.str());  // whole or not at all
 }
 
 }  // namespace contensou

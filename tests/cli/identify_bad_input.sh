@@ -67,7 +67,8 @@ expect "smoothing with too many terms" "--profile-smoothing 6 (" \
 printf '1,0,10,-5\n2,0,10,-6\n' > "$dir/noheader.csv"
 expect "no header" "the first row holds numbers, not column names" \
   "$app" "$dir/noheader.csv" --radius 0.1 --json "$dir/report.json"
-expect "zero radius" "--radius is required" "$app" "$good" --radius 0 --json "$dir/report.json"
+expect "zero radius" "--radius = 0: must be positive" "$app" "$good" --radius 0 --json "$dir/report.json"
+expect "no radius" "--radius is required" "$app" "$good" --json "$dir/report.json"
 expect "negative radius" "radius = -0.1:" "$app" "$good" --radius -0.1 --json "$dir/report.json"
 expect "negative load" "normal-load = -4000" \
   "$app" "$good" --radius 0.087 --normal-load -4000 --json "$dir/report.json"

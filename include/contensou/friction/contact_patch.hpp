@@ -60,7 +60,13 @@ ContactPatch seed_tire_patch();
 double normal_load(const ContactPatch& patch);
 
 // Throws InvalidArgument naming the first bad field (radius, pressure, friction, kappa,
-// shift, slip-speed law).
+// shift, slip-speed law), or the scales when they leave the doubles
+// (require_representable_scales).
 void validate(const ContactPatch& patch);
+
+// Throws InvalidArgument unless the load N = 2 pi R^2 p* A^1 and the torque scale f N R lie
+// within 1e-300 ... 1e300, so that finite input gives finite resultants (R = 1e308 is refused
+// here, naming R and p*, instead of returning inf or NaN).
+void require_representable_scales(const ContactPatch& patch);
 
 }  // namespace contensou

@@ -3,6 +3,7 @@
 
 #include <charconv>
 #include <cmath>
+#include <limits>
 #include <stdexcept>
 #include <string>
 
@@ -63,9 +64,14 @@ inline void require_finite(const char* name, double v) {
   if (!std::isfinite(v)) throw InvalidArgument(name, format_value(v), "must be finite");
 }
 
+// Positive, finite and a normal double (a subnormal, below 2.2e-308, loses its precision and
+// turns into inf when divided into).
 inline void require_positive(const char* name, double v) {
   if (!std::isfinite(v) || !(v > 0.0))
     throw InvalidArgument(name, format_value(v), "must be positive and finite");
+  if (v < std::numeric_limits<double>::min())
+    throw InvalidArgument(name, format_value(v),
+                          "is below 2.2e-308, the smallest normal double: use other units");
 }
 
 inline void require_non_negative(const char* name, double v) {

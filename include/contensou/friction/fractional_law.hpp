@@ -26,6 +26,7 @@
 #include <Eigen/Core>
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 #include "contensou/friction/contact_patch.hpp"
 #include "contensou/friction/error.hpp"
@@ -77,6 +78,31 @@ void check_law(const FractionalLaw<T>& p) {
   require_non_negative("Mk", value_of(p.Mk));
   require_positive("radius", p.radius);
   require_positive("regularization_speed", p.regularization_speed);
+  // Finite in, finite out: the largest force and torque the law returns (the shift terms'
+  // factors are bounded, by 4 here with room to spare) and its Jacobian, at most these over the
+  // regularisation speed (times R for omega), must be doubles; refused with the range otherwise.
+  const double kappa = value_of(p.kappa),
+               shift = std::abs(value_of(p.kx)) + std::abs(value_of(p.ky));
+  const double force =
+      value_of(p.F0) * std::max(1.0, kappa) + value_of(p.M0) / (2.0 * p.radius) * 4.0 * shift;
+  const double torque =
+      value_of(p.M0) * 0.5 * (1.0 + kappa) + value_of(p.Mk) * 4.0 * shift * std::max(1.0, kappa);
+  const double slope =
+      16.0 * std::max(force, torque) * std::max(1.0, p.radius) / p.regularization_speed;
+  if (!(slope < std::numeric_limits<double>::max()))
+    throw InvalidArgument("F0, M0",
+                          format_value(value_of(p.F0)) + ", " + format_value(value_of(p.M0)),
+                          "too large: the forces, torques or derivatives (up to 16 max(F0, M0) "
+                          "max(1, R) / regularization_speed) would overflow a double; use larger "
+                          "units (kN, kN m)");
+}
+
+// The rim speed omega R must be a double (omega = 1e300 on R = 1e10 is refused, not NaN).
+inline void check_rim_speed(double omega, double radius) {
+  if (!(std::abs(omega) * radius <= std::numeric_limits<double>::max()))
+    throw InvalidArgument("omega", format_value(omega),
+                          "times the radius " + format_value(radius) +
+                              " m overflows a double (the rim speed omega R)");
 }
 }  // namespace detail
 
@@ -89,6 +115,7 @@ Resultants<T> fractional_resultants(const FractionalLaw<T>& p, const Kinematics<
   require_finite("vx", value_of(k0.vx));
   require_finite("vy", value_of(k0.vy));
   require_finite("omega", value_of(k0.omega));
+  detail::check_rim_speed(value_of(k0.omega), p.radius);
   const double R = p.radius;
   const double s = std::max({std::abs(value_of(k0.vx)), std::abs(value_of(k0.vy)),
                              std::abs(value_of(k0.omega)) * R, p.regularization_speed});
