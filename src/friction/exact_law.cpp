@@ -112,13 +112,67 @@ int falling_pieces(const ExactModel<double>& unit, double delta,
   });
   for (int J = 1; J <= kMaxPieces; ++J) {
     if (std::pow(zs[J - 1], 1.0 / delta) >= measure.largest_q) return J;
+    // Weighted as the tail is in build_falling (sigma_weights): a function divided by sigma
+    // enters the resultants multiplied by it.
     double worst = 0.0;
-    for (std::size_t i = 0; i < probe_t.size(); ++i)
+    for (std::size_t i = 0; i < probe_t.size(); ++i) {
+      double w[kLawFunctions];
+      sigma_weights(probe_t[i], 1, w);
       for (int c = 0; c < kLawFunctions; ++c)
-        worst = std::max(worst, std::abs(top[(i * zs.size() + J - 1) * kLawFunctions + c]));
+        worst = std::max(worst, w[c] * std::abs(top[(i * zs.size() + J - 1) * kLawFunctions + c]));
+    }
     if (worst < tolerance) return J;
   }
   return kMaxPieces;
+}
+
+// Stores the J octaves of a build (its functions: per t-coefficient, the octaves' values at their
+// z Lobatto points) as blocks of z coefficients (SlipSpeedTable): an (octave, piece) pair whose
+// functions are bounded below `negligible` on the piece (the sum of its |coefficients|, each
+// weighted by the largest sigma there, sigma_weights) shares the zero block. Returns the largest
+// bound so dropped.
+double store_falling_blocks(const PiecewiseChebyshev& built, int J, double negligible,
+                            SlipSpeedTable& out) {
+  constexpr int M = kLawFunctions * (kSlipDegreeZ + 1);
+  const int n = built.degree, P = built.pieces();
+  const std::size_t size = static_cast<std::size_t>(M) * (n + 1);
+  out.octaves = J;
+  out.pieces = built;
+  out.pieces.functions = M;
+  out.pieces.coefficients = {};
+  out.pieces.slope_at_start = out.pieces.slope_at_end = {};
+  out.coefficients.assign(size, 0.0);  // the zero block
+  out.block.assign(static_cast<std::size_t>(J) * P, 0);
+  double dropped = 0.0;
+  for (int k = 0; k < P; ++k) {
+    double w[kLawFunctions];  // sigma at the piece's upper end: the largest on it
+    sigma_weights(built.breaks[k + 1], 1, w);
+    for (int j = 0; j < J; ++j) {
+      PiecewiseChebyshev one;  // the block: n + 1 rows of the octave's M functions
+      one.functions = M;
+      one.degree = n;
+      for (int row = 0; row <= n; ++row) {
+        const auto at = built.coefficients.begin() +
+                        (static_cast<std::ptrdiff_t>(k) * (n + 1) + row) * J * M + j * M;
+        one.coefficients.insert(one.coefficients.end(), at, at + M);
+      }
+      values_to_z_coefficients(one);
+      double bound[kLawFunctions] = {};
+      for (std::size_t i = 0; i < size; ++i)
+        bound[i % kLawFunctions] += std::abs(one.coefficients[i]);
+      double worst = 0.0;
+      for (int c = 0; c < kLawFunctions; ++c) worst = std::max(worst, w[c] * bound[c]);
+      if (worst <= negligible) {
+        dropped = std::max(dropped, worst);
+        continue;
+      }
+      out.block[static_cast<std::size_t>(j) * P + k] =
+          static_cast<std::uint32_t>(out.coefficients.size());
+      out.coefficients.insert(out.coefficients.end(), one.coefficients.begin(),
+                              one.coefficients.end());
+    }
+  }
+  return dropped;
 }
 
 FallingBuild build_falling(const ExactModel<double>& model, double delta, double tolerance,
@@ -168,24 +222,8 @@ FallingBuild build_falling(const ExactModel<double>& model, double delta, double
   FallingBuild out;
   out.table.exponent = delta;
   out.table.tail = tail;
-  for (int j = 0; j < J; ++j) {  // the functions of piece j, values -> coefficients in z
-    PiecewiseChebyshev t;
-    t.functions = M;
-    t.degree = b.table.degree;
-    t.breaks = b.table.breaks;
-    for (std::size_t row = 0; row < b.table.coefficients.size(); row += J * M)
-      t.coefficients.insert(t.coefficients.end(), b.table.coefficients.begin() + row + j * M,
-                            b.table.coefficients.begin() + row + (j + 1) * M);
-    values_to_z_coefficients(t);
-    if (j == 0) {
-      index_pieces(t);
-    } else {  // the first octave holds the pieces for all
-      t.breaks.clear();
-      t.breaks.shrink_to_fit();
-    }
-    out.table.octaves.push_back(std::move(t));
-  }
-  out.achieved = std::max({3.0 * b.achieved, z_error, tail});
+  const double dropped = store_falling_blocks(b.table, J, 1e-3 * tolerance, out.table);
+  out.achieved = std::max({3.0 * b.achieved, z_error, tail}) + dropped;
   out.reached = b.reached && out.achieved <= 2.0 * tolerance;
   out.samples = b.samples;
   return out;

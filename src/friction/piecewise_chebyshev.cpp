@@ -243,6 +243,27 @@ void evaluate_chebyshev(const PiecewiseChebyshev& p, double t, double* out) {
   evaluate_chebyshev(p, t, out, s.data());
 }
 
+namespace detail {
+
+void chebyshev_sums(const double* c, int m, int n, double x, double* out, double* slope) {
+  if (const ChebyshevKernel k = chebyshev_kernel(m, n, slope != nullptr)) {
+    k(c, x, out, slope);
+    return;
+  }
+  std::array<double, kMaxDegree + 1> T, D;
+  contensou::chebyshev_basis(x, n, T.data(), D.data());
+  for (int i = 0; i < m; ++i) out[i] = 0.0;
+  if (slope)
+    for (int i = 0; i < m; ++i) slope[i] = 0.0;
+  for (int j = 0; j <= n; ++j, c += m)
+    for (int i = 0; i < m; ++i) {
+      out[i] += c[i] * T[j];
+      if (slope) slope[i] += c[i] * D[j];
+    }
+}
+
+}  // namespace detail
+
 void evaluate_chebyshev(const PiecewiseChebyshev& p, double t, double* out, double* slope) {
   double x, dxdt;
   const double* c = detail::locate_piece(p, t, x, dxdt);

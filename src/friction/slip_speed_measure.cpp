@@ -5,7 +5,10 @@
 #include <array>
 #include <cmath>
 #include <numbers>
-#include <stdexcept>
+
+#if defined(__SSE2__)
+#include <emmintrin.h>
+#endif
 
 #include "contensou/friction/adaptive_integration.hpp"
 #include "contensou/friction/quadrature.hpp"
@@ -52,18 +55,143 @@ SlipMoments constant_ring(double p_c, double s, double eps, double phi_end) {
           p_c * (eps * eps * sn - 2.0 * eps * s * cos2 + s * s * cos3)};
 }
 
+// The rules of a table's ring pieces (half_ring_table): Gauss-Legendre of 1..coarse_max nodes
+// (gauss[n] has n) for the pieces away from both ends of the ring's range, `fine` for the others.
+struct RingRules {
+  std::vector<GaussLegendreRule> gauss;
+  std::vector<double> reach;  // plain_piece_nodes
+  GaussLegendreRule fine;
+  int coarse_min = 3, coarse_max = 6;
+};
+
+// The nodes of a ring's pieces before the sums (half_ring_table): the node's share of the
+// integral without the square root of its far end (f), lo = t - t_min, and the factor whose
+// inverse square root f still needs (1 where it has none). Padded to whole blocks of four.
+struct RingNodes {
+  std::vector<double> f, lo, far;
+  std::size_t size = 0;
+  void reserve(std::size_t n) {
+    if (f.size() < n) {
+      f.resize(n);
+      lo.resize(n);
+      far.resize(n);
+    }
+  }
+};
+
+// Nodes of the Gauss rule for the piece [va, vb] of v (v = sqrt(t - t_min) or sqrt(t_max - t))
+// whose integrand, analytic in v, is singular at v = +-root (the far end of the ring's range): the
+// error of n nodes is about B^(-2n), B = r + sqrt(r^2 - 1), r the distance of root from the
+// piece's middle in half widths (the Bernstein ellipse through it). rules.reach[n] is the r from
+// which n nodes leave below about 1e-16 of the piece.
+int plain_piece_nodes(double va, double vb, double root, const RingRules& rules) {
+  const double half = 0.5 * (vb - va), mid = 0.5 * (va + vb), gap = std::min(root - mid, mid);
+  int n = rules.coarse_min;
+  while (n < rules.coarse_max && gap < rules.reach[n] * half) ++n;
+  return n;
+}
+
+// Adds the nodes of piece k (cubic c about knot tk) of the ring's range on [a, b] to `nodes`,
+// minus the profile's value p_c at the middle of the range (half_ring_table).
+void add_ring_piece(const std::array<double, 4>& c, double tk, double a, double b, double t_min,
+                    double t_max, double root_span, double p_c, const RingRules& rules,
+                    RingNodes& nodes) {
+  // A piece far from both ends of the ring's range: v = sqrt(t - t_min) on the lower half,
+  // sqrt(t_max - t) on the upper half (dt / sqrt(t - t_min) = 2 dv: the near square root gone,
+  // the far one smooth). A piece near both: the angle phi itself, t = t_min + (t_max - t_min)
+  // sin^2(phi / 2), dt / sqrt((t - t_min)(t_max - t)) = d phi, with the fine rule.
+  const double span = t_max - t_min;
+  const bool lower = (a - t_min) <= (t_max - b);
+  const double far = lower ? t_max - b : a - t_min;
+  const bool angle = far < 4.0 * (b - a);
+  double va, vb;
+  if (angle) {  // phi at a and b: sin^2(phi / 2) = (t - t_min) / span
+    va = 2.0 * std::asin(std::sqrt(std::clamp((a - t_min) / span, 0.0, 1.0)));
+    vb = 2.0 * std::asin(std::sqrt(std::clamp((b - t_min) / span, 0.0, 1.0)));
+  } else {
+    va = lower ? std::sqrt(a - t_min) : std::sqrt(t_max - b);
+    vb = lower ? std::sqrt(b - t_min) : std::sqrt(t_max - a);
+  }
+  const GaussLegendreRule& g =
+      angle ? rules.fine : rules.gauss[plain_piece_nodes(va, vb, root_span, rules)];
+  const int n = static_cast<int>(g.nodes.size());
+  nodes.reserve(nodes.size + n + 4);
+  double* f = nodes.f.data() + nodes.size;
+  double* lo = nodes.lo.data() + nodes.size;
+  double* fr = nodes.far.data() + nodes.size;
+  const double dv = 0.5 * (vb - va);
+  for (int i = 0; i < n; ++i) {
+    const double v = va + dv * (1.0 + g.nodes[i]);
+    double weight;
+    if (angle) {  // dt / root = d phi
+      const double h = std::sin(0.5 * v);
+      lo[i] = span * h * h;
+      fr[i] = 1.0;
+      weight = dv * g.weights[i];
+    } else {  // dt / root = 2 v dv / (v sqrt(far end)) = 2 dv / sqrt(far end)
+      lo[i] = lower ? v * v : span - v * v;
+      fr[i] = v > 0.0 ? span - v * v : 0.0;  // hi on the lower half, lo on the upper
+      weight = 2.0 * dv * g.weights[i];
+    }
+    const double x = std::clamp(t_min + lo[i], a, b) - tk;  // the piece's cubic
+    f[i] = weight * (c[0] + x * (c[1] + x * (c[2] + x * c[3])) - p_c);
+  }
+  nodes.size += n;
+}
+
+// The sums of the ring weights (add_ring_point) over the nodes, four at a time:
+//   c = cos(phi) = 1 - lo / D, sin^2(phi) = lo hi / D^2 (hi = span - lo), y = (eps - s) + s lo / D.
+SlipMoments ring_node_sums(RingNodes& nodes, double span, double D, double eps, double s) {
+  const std::size_t n = (nodes.size + 3) / 4 * 4;
+  nodes.reserve(n);
+  for (std::size_t i = nodes.size; i < n; ++i) nodes.f[i] = nodes.lo[i] = 0.0, nodes.far[i] = 1.0;
+  const double inv_d = 1.0 / D, inv_d2 = inv_d * inv_d, y0 = eps - s;
+  double acc[6][4] = {};
+  for (std::size_t i = 0; i < n; i += 4) {
+    double f[4];
+#if defined(__SSE2__)
+    for (int l = 0; l < 4; l += 2) {  // f / sqrt(far), 0 where far is 0
+      const __m128d q = _mm_loadu_pd(nodes.far.data() + i + l);
+      const __m128d keep = _mm_cmpgt_pd(q, _mm_setzero_pd());  // no 0 / 0 on the others
+      const __m128d root =
+          _mm_sqrt_pd(_mm_or_pd(_mm_and_pd(keep, q), _mm_andnot_pd(keep, _mm_set1_pd(1.0))));
+      const __m128d r = _mm_div_pd(_mm_loadu_pd(nodes.f.data() + i + l), root);
+      _mm_storeu_pd(f + l, _mm_and_pd(r, keep));
+    }
+#else
+    for (int l = 0; l < 4; ++l) {
+      const double q = nodes.far[i + l];
+      f[l] = q > 0.0 ? nodes.f[i + l] / std::sqrt(q) : 0.0;
+    }
+#endif
+    for (int l = 0; l < 4; ++l) {
+      const double lo = nodes.lo[i + l], c = 1.0 - lo * inv_d, y = y0 + s * lo * inv_d;
+      const double A = f[l] * c, B = f[l] * lo * (span - lo) * inv_d2;
+      acc[0][l] += A;
+      acc[1][l] += B;
+      acc[2][l] += A * y;
+      acc[3][l] += B * c;
+      acc[4][l] += B * y;
+      acc[5][l] += A * y * y;
+    }
+  }
+  SlipMoments out;
+  for (int k = 0; k < 6; ++k) out[k] = (acc[k][0] + acc[k][1]) + (acc[k][2] + acc[k][3]);
+  out[1] *= s;
+  out[3] *= s * s;
+  out[4] *= s;
+  return out;
+}
+
 // The half ring of a table in the variable t = |r|^2 = C - D cos(phi) (C = s^2 + eps^2,
 // D = 2 eps s), broken at the knots, where the profile is a cubic: d phi = dt / sqrt((t - t_min)
 // (t_max - t)), t_min = (s - eps)^2, t_max = (s + eps)^2; the square roots at t_min (and at
 // t_max for a ring inside the disk) are removed by t = t_min + w u^2 on the end pieces.
 SlipMoments half_ring_table(const ExactModel<double>& m, double s, double eps,
-                            const GaussLegendreRule& coarse, const GaussLegendreRule& fine) {
+                            const RingRules& rules) {
   const double t_min = (s - eps) * (s - eps), t_max = (s + eps) * (s + eps);
   const double t_end = std::min(1.0, t_max), D = 2.0 * eps * s;
-  std::vector<double> cuts{t_min};
   const auto first = std::upper_bound(m.knot.begin(), m.knot.end(), t_min);
-  for (auto it = first; it != m.knot.end() && *it < t_end; ++it) cuts.push_back(*it);
-  cuts.push_back(t_end);
   // The profile's value at the middle of the ring's range, in closed form; the rule takes only
   // the rest, p - p_c, which is O(eps s) on the ring: its error shrinks with the centre's
   // distance from O (the functions are divided by sigma ~ eps near pure spin).
@@ -73,73 +201,29 @@ SlipMoments half_ring_table(const ExactModel<double>& m, double s, double eps,
       t_end == t_max
           ? std::numbers::pi
           : 2.0 * std::asin(std::sqrt(std::clamp((1.0 - t_min) / (t_max - t_min), 0.0, 1.0)));
-  SlipMoments out = constant_ring(p_c, s, eps, phi_end);
-  // Piece j between the cuts is the table's piece k0 + j (the one holding t_min first).
-  const std::size_t k0 =
+  const SlipMoments closed = constant_ring(p_c, s, eps, phi_end);
+  thread_local RingNodes nodes;
+  nodes.size = 0;
+  const double root_span = std::sqrt(t_max - t_min);
+  // The pieces between t_min, the knots inside the range and t_end; the first is the table's
+  // piece holding t_min.
+  std::size_t k =
       std::min<std::size_t>(std::max<std::ptrdiff_t>(first - m.knot.begin(), 1), m.piece.size()) -
       1;
-  constexpr std::size_t kMost = 64;
-  if (std::max(coarse.nodes.size(), fine.nodes.size()) > kMost)
-    throw std::invalid_argument("slip_speed_measure: at most 64 ring nodes");
-  std::array<double, kMost> tt, ww, pp, lo, hi;
-  const double inv_d = 1.0 / D, inv_d2 = inv_d * inv_d;
-  for (std::size_t j = 0; j + 1 < cuts.size(); ++j) {
-    const double a = cuts[j], b = cuts[j + 1];
-    if (!(b > a)) continue;
-    const std::size_t k = std::min(k0 + j, m.piece.size() - 1);
-    // A piece far from both ends of the ring's range: v = sqrt(t - t_min) on the lower half,
-    // sqrt(t_max - t) on the upper half (dt / sqrt(t - t_min) = 2 dv: the near square root
-    // gone, the far one smooth). A piece near both: the angle phi itself, t = t_min + (t_max -
-    // t_min) sin^2(phi / 2), dt / sqrt((t - t_min)(t_max - t)) = d phi, with the fine rule.
-    const double span = t_max - t_min;
-    const bool lower = (a - t_min) <= (t_max - b);
-    const double far = lower ? t_max - b : a - t_min;
-    const bool angle = far < 4.0 * (b - a);
-    const GaussLegendreRule& g = angle ? fine : coarse;
-    const int n = static_cast<int>(g.nodes.size());
-    double va, vb;
-    if (angle) {  // phi at a and b: sin^2(phi / 2) = (t - t_min) / span
-      va = 2.0 * std::asin(std::sqrt(std::clamp((a - t_min) / span, 0.0, 1.0)));
-      vb = 2.0 * std::asin(std::sqrt(std::clamp((b - t_min) / span, 0.0, 1.0)));
-    } else {
-      va = lower ? std::sqrt(a - t_min) : std::sqrt(t_max - b);
-      vb = lower ? std::sqrt(b - t_min) : std::sqrt(t_max - a);
-    }
-    for (int i = 0; i < n; ++i) {
-      const double v = va + (vb - va) * 0.5 * (1.0 + g.nodes[i]);
-      if (angle) {
-        const double h = std::sin(0.5 * v);
-        lo[i] = span * h * h;
-        hi[i] = span - lo[i];
-        ww[i] = 0.5 * g.weights[i] * (vb - va) * std::sqrt(lo[i] * hi[i]);  // dt = root d phi
-      } else {
-        lo[i] = lower ? v * v : span - v * v;
-        hi[i] = lower ? span - v * v : v * v;
-        ww[i] = 0.5 * g.weights[i] * (vb - va) * 2.0 * v;  // dt = 2 v dv
-      }
-      tt[i] = std::clamp(t_min + lo[i], a, b);
-    }
-    for (int i = 0; i < n; ++i) {  // the piece's cubic (no search; no Hertz edge on a table)
-      const std::array<double, 4>& c = m.piece[k];
-      const double x = tt[i] - m.knot[k];
-      pp[i] = c[0] + x * (c[1] + x * (c[2] + x * c[3]));
-    }
-    for (int i = 0; i < n; ++i) {
-      const double q = lo[i] * hi[i], root = std::sqrt(q);
-      if (!(root > 0.0)) continue;
-      const double s2 = q * inv_d2;          // sin^2(phi)
-      const double c = 1.0 - lo[i] * inv_d;  // cos(phi) = (C - t) / D
-      // y = eps - s cos(phi) = (eps - s) + s (1 - cos(phi)), 1 - cos(phi) = (t - t_min) / D.
-      add_ring_point(ww[i] * (pp[i] - p_c) / root, c, s2, (eps - s) + s * lo[i] * inv_d, s, out);
-    }
+  double a = t_min;
+  for (auto it = first;; ++it) {
+    const bool last = it == m.knot.end() || !(*it < t_end);
+    const double b = last ? t_end : *it;
+    if (b > a)
+      add_ring_piece(m.piece[k], m.knot[k], a, b, t_min, t_max, root_span, p_c, rules, nodes);
+    if (last) break;
+    a = b;
+    k = std::min(k + 1, m.piece.size() - 1);
   }
+  SlipMoments out = ring_node_sums(nodes, t_max - t_min, D, eps, s);
+  for (int i = 0; i < 6; ++i) out[i] += closed[i];
   return out;
 }
-
-// The rules of a table's ring pieces (half_ring_table).
-struct RingRules {
-  GaussLegendreRule coarse, fine;
-};
 
 // m_i(s) / (2 s): the half-ring integral over phi = beta + pi/2 in [0, theta_w] of p(|r|^2)
 // times the ring weights (add_ring_point), with |r|^2 = (s - eps)^2 + 4 eps s sin^2(phi/2) and
@@ -161,7 +245,7 @@ SlipMoments half_ring(const ExactModel<double>& m, double s, double eps, double 
   if (!m.piece.empty() && four_es > 1e-6) {
     const double t_end = std::min(1.0, (s + eps) * (s + eps));
     const auto it = std::upper_bound(m.knot.begin(), m.knot.end(), dsq);
-    if (it != m.knot.end() && *it < t_end) return half_ring_table(m, s, eps, g.coarse, g.fine);
+    if (it != m.knot.end() && *it < t_end) return half_ring_table(m, s, eps, g);
   }
   // Arc end: |r|^2 = 1 at sin^2(theta_w / 2) = (1 - dsq) / (4 eps s).
   const double theta_w =
@@ -336,7 +420,15 @@ SlipSpeedMeasure slip_speed_measure(const ExactModel<double>& model, double t,
     graded_panels(t, 1.0, layer, 1e-3 * (1.0 - t), panels);
   }
   const GaussLegendreRule g = gauss_legendre(o.nodes);
-  const RingRules ring_rule{gauss_legendre(o.ring_nodes), gauss_legendre(2 * o.ring_nodes + 4)};
+  RingRules ring_rule;
+  for (int n = 0; n <= o.ring_nodes; ++n)
+    ring_rule.gauss.push_back(n < 1 ? GaussLegendreRule{} : gauss_legendre(n));
+  ring_rule.fine = gauss_legendre(2 * o.ring_nodes + 4);
+  ring_rule.coarse_max = o.ring_nodes;
+  ring_rule.coarse_min = std::min(3, o.ring_nodes);
+  // B^(-2n) = e^(-34) (about 1e-15): r = cosh(17 / n) (plain_piece_nodes).
+  for (int n = 0; n <= o.ring_nodes; ++n)
+    ring_rule.reach.push_back(n < 1 ? INFINITY : std::cosh(17.0 / n));
   const double tol = o.ring_tolerance * load;
   if (model.piece.empty()) {
     for (const Panel& p : panels)

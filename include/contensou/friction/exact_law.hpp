@@ -86,19 +86,24 @@ struct ExactLawParameters {
 // octave of 1 + z (1 + z in [2^j, 2^(j+1))), Chebyshev of degree degree_z in x = 2 (1 + z) / 2^j -
 // 3 within it: the 6 (degree_z + 1) "functions" of octave j are the coefficients c[k][i] of T_k(x).
 // Beyond the last octave the functions are taken as 0 (tail bounds them there). All octaves
-// share the pieces in t: only the first holds them (breaks, map, index), the others their
-// coefficients only.
+// share the pieces in t (`pieces`: breaks, map, index, no coefficients); each (octave, piece)
+// has a block of 6 (degree_z + 1) (degree + 1) coefficients in `coefficients`, at offset
+// block[octave * pieces + piece]. Block 0 is all zeros: the (octave, piece) pairs whose functions
+// are below a small share of the tolerance there (large z far from t = 0, where exp(-z nu) is
+// negligible) share it (the bound of what they drop is in the build's `achieved`).
 inline constexpr int kSlipDegreeZ = 8;
 inline constexpr int kSlipOctaves = 1;  // octaves of 1 + z a piece
 struct SlipSpeedTable {
   double exponent = 1.0;  // delta
   int degree_z = kSlipDegreeZ;
   double tail = 0.0;  // largest |function| found at the top of the last octave
-  std::vector<PiecewiseChebyshev> octaves;
+  int octaves = 0;
+  PiecewiseChebyshev pieces;  // the pieces in t (functions = 6 (degree_z + 1), no coefficients)
+  std::vector<std::uint32_t> block;  // [octave][piece]: offset in coefficients
+  std::vector<double> coefficients;  // the blocks, [k_t][k_z][function] within one
   std::size_t bytes() const {
-    std::size_t b = 0;
-    for (const PiecewiseChebyshev& o : octaves) b += o.bytes();
-    return b;
+    return pieces.bytes() + coefficients.size() * sizeof(double) +
+           block.size() * sizeof(std::uint32_t);
   }
 };
 
@@ -162,7 +167,7 @@ inline int octave_of(const SlipSpeedTable& s, double z, double& x, double& dxdz)
   const int e = static_cast<int>(bits >> 52) - 1023;
   if (e < 0) return -1;
   const int j = e / W;
-  if (j >= static_cast<int>(s.octaves.size())) return -1;
+  if (j >= s.octaves) return -1;
   const double c = std::ldexp(r, j * W), den = 1.0 / (a + c);
   x = (a - c) * den * (1.0 / x_max);
   dxdz = 2.0 * c * den * den * (1.0 / x_max);
@@ -185,6 +190,14 @@ using SlipSpeedKernel = void (*)(const double* c, double x, double dxdt, double 
                                  double* g, double* gt, double* gz);
 SlipSpeedKernel slip_speed_kernel(int degree);
 
+// The coefficients of the falling part's piece holding t in octave j, with the local variable
+// x of t on the piece and dx/dt.
+inline const double* falling_block(const SlipSpeedTable& s, int j, double t, double& x,
+                                   double& dxdt) {
+  const int k = locate_piece_index(s.pieces, t, x, dxdt);
+  return s.coefficients.data() + s.block[static_cast<std::size_t>(j) * s.pieces.pieces() + k];
+}
+
 // The falling part's six functions at (t, z) and, if Slope, their derivatives in t and z.
 template <bool Slope>
 void falling_values(const SlipSpeedTable& s, double t, double z, double* g, double* gt,
@@ -196,20 +209,18 @@ void falling_values(const SlipSpeedTable& s, double t, double z, double* g, doub
   if constexpr (Slope)
     for (int i = 0; i < kLawFunctions; ++i) gt[i] = gz[i] = 0.0;
   if (j < 0) return;
+  double xt, dxdt;
+  const double* c = falling_block(s, j, t, xt, dxdt);
   if constexpr (Slope) {
-    if (const SlipSpeedKernel kernel = slip_speed_kernel(s.octaves.front().degree)) {
-      double xt, dxdt;
-      const double* c = coefficients_at(s.octaves.front(), s.octaves[j], t, xt, dxdt);
+    if (const SlipSpeedKernel kernel = slip_speed_kernel(s.pieces.degree)) {
       kernel(c, xt, dxdt, x, dxdz, g, gt, gz);
       return;
     }
   }
   double B[M], dB[M], T[NZ + 1], D[NZ + 1];
-  // The pieces in t are those of the first octave; every octave holds its coefficients.
+  chebyshev_sums(c, M, s.pieces.degree, xt, B, Slope ? dB : nullptr);
   if constexpr (Slope)
-    evaluate_chebyshev_fast(s.octaves.front(), t, B, dB, &s.octaves[j]);
-  else
-    evaluate_chebyshev_fast(s.octaves.front(), t, B, &s.octaves[j]);
+    for (int i = 0; i < M; ++i) dB[i] *= dxdt;
   chebyshev_basis<NZ, Slope>(x, T, D);
   for (int k = 0; k <= NZ; ++k)
     for (int i = 0; i < kLawFunctions; ++i) {

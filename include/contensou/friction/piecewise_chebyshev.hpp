@@ -112,13 +112,19 @@ inline int piece_of(const PiecewiseChebyshev& p, double t) {
   return lo;
 }
 
-// The coefficients of the piece holding t, with the local variable x in [-1, 1] and dx/dt.
-inline const double* locate_piece(const PiecewiseChebyshev& p, double t, double& x, double& dxdt) {
+// The piece holding t, with the local variable x in [-1, 1] and dx/dt.
+inline int locate_piece_index(const PiecewiseChebyshev& p, double t, double& x, double& dxdt) {
   t = t < -1.0 ? -1.0 : (t > 1.0 ? 1.0 : t);
   const int k = piece_of(p, t);
   dxdt = p.map[2 * k];
   x = t * dxdt + p.map[2 * k + 1];
   x = x < -1.0 ? -1.0 : (x > 1.0 ? 1.0 : x);
+  return k;
+}
+
+// The coefficients of the piece holding t, with the local variable x in [-1, 1] and dx/dt.
+inline const double* locate_piece(const PiecewiseChebyshev& p, double t, double& x, double& dxdt) {
+  const int k = locate_piece_index(p, t, x, dxdt);
   return p.coefficients.data() + static_cast<std::size_t>(k) * p.functions * (p.degree + 1);
 }
 
@@ -163,6 +169,10 @@ inline void chebyshev_basis(double x, double* T, double* D) {
 // (chebyshev_kernels.cpp). Null for other sizes.
 using ChebyshevKernel = void (*)(const double* c, double x, double* out, double* slope);
 ChebyshevKernel chebyshev_kernel(int functions, int degree, bool slope);
+
+// sum_k c[k][i] T_k(x) (and d/dx into slope if not null) of m functions of degree n from their
+// coefficients c ([k][function]): the kernel where one exists.
+void chebyshev_sums(const double* c, int m, int n, double x, double* out, double* slope);
 
 }  // namespace detail
 
