@@ -8,7 +8,10 @@
 #include <chrono>
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
 #include <stdexcept>
+#include <string>
+#include <utility>
 #include <vector>
 
 #include "contensou/friction/error.hpp"
@@ -125,6 +128,46 @@ void check(int flag, const char* what, double t) {
   if (flag < 0)
     throw std::runtime_error(std::string("CVODE ") + what + " failed with flag " +
                              std::to_string(flag) + " at t = " + std::to_string(t) + " s");
+}
+
+// The parameters furthest from the default gear's, by orders of magnitude (at least 100x, at
+// most three): the likely cause of a failed integration, named in its message.
+std::string unusual_parameters(const GearConfig& given) {
+  GearConfig g = given, reference;
+  std::vector<std::pair<double, std::string>> far;
+  for (const std::string& name : gear_parameter_names()) {
+    const double a = std::abs(*gear_parameter(g, name)),
+                 b = std::abs(*gear_parameter(reference, name));
+    if (a == b || !(a > 0.0 && b > 0.0)) continue;
+    const double decades = std::abs(std::log10(a / b));
+    if (decades >= 2.0)
+      far.emplace_back(decades, name + " = " + format_value(*gear_parameter(g, name)));
+  }
+  std::sort(far.rbegin(), far.rend());
+  std::string out;
+  for (std::size_t i = 0; i < std::min<std::size_t>(far.size(), 3); ++i)
+    out += (i ? ", " : "") + far[i].second + " (1e" +
+           std::to_string(static_cast<int>(far[i].first)) + "x off the default)";
+  return out;
+}
+
+// A failed step of the integrator: what CVODE's flag means and which inputs look responsible.
+void check_step(int flag, const char* what, double t, const GearConfig& config) {
+  if (flag >= 0) return;
+  char* name = CVodeGetReturnFlagName(flag);
+  const std::string meaning =
+      flag == CV_TOO_MUCH_WORK ? "too many steps before the next output (raise solver.max_steps, "
+                                 "or the motion is far stiffer or faster than a landing gear's)"
+      : flag == CV_ERR_FAILURE || flag == CV_CONV_FAILURE
+          ? "the step size fell to its minimum: the state grows without bound or jumps"
+          : "the integrator stopped";
+  const std::string unusual = unusual_parameters(config);
+  std::string message = std::string("CVODE ") + what + " failed at t = " + format_value(t) +
+                        " s with " + (name ? std::string(name) : "flag " + std::to_string(flag)) +
+                        ": " + meaning +
+                        (unusual.empty() ? "" : "; inputs far from a landing gear's: " + unusual);
+  std::free(name);  // CVodeGetReturnFlagName allocates
+  throw std::runtime_error(message);
 }
 
 // The samples of the analysis window: time, torsion rate psi', torsion psi.
@@ -277,10 +320,11 @@ LandingRun simulate_landing(const GearModel& model, const SolverOptions& options
       // solver.max_steps bounds the steps between two outputs, as CVodeSetMaxNumSteps does in
       // CV_NORMAL.
       if (++steps_since_output > options.max_steps)
-        check(CV_TOO_MUCH_WORK, "CVode (solver.max_steps between outputs)", reached);
+        check_step(CV_TOO_MUCH_WORK, "CVode (solver.max_steps between outputs)", reached,
+                   model.config);
       double returned = reached;
       const int flag = CVode(cv.mem, tout, cv.y, &returned, CV_ONE_STEP);
-      check(flag, "CVode", returned);
+      check_step(flag, "CVode", returned, model.config);
       check(CVodeGetCurrentTime(cv.mem, &reached), "CVodeGetCurrentTime", returned);
       if (flag == CV_ROOT_RETURN) {
         root = true;

@@ -484,7 +484,8 @@ Solution solve(const FitSetup& s) {
                           "the model is not finite at vx = " + format_value(pt.kinematics.vx) +
                               " m/s, vy = " + format_value(pt.kinematics.vy) +
                               " m/s, omega = " + format_value(pt.kinematics.omega) +
-                              " rad/s: check the units of the kinematic columns");
+                              " rad/s with R = " + format_value(s.spec.radius_m) +
+                              " m: check the units of the kinematic columns and of the radius");
   }
   const bool fixed_scales = s.noise.given && s.noise.model == NoiseModel::additive;
   const int rounds = fixed_scales ? 1 : std::max(1, s.noise.iterations);

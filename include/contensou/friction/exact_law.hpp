@@ -203,13 +203,13 @@ template <bool Slope>
 void falling_values(const SlipSpeedTable& s, double t, double z, double* g, double* gt,
                     double* gz) {
   constexpr int NZ = kSlipDegreeZ, M = kLawFunctions * (NZ + 1);
-  double x, dxdz;
+  double x = 0.0, dxdz = 0.0;  // set by octave_of when j >= 0
   const int j = octave_of(s, z, x, dxdz);
   for (int i = 0; i < kLawFunctions; ++i) g[i] = 0.0;
   if constexpr (Slope)
     for (int i = 0; i < kLawFunctions; ++i) gt[i] = gz[i] = 0.0;
   if (j < 0) return;
-  double xt, dxdt;
+  double xt = 0.0, dxdt = 0.0;
   const double* c = falling_block(s, j, t, xt, dxdt);
   if constexpr (Slope) {
     if (const SlipSpeedKernel kernel = slip_speed_kernel(s.pieces.degree)) {
