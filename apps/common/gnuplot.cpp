@@ -6,7 +6,6 @@
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
-#include <regex>
 #include <stdexcept>
 #include <utility>
 #include <vector>
@@ -19,26 +18,33 @@ bool gnuplot_available() {
 
 namespace {
 
-// The script gnuplot runs: each `set output 'NAME'` of `script` writes to a temporary name
-// instead (.NAME.tmp-PID); the pairs (temporary, final) are returned in `outputs`.
+// The script gnuplot runs: each `set output 'NAME'` (or "NAME") of `script` writes to a hidden
+// temporary name instead (.NAME.tmp-PID); the pairs (temporary, final) are returned in `outputs`.
 std::string with_temporary_outputs(const std::string& script,
                                    std::vector<std::pair<std::string, std::string>>& outputs) {
-  static const std::regex set_output(R"((set\s+output\s+)(['"])([^'"]+)\2)");
-  const std::string suffix = ".tmp-" + std::to_string(::getpid());
+  const std::string suffix = ".tmp-" + std::to_string(::getpid()), key = "set output ";
   std::string out;
-  auto last = script.cbegin();
-  for (std::sregex_iterator it(script.begin(), script.end(), set_output), end; it != end; ++it) {
-    const std::smatch& m = *it;
-    const std::string final_name = m[3].str();
-    const std::size_t slash = final_name.rfind('/') + 1;  // 0 without a folder
-    const std::string tmp =
-        final_name.substr(0, slash) + "." + final_name.substr(slash) + suffix;  // hidden
-    outputs.emplace_back(tmp, final_name);
-    out.append(last, m[0].first);
-    out += m[1].str() + m[2].str() + tmp + m[2].str();
-    last = m[0].second;
+  std::size_t pos = 0;
+  while (pos < script.size()) {
+    std::size_t end = script.find('\n', pos);
+    end = end == std::string::npos ? script.size() : end + 1;
+    std::string line = script.substr(pos, end - pos);
+    const std::size_t at = line.find_first_not_of(" \t");
+    if (at != std::string::npos && line.compare(at, key.size(), key) == 0) {
+      const std::size_t open = line.find_first_of("'\"", at + key.size());
+      const std::size_t close = open == std::string::npos ? open : line.find(line[open], open + 1);
+      if (close != std::string::npos) {
+        const std::string final_name = line.substr(open + 1, close - open - 1);
+        const std::size_t slash = final_name.rfind('/') + 1;  // 0 without a folder
+        const std::string tmp =
+            final_name.substr(0, slash) + "." + final_name.substr(slash) + suffix;  // hidden
+        outputs.emplace_back(tmp, final_name);
+        line.replace(open + 1, close - open - 1, tmp);
+      }
+    }
+    out += line;
+    pos = end;
   }
-  out.append(last, script.cend());
   return out;
 }
 
