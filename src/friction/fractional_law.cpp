@@ -16,10 +16,7 @@ void validate(const FractionalLaw<double>& p) {
 FractionalWithJacobian fractional_resultants_with_jacobian(const FractionalLaw<double>& p,
                                                            const Kinematics<double>& k0) {
   detail::check_law(p);
-  require_finite("vx", k0.vx);
-  require_finite("vy", k0.vy);
-  require_finite("omega", k0.omega);
-  detail::check_rim_speed(k0.omega, p.radius);
+  detail::check_kinematics(k0.vx, k0.vy, k0.omega, p.radius);
   // Homogeneous of degree 0 in (v, u, eps): evaluate on scaled velocities, divide J by s.
   // One reciprocal per square root; everything else is multiplication.
   const double R = p.radius;

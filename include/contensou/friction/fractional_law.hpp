@@ -90,15 +90,20 @@ void check_law(const FractionalLaw<T>& p) {
   const double slope =
       16.0 * std::max(force, torque) * std::max(1.0, p.radius) / p.regularization_speed;
   if (!(slope < std::numeric_limits<double>::max()))
-    throw InvalidArgument("F0, M0",
-                          format_value(value_of(p.F0)) + ", " + format_value(value_of(p.M0)),
+    throw InvalidArgument("F0, M0, radius",
+                          format_value(value_of(p.F0)) + " N, " + format_value(value_of(p.M0)) +
+                              " N m, " + format_value(p.radius) + " m",
                           "too large: the forces, torques or derivatives (up to 16 max(F0, M0) "
-                          "max(1, R) / regularization_speed) would overflow a double; use larger "
-                          "units (kN, kN m)");
+                          "max(1, R) / regularization_speed) would overflow a double; check the "
+                          "radius, or use larger units (kN, kN m)");
 }
 
-// The rim speed omega R must be a double (omega = 1e300 on R = 1e10 is refused, not NaN).
-inline void check_rim_speed(double omega, double radius) {
+// The kinematics finite, and the rim speed omega R a double (omega = 1e300 on R = 1e10 is
+// refused, not NaN).
+inline void check_kinematics(double vx, double vy, double omega, double radius) {
+  require_finite("vx", vx);
+  require_finite("vy", vy);
+  require_finite("omega", omega);
   if (!(std::abs(omega) * radius <= std::numeric_limits<double>::max()))
     throw InvalidArgument("omega", format_value(omega),
                           "times the radius " + format_value(radius) +
@@ -112,10 +117,7 @@ template <class T>
 Resultants<T> fractional_resultants(const FractionalLaw<T>& p, const Kinematics<T>& k0) {
   using std::sqrt;
   detail::check_law(p);
-  require_finite("vx", value_of(k0.vx));
-  require_finite("vy", value_of(k0.vy));
-  require_finite("omega", value_of(k0.omega));
-  detail::check_rim_speed(value_of(k0.omega), p.radius);
+  detail::check_kinematics(value_of(k0.vx), value_of(k0.vy), value_of(k0.omega), p.radius);
   const double R = p.radius;
   const double s = std::max({std::abs(value_of(k0.vx)), std::abs(value_of(k0.vy)),
                              std::abs(value_of(k0.omega)) * R, p.regularization_speed});
