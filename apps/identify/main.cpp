@@ -40,62 +40,74 @@ std::pair<std::string, double> parse_fix(const std::string& s) {
   return {s.substr(0, eq), v};
 }
 
-int run_fit(const std::string& data_path, double radius, std::optional<double> load,
-            const std::string& profile_spec, std::optional<double> pressure,
-            const std::vector<std::string>& fixes, const std::string& loss, double loss_scale,
-            const std::string& noise_model, const std::vector<double>& noise_scale,
-            const std::string& json_path, const std::string& plots_dir, bool loop_on, double alpha,
-            bool speed_inside, int failing_point, int smoothing, bool profile_clip) {
+// What the fit's command line gives (main binds the options to these fields).
+struct FitArgs {
+  std::string data_path, json_path, plots_dir, profile_spec, columns;
+  std::string loss = "none", noise_model = "additive";
+  double radius = 0.0, loss_scale = 2.0, alpha = 1e-3;
+  std::optional<double> load, pressure;
+  std::vector<std::string> fixes;
+  std::vector<double> noise_scale;
+  bool no_loop = false, speed_inside = true, profile_clip = false;
+  int failing_point = -1, smoothing = 0;
+};
+
+// The library's options from the command line; the profile chosen and where N came from.
+IdentificationOptions identification_options(const FitArgs& a, ProfileChoice& profile,
+                                             std::string& load_source) {
   IdentificationOptions o;
-  o.radius_m = radius;
-  require_positive("--radius", radius);
-  if (smoothing > 0 && (profile_spec.empty() || !std::filesystem::exists(profile_spec)))
+  o.radius_m = a.radius;
+  require_positive("--radius", a.radius);
+  if (a.smoothing > 0 && (a.profile_spec.empty() || !std::filesystem::exists(a.profile_spec)))
     throw std::runtime_error("--profile-smoothing needs --profile with a CSV file");
-  ProfileChoice profile;
-  if (load) require_positive("--normal-load", *load);
-  o.normal_load_n = load;
-  if (!profile_spec.empty()) {
-    profile = choose_profile(profile_spec, smoothing, profile_clip);
-    const ProfileChoice& p = profile;
-    o.profile = p.profile;
-    const std::optional<double> ps = p.reference_pressure ? p.reference_pressure : pressure;
+  if (a.load) require_positive("--normal-load", *a.load);
+  o.normal_load_n = a.load;
+  if (!a.profile_spec.empty()) {
+    profile = choose_profile(a.profile_spec, a.smoothing, a.profile_clip);
+    o.profile = profile.profile;
+    const std::optional<double> ps =
+        profile.reference_pressure ? profile.reference_pressure : a.pressure;
     if (ps) {
       ContactPatch patch;
-      patch.radius_m = radius;
+      patch.radius_m = a.radius;
       patch.reference_pressure_pa = *ps;
-      patch.profile = p.profile;
+      patch.profile = profile.profile;
       o.normal_load_n = normal_load(patch);
+      load_source = "from the profile's pressure";
     }
   }
-  for (const std::string& f : fixes) o.fixed.insert(parse_fix(f));
-  o.failing_point = failing_point;
-  o.loss = loss == "huber"    ? RobustLoss::huber
-           : loss == "cauchy" ? RobustLoss::cauchy
-                              : RobustLoss::none;
-  o.loss_scale = loss_scale;
-  o.noise_model = noise_model == "relative" ? NoiseModel::relative : NoiseModel::additive;
-  if (!noise_scale.empty()) {
-    if (noise_scale.size() != 3)
+  for (const std::string& f : a.fixes) o.fixed.insert(parse_fix(f));
+  o.failing_point = a.failing_point;
+  o.loss = a.loss == "huber"    ? RobustLoss::huber
+           : a.loss == "cauchy" ? RobustLoss::cauchy
+                                : RobustLoss::none;
+  o.loss_scale = a.loss_scale;
+  o.noise_model = a.noise_model == "relative" ? NoiseModel::relative : NoiseModel::additive;
+  if (!a.noise_scale.empty()) {
+    if (a.noise_scale.size() != 3)
       throw std::runtime_error("--noise-scale needs three values: Fx,Fy,Mz");
-    o.noise_scale = std::array<double, 3>{noise_scale[0], noise_scale[1], noise_scale[2]};
+    o.noise_scale = std::array<double, 3>{a.noise_scale[0], a.noise_scale[1], a.noise_scale[2]};
   }
-  const MeasuredData data = read_measured_csv(data_path);
-  const app::RunInfo info = describe_run(data_path, data, radius, o.normal_load_n, profile);
-  if (!loop_on) {
-    const FitReport fit = fit_fractional_law(data, o);
-    std::printf("%s %s: fractional law (seed eqs. 5-7)\n%s", kName, kVersion,
-                app::format_table(info, fit).c_str());
-    if (!plots_dir.empty() && app::write_plots(plots_dir, data, fit, radius))
-      std::printf("pictures: %s/fit_*.png\n", plots_dir.c_str());
-    if (!json_path.empty()) {
-      write_file_atomically(json_path, fit_report_json(info, fit) + "\n");
-      std::printf("report: %s\n", json_path.c_str());
-    }
-    return 0;
+  return o;
+}
+
+int run_fit_only(const FitArgs& a, const MeasuredData& data, const IdentificationOptions& o,
+                 const app::RunInfo& info) {
+  const FitReport fit = fit_fractional_law(data, o);
+  std::printf("%s %s: fractional law (seed eqs. 5-7)\n%s", kName, kVersion,
+              app::format_table(info, fit).c_str());
+  if (!a.plots_dir.empty() && app::write_plots(a.plots_dir, data, fit, a.radius))
+    std::printf("pictures: %s/fit_*.png\n", a.plots_dir.c_str());
+  if (!a.json_path.empty()) {
+    write_file_atomically(a.json_path, fit_report_json(info, fit) + "\n");
+    std::printf("report: %s\n", a.json_path.c_str());
   }
-  ClosedLoopOptions lo;
-  lo.alpha = alpha;
-  lo.speed_inside_integrals = speed_inside;
+  return 0;
+}
+
+ClosedLoopReport close_the_loop_with_progress(const MeasuredData& data,
+                                              const IdentificationOptions& o,
+                                              ClosedLoopOptions lo) {
   // Progress for people: one line, rewritten in place, on a terminal; in scripts and pipes
   // stderr keeps errors only.
   bool progress_shown = false;
@@ -109,14 +121,22 @@ int run_fit(const std::string& data_path, double radius, std::optional<double> l
     if (progress_shown) std::fprintf(stderr, "\r\033[K");
     progress_shown = false;
   };
-  ClosedLoopReport loop;
   try {
-    loop = close_the_loop(data, o, lo);
+    ClosedLoopReport loop = close_the_loop(data, o, lo);
+    end_progress();
+    return loop;
   } catch (...) {
     end_progress();
     throw;
   }
-  end_progress();
+}
+
+int run_loop(const FitArgs& a, const MeasuredData& data, const IdentificationOptions& o,
+             const app::RunInfo& info) {
+  ClosedLoopOptions lo;
+  lo.alpha = a.alpha;
+  lo.speed_inside_integrals = a.speed_inside;
+  const ClosedLoopReport loop = close_the_loop_with_progress(data, o, lo);
   std::printf("%s %s: base model, the fractional law (seed eqs. 5-7)\n%s", kName, kVersion,
               app::format_table(info, loop.base).c_str());
   std::printf("%s", app::format_loop(loop).c_str());
@@ -125,18 +145,33 @@ int run_fit(const std::string& data_path, double radius, std::optional<double> l
         "\nfinal model (%s):\n%s",
         loop.final_spec.uses_exact() ? "exact integrals over the profile" : "fractional law",
         app::format_table(info, loop.final_fit).c_str());
-  if (!plots_dir.empty()) {
-    const bool a = app::write_plots(plots_dir, data, loop.final_fit, radius);
-    const bool b = app::write_loop_plots(plots_dir, data, loop, radius);
-    if (a && b)
-      std::printf("pictures: %s/fit_*.png (final model), %s/loop_step_*.png\n", plots_dir.c_str(),
-                  plots_dir.c_str());
+  if (!a.plots_dir.empty()) {
+    const bool p = app::write_plots(a.plots_dir, data, loop.final_fit, a.radius);
+    const bool q = app::write_loop_plots(a.plots_dir, data, loop, a.radius);
+    if (p && q)
+      std::printf("pictures: %s/fit_*.png (final model), %s/loop_step_*.png\n", a.plots_dir.c_str(),
+                  a.plots_dir.c_str());
   }
-  if (!json_path.empty()) {
-    write_file_atomically(json_path, loop_report_json(info, loop) + "\n");
-    std::printf("report: %s\n", json_path.c_str());
+  if (!a.json_path.empty()) {
+    write_file_atomically(a.json_path, loop_report_json(info, loop) + "\n");
+    std::printf("report: %s\n", a.json_path.c_str());
   }
   return 0;
+}
+
+int run_fit(const FitArgs& a) {
+  ProfileChoice profile;
+  std::string load_source;
+  IdentificationOptions o = identification_options(a, profile, load_source);
+  const MeasuredData data = read_measured_csv(a.data_path, parse_column_renames(a.columns));
+  if (!o.normal_load_n)
+    if (const std::optional<LoadFromData> l = normal_load_from_data(data)) {
+      o.normal_load_n = l->mean_n;  // f = F0 / N is then reported
+      load_source = l->description();
+    }
+  app::RunInfo info = describe_run(a.data_path, data, a.radius, o.normal_load_n, profile);
+  info.normal_load_source = load_source;
+  return a.no_loop ? run_fit_only(a, data, o, info) : run_loop(a, data, o, info);
 }
 
 struct SimulateArgs {
@@ -221,40 +256,38 @@ int main(int argc, char** argv) {
       "diagrams Fx, Fy, Mz against the sliding velocity and spin (CSV, theory.md section 6),\n"
       "and reports the parameters with 95 % confidence intervals."};
   app.set_version_flag("--version", std::string(kName) + " " + kVersion);
-  std::string data_path, json_path, plots_dir, profile_spec, loss = "none",
-                                                             noise_model = "additive";
-  double radius = 0.0, loss_scale = 2.0;
-  std::optional<double> load, pressure;
-  std::vector<std::string> fixes;
-  std::vector<double> noise_scale;
-  bool no_loop = false, speed_inside = true, effective_speed = false, verbose = false,
-       profile_clip = false;
-  int failing_point = -1, smoothing = 0;
-  double alpha = 1e-3;
-  app.add_option("data", data_path,
+  FitArgs a;
+  bool effective_speed = false, verbose = false;
+  app.add_option("data", a.data_path,
                  "measured diagrams (CSV: vx_mps, vy_mps, omega_radps, Fx_N, ...)");
-  auto* radius_opt = app.add_option("--radius", radius, "patch radius R [m]");
+  auto* radius_opt = app.add_option("--radius", a.radius, "patch radius R [m]");
   auto* load_opt =
-      app.add_option("--normal-load", load, "normal load N [N] (f = F0/N is reported)");
-  app.add_option("--profile", profile_spec,
+      app.add_option("--normal-load", a.load, "normal load N [N] (f = F0/N is reported)");
+  app.add_option("--profile", a.profile_spec,
                  "pressure profile: CSV rho,pressure_Pa or uniform|hertz|seed-tire (fixes the "
                  "shape constants; with a CSV or --pressure it also gives N)")
       ->excludes(load_opt);
-  app.add_option("--pressure", pressure, "reference pressure p* [Pa] for a built-in profile");
-  app.add_option("--json", json_path, "write the report as JSON (whole or not at all)");
-  app.add_option("--plots", plots_dir, "write pictures (PNG via gnuplot) and their data here");
-  app.add_option("--fix", fixes, "hold a parameter fixed: NAME=VALUE (F0_N, a, M0_Nm, m, kx)");
-  app.add_option("--loss", loss, "robust loss")->check(CLI::IsMember({"none", "huber", "cauchy"}));
-  app.add_option("--loss-scale", loss_scale, "robust loss threshold in noise scales")
+  app.add_option("--pressure", a.pressure, "reference pressure p* [Pa] for a built-in profile");
+  app.add_option("--json", a.json_path, "write the report as JSON (whole or not at all)");
+  app.add_option("--plots", a.plots_dir, "write pictures (PNG via gnuplot) and their data here");
+  app.add_option("--columns", a.columns,
+                 "read columns under other names: QUANTITY=COLUMN,... with QUANTITY one of vx, "
+                 "vy, omega, Fx, Fy, Mz, Fz, t; a unit in the name ('Speed [km/h]') or a units "
+                 "row is converted");
+  app.add_option("--fix", a.fixes, "hold a parameter fixed: NAME=VALUE (F0_N, a, M0_Nm, m, kx)");
+  app.add_option("--loss", a.loss, "robust loss")
+      ->check(CLI::IsMember({"none", "huber", "cauchy"}));
+  app.add_option("--loss-scale", a.loss_scale, "robust loss threshold in noise scales")
       ->check(CLI::PositiveNumber);
-  app.add_option("--noise-model", noise_model, "noise: additive (constant per channel) or relative")
+  app.add_option("--noise-model", a.noise_model,
+                 "noise: additive (constant per channel) or relative")
       ->check(CLI::IsMember({"additive", "relative"}));
-  app.add_option("--noise-scale", noise_scale, "given noise scales Fx,Fy,Mz (else estimated)")
+  app.add_option("--noise-scale", a.noise_scale, "given noise scales Fx,Fy,Mz (else estimated)")
       ->delimiter(',');
-  app.add_flag("--no-loop", no_loop, "fit the fractional law only; do not close the loop");
-  app.add_option("--alpha", alpha, "closed loop: family-wise level of the LR test per step")
+  app.add_flag("--no-loop", a.no_loop, "fit the fractional law only; do not close the loop");
+  app.add_option("--alpha", a.alpha, "closed loop: family-wise level of the LR test per step")
       ->check(CLI::Range(1e-12, 0.5));
-  auto* inside = app.add_flag("--speed-inside-integrals", speed_inside,
+  auto* inside = app.add_flag("--speed-inside-integrals", a.speed_inside,
                               "closed loop: slip-speed friction at the local slip speed inside "
                               "the exact integrals (the default)");
   app.add_flag("--effective-speed", effective_speed,
@@ -262,15 +295,15 @@ int main(int argc, char** argv) {
                "outside the exact integrals instead")
       ->excludes(inside);
 
-  app.add_option("--profile-smoothing", smoothing,
+  app.add_option("--profile-smoothing", a.smoothing,
                  "fit the --profile CSV by a Chebyshev series in rho^2 of N terms (noisy film "
                  "data) instead of interpolating it; the fit's residual is reported")
       ->check(CLI::Range(1, 64));
-  app.add_flag("--profile-clip", profile_clip,
+  app.add_flag("--profile-clip", a.profile_clip,
                "clip a --profile CSV that dips below zero at zero (otherwise refused)");
   app.add_flag("--verbose", verbose, "show the solver's own log (Ceres, glog) on stderr");
   // Testing only (hidden): the residual of this data point fails to evaluate.
-  app.add_option("--test-failing-point", failing_point)->group("");
+  app.add_option("--test-failing-point", a.failing_point)->group("");
 
   SimulateArgs sim;
   auto* simulate =
@@ -316,26 +349,25 @@ int main(int argc, char** argv) {
   } catch (const CLI::ParseError& e) {
     return app.exit(e);
   }
-  if (effective_speed) speed_inside = false;
+  if (effective_speed) a.speed_inside = false;
   // Ceres logs through glog: quiet unless asked for.
   FLAGS_logtostderr = true;
   FLAGS_minloglevel = verbose ? google::GLOG_INFO : google::GLOG_FATAL;
   google::InitGoogleLogging(argv[0]);
   try {
     if (simulate->parsed()) return app::finish_output(run_simulate(sim));
-    if (data_path.empty()) throw std::runtime_error("no data file given (see --help)");
+    if (a.data_path.empty()) throw std::runtime_error("no data file given (see --help)");
     if (radius_opt->count() == 0)
       throw std::runtime_error("--radius is required (patch radius in m)");
-    if (pressure && profile_spec.empty())
-      throw std::runtime_error("--pressure " + format_value(*pressure) +
+    if (a.pressure && a.profile_spec.empty())
+      throw std::runtime_error("--pressure " + format_value(*a.pressure) +
                                " is the reference pressure of a built-in --profile (uniform, "
                                "hertz, seed-tire); give one, or the load as --normal-load");
     std::optional<app::OutputFolderLock> lock;
-    if (!plots_dir.empty()) lock.emplace(plots_dir);  // before the fit: a second run stops here
-    return app::finish_output(run_fit(data_path, radius, load, profile_spec, pressure, fixes, loss,
-                                      loss_scale, noise_model, noise_scale, json_path, plots_dir,
-                                      !no_loop, alpha, speed_inside, failing_point, smoothing,
-                                      profile_clip));
+    if (!a.plots_dir.empty()) lock.emplace(a.plots_dir);  // before the fit: a second run stops
+    const int status = run_fit(a);
+    if (lock && status == 0) lock->commit();  // an earlier run's plots not redrawn are removed
+    return app::finish_output(status);
   } catch (const std::exception& e) {
     std::fprintf(stderr, "%s: error: %s\n", kName, e.what());
     return 1;

@@ -116,6 +116,8 @@ std::string format_table(const RunInfo& info, const FitReport& fit) {
   s += "data: " + info.file + ", " + std::to_string(info.points) + " points, " +
        std::to_string(info.values) + " measured values, R = " + fmt("%g", info.radius_m) + " m";
   if (info.normal_load_n) s += ", N = " + fmt("%g", *info.normal_load_n) + " N";
+  if (!info.normal_load_source.empty()) s += " (" + info.normal_load_source + ")";
+  for (const std::string& note : info.column_notes) s += "\ncolumn: " + note;
   if (!info.profile.empty()) {
     s += "\nprofile: " + info.profile;
     if (info.profile_rms_residual_pa)

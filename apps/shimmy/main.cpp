@@ -683,7 +683,7 @@ int run(const Options& o) {
     std::cout << to_json(config).dump(2) << '\n';
     return 0;
   }
-  const app::OutputFolderLock lock(o.out);               // a second run into o.out stops here
+  app::OutputFolderLock lock(o.out);                     // a second run into o.out stops here
   for (const std::string& name : scenarios_to_run(o)) {  // every scenario checked before any runs
     std::vector<std::string> sets = named_scenario(name).overrides;
     sets.insert(sets.end(), o.overrides.begin(), o.overrides.end());
@@ -704,8 +704,11 @@ int run(const Options& o) {
   }
   if (o.maps) run_maps(config, o.out, o.map_size, o.threads, t, summary);
   write_file_atomically(o.out + "/summary.json", summary.dump(2) + "\n");
-  std::printf("wrote %s/summary.json, CSV time histories and PNGs%s\n", o.out.c_str(),
+  const int stale = lock.commit();  // an earlier run's files this one did not rewrite
+  std::printf("wrote %s/summary.json, CSV time histories and PNGs%s", o.out.c_str(),
               names.empty() ? "" : " (a folder per scenario)");
+  if (stale > 0) std::printf("; removed %d file(s) an earlier run had written there", stale);
+  std::printf("\n");
   return 0;
 }
 

@@ -1,6 +1,7 @@
 #include "contensou/identification/measured_data.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <sstream>
@@ -39,72 +40,117 @@ bool header_looks_like_data(const CsvTable& t) {
 
 // A column of the file that is not read but looks like a misspelt known column (or the same
 // quantity in another unit) while that column is absent: the data would be silently lost.
-void refuse_near_misses(const CsvTable& t) {
-  for (const std::string& k : kKnownColumns) {
-    if (t.column(k) >= 0) continue;
-    const std::string close = t.closest_column(k, kKnownColumns);
+void refuse_near_misses(const CsvTable& t, const LabColumns& cols) {
+  std::vector<std::string> read = kKnownColumns;  // not suggested: the columns read anyway
+  for (const LabColumn& c : cols.column)
+    if (c.present()) read.push_back(t.header[static_cast<std::size_t>(c.index)]);
+  for (int q = 0; q < kMeasuredQuantities; ++q) {
+    if (cols.column[q].present()) continue;
+    const std::string k = si_column_name(static_cast<MeasuredQuantity>(q));
+    const std::string close = t.closest_column(k, read);
     if (close.empty()) continue;
     const int col = t.column(close);
     throw ParseError(t.file, t.header_line, 0,
                      "column '" + close + "' (" + std::to_string(col + 1) +
                          ") is not a column this reader knows: did you mean '" + k +
                          "'? (columns: vx_mps, vy_mps, omega_radps, Fx_N, Fy_N, Mz_Nm, Fz_N, t_s, "
-                         "in SI units; rename it, or convert the unit)");
+                         "or the same with a unit: 'vx [km/h]', omega_rpm; or map it: --columns " +
+                         quantity_name(static_cast<MeasuredQuantity>(q)) + "=NAME)");
   }
 }
 
 }  // namespace
 
-MeasuredData read_measured_csv(const std::string& path) {
+namespace {
+
+// A missing required column, a near miss, no channel: refused naming the header line.
+void require_columns(const CsvTable& t, const LabColumns& cols) {
+  for (MeasuredQuantity q : {MeasuredQuantity::vx, MeasuredQuantity::vy, MeasuredQuantity::omega})
+    if (!cols[q].present())
+      throw ParseError(t.file, t.header_line, 0,
+                       std::string("missing required column '") + si_column_name(q) + "'" +
+                           did_you_mean(t, si_column_name(q)) + " (or give its name: --columns " +
+                           quantity_name(q) + "=NAME)");
+  refuse_near_misses(t, cols);
+  if (!cols[MeasuredQuantity::Fx].present() && !cols[MeasuredQuantity::Fy].present() &&
+      !cols[MeasuredQuantity::Mz].present())
+    throw ParseError(t.file, t.header_line, 0, "no measured channel (need Fx_N, Fy_N or Mz_Nm)");
+}
+
+// A cell of a column in SI (nullopt when empty or the column is absent).
+std::optional<double> si_value(const CsvTable& t, const CsvRow& row, const LabColumn& c) {
+  if (!c.present()) return std::nullopt;
+  const std::optional<double> v = t.number(row, c.index);
+  if (!v) return v;
+  const double si = *v * c.to_si;
+  if (!std::isfinite(si))
+    throw t.cell_error(row.line, c.index, format_value(*v) + " " + c.unit + " overflows in SI");
+  return si;
+}
+
+}  // namespace
+
+MeasuredData read_measured_csv(const std::string& path, const ColumnRenames& renames) {
   const CsvTable t = read_csv(path);
-  const char* required[3] = {"vx_mps", "vy_mps", "omega_radps"};
   if (header_looks_like_data(t))
     throw ParseError(path, t.header_line, 0,
                      "the first row holds numbers, not column names: the file needs a header row "
                      "(vx_mps,vy_mps,omega_radps and at least one of Fx_N,Fy_N,Mz_Nm)");
-  int kin[3];
-  for (int i = 0; i < 3; ++i) {
-    kin[i] = t.column(required[i]);
-    if (kin[i] < 0)
-      throw ParseError(path, t.header_line, 0,
-                       std::string("missing required column '") + required[i] + "'" +
-                           did_you_mean(t, required[i]));
-  }
-  refuse_near_misses(t);
-  int ch[kChannels];
-  bool any = false;
-  for (int c = 0; c < kChannels; ++c) {
-    ch[c] = t.column(kChannelColumns[c]);
-    any = any || ch[c] >= 0;
-  }
-  if (!any)
-    throw ParseError(path, t.header_line, 0, "no measured channel (need Fx_N, Fy_N or Mz_Nm)");
-  const int fz = t.column("Fz_N"), ts = t.column("t_s");
+  const LabHeader header{t.header, t.rows.empty() ? nullptr : &t.rows.front().cells, path,
+                         t.header_line, t.rows.empty() ? 0 : t.rows.front().line};
+  const LabColumns cols = resolve_lab_columns(header, renames);
+  require_columns(t, cols);
   MeasuredData data;
   data.source = path;
-  for (const CsvRow& row : t.rows) {
+  data.column_notes = cols.notes();
+  const LabColumn& fz = cols[MeasuredQuantity::Fz];
+  for (std::size_t r = cols.units_row ? 1 : 0; r < t.rows.size(); ++r) {
+    const CsvRow& row = t.rows[r];
     MeasuredPoint p;
     p.line = row.line;
     double k[3];
     for (int i = 0; i < 3; ++i) {
-      const std::optional<double> v = t.number(row, kin[i]);
-      if (!v) throw t.cell_error(row.line, kin[i], "empty (the kinematics must be given)");
+      const LabColumn& c = cols.column[i];
+      const std::optional<double> v = si_value(t, row, c);
+      if (!v) throw t.cell_error(row.line, c.index, "empty (the kinematics must be given)");
       k[i] = *v;
     }
     p.kinematics = {k[0], k[1], k[2]};
-    for (int c = 0; c < kChannels; ++c)
-      if (ch[c] >= 0) p.force[c] = t.number(row, ch[c]);
-    if (fz >= 0) {
-      p.normal_load = t.number(row, fz);
-      if (p.normal_load && !(*p.normal_load > 0.0))
-        throw t.cell_error(row.line, fz, format_value(*p.normal_load) + " must be positive");
-    }
-    if (ts >= 0) p.time = t.number(row, ts);
+    for (int c = 0; c < kChannels; ++c) p.force[c] = si_value(t, row, cols.column[3 + c]);
+    p.normal_load = si_value(t, row, fz);
+    if (p.normal_load && !(*p.normal_load > 0.0))
+      throw t.cell_error(row.line, fz.index, format_value(*p.normal_load) + " must be positive");
+    p.time = si_value(t, row, cols[MeasuredQuantity::t]);
     data.points.push_back(p);
   }
   if (data.points.empty())
-    throw ParseError(path, t.header_line, 0, "no data rows after the header");
+    throw ParseError(path, t.header_line, 0,
+                     cols.units_row ? "no data rows after the header and its units row"
+                                    : "no data rows after the header");
   return data;
+}
+
+std::optional<LoadFromData> normal_load_from_data(const MeasuredData& data) {
+  LoadFromData load;
+  double sum = 0.0;
+  for (const MeasuredPoint& p : data.points)
+    if (p.normal_load) {
+      sum += *p.normal_load;
+      ++load.rows;
+    }
+  if (load.rows == 0) return std::nullopt;
+  load.mean_n = sum / load.rows;
+  for (const MeasuredPoint& p : data.points)
+    if (p.normal_load)
+      load.spread = std::max(load.spread, std::abs(*p.normal_load - load.mean_n) / load.mean_n);
+  return load;
+}
+
+std::string LoadFromData::description() const {
+  char buf[128];
+  std::snprintf(buf, sizeof buf, "mean of the Fz column over %d rows, within +-%.2g %%", rows,
+                100.0 * spread);
+  return buf;
 }
 
 void write_measured_csv(const std::string& path, const MeasuredData& data,

@@ -74,6 +74,8 @@ nlohmann::json fit_report(const ReportInput& info, const FitReport& base) {
                 {"radius_m", info.radius_m},
                 {"normal_load_N",
                  info.normal_load_n ? nlohmann::json(*info.normal_load_n) : nlohmann::json()}};
+  if (!info.normal_load_source.empty()) r["input"]["normal_load_source"] = info.normal_load_source;
+  if (!info.column_notes.empty()) r["input"]["columns_converted"] = info.column_notes;
   if (!info.profile.empty()) {
     r["input"]["profile"] = info.profile;
     if (info.profile_rms_residual_pa) {
@@ -203,14 +205,17 @@ ProfileChoice choose_profile(const std::string& spec, int smoothing, bool clip) 
 
 ReportInput describe_run(const std::string& file, const MeasuredData& data, double radius_m,
                          std::optional<double> normal_load_n, const ProfileChoice& profile) {
-  return {file,
-          static_cast<int>(data.points.size()),
-          data.count(0) + data.count(1) + data.count(2),
-          radius_m,
-          normal_load_n,
-          profile.description,
-          profile.rms_residual_pa,
-          profile.max_residual_pa};
+  ReportInput in;
+  in.file = file;
+  in.points = static_cast<int>(data.points.size());
+  in.values = data.count(0) + data.count(1) + data.count(2);
+  in.radius_m = radius_m;
+  in.normal_load_n = normal_load_n;
+  in.column_notes = data.column_notes;
+  in.profile = profile.description;
+  in.profile_rms_residual_pa = profile.rms_residual_pa;
+  in.profile_max_residual_pa = profile.max_residual_pa;
+  return in;
 }
 
 }  // namespace contensou

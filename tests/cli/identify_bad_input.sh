@@ -47,11 +47,11 @@ expect "failed evaluation, law" \
   "$app" "$good" --radius 0.087 --no-loop --test-failing-point 3 --json "$dir/report.json"
 expect "failed evaluation, loop" "failed: Residual and Jacobian evaluation failed" \
   "$app" "$good" --radius 0.087 --test-failing-point 0 --json "$dir/report.json"
-printf 'vx_mps,vy_mps,omega_rpm,Fx_N\n1,0,10,-5\n' > "$dir/unit.csv"
-expect "other unit" "missing required column 'omega_radps' (did you mean 'omega_rpm'?)" \
+printf 'vx_mps,vy_mps,omega_hz,Fx_N\n1,0,10,-5\n' > "$dir/unit.csv"
+expect "other unit" "column 'omega_hz' (3): unit 'hz' of omega is not one this reader converts (omega: rad/s, deg/s, rpm)" \
   "$app" "$dir/unit.csv" --radius 0.1 --json "$dir/report.json"
-printf 'vx_mps,vy_mps,omega_radps,Fx_n\n1,0,10,-5\n' > "$dir/case.csv"
-expect "misspelt channel" "column 'Fx_n' (4) is not a column this reader knows: did you mean 'Fx_N'?" \
+printf 'vx_mps,vy_mps,omega_radps,Fxx_N\n1,0,10,-5\n' > "$dir/case.csv"
+expect "misspelt channel" "column 'Fxx_N' (4) is not a column this reader knows: did you mean 'Fx_N'?" \
   "$app" "$dir/case.csv" --radius 0.1 --json "$dir/report.json"
 { echo 'vx_mps,vy_mps,omega_radps,Fx_N,Fy_N,Mz_Nm'; for i in 1 2 3 4 5 6 7 8; do echo '0,0,0,0.1,-0.2,0'; done; } > "$dir/rest.csv"
 expect "every row at rest" "every row is at rest (v = omega = 0)" \

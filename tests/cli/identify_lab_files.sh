@@ -80,5 +80,50 @@ if "$app" "$plain" --radius 0.087 --profile seed-tire --profile-smoothing 6 > /d
 else
   echo "ok   --profile-smoothing without a CSV is refused"
 fi
+
+# The same diagrams with units a lab uses: km/h, rpm, kN and kN m in brackets; a units row
+# under bare names; other names mapped with --columns. The fit must be the plain file's (to the
+# print precision of the converted values), and the report must name every conversion.
+lab() {  # lab NAME HEADER UNITS_ROW: the plain data as a lab writes them, in $dir/NAME.csv
+  python3 - "$plain" "$dir/$1.csv" "$2" "$3" <<'PY'
+import math, sys
+src, out, header, units = sys.argv[1:]
+to_si = {"km/h": 1 / 3.6, "rpm": 2 * math.pi / 60, "kN": 1e3, "kN m": 1e3, "m/s": 1, "rad/s": 1,
+         "N": 1, "N m": 1, "s": 1, "deg/s": math.pi / 180}
+names = header.split(",")
+cell_units = units.split(",") if units else [n[n.index("[") + 1:-1] for n in names]
+rows = [l.strip().split(",") for l in open(src) if not l.startswith("#")][1:]
+with open(out, "w") as f:
+    f.write(header + "\n" + (units + "\n" if units else ""))
+    for r in rows:
+        f.write(",".join("" if c == "" else repr(float(c) / to_si[u]) for c, u in zip(r, cell_units)) + "\n")
+PY
+}
+same_fit() {  # same_fit NAME: base parameters within 1e-7 of the plain file's, conversions named
+  python3 - "$dir/plain.json" "$dir/$1.json" <<'PY'
+import json, sys
+a, b = (json.load(open(p)) for p in sys.argv[1:])
+pa = {k: p["value"] for k, p in a["base"]["params"].items()}
+pb = {k: p["value"] for k, p in b["base"]["params"].items()}
+bad = [k for k in pa if abs(pa[k] - pb[k]) > 1e-7 * (1 + abs(pa[k]))]
+if bad or not b["input"].get("columns_converted"):
+    sys.exit(f"parameters differ: {bad}" if bad else "no columns_converted in the report")
+PY
+}
+lab brackets "vx [km/h],vy [km/h],omega [rpm],Fx [kN],Fy [kN],Mz [kN m],t [s]" ""
+lab units_row "vx,vy,omega,Fx,Fy,Mz,t" "km/h,m/s,deg/s,N,kN,N m,s"
+lab renamed "Speed [km/h],Lateral [km/h],Wheel rate [rpm],Long. force [kN],Side force [kN],Torque [kN m],Time [s]" ""
+renames="vx=Speed,vy=Lateral,omega=Wheel rate,Fx=Long. force,Fy=Side force,Mz=Torque,t=Time"
+for v in brackets units_row renamed; do
+  extra=()
+  [ "$v" = renamed ] && extra=(--columns "$renames")
+  if run "$v" "$dir/$v.csv" "${extra[@]}" && msg=$(same_fit "$v" 2>&1) &&
+    grep -q "^column: omega_radps from" "$dir/$v.out"; then
+    echo "ok   $v: same fit as the plain file, $(grep -c '^column:' "$dir/$v.out") conversions named"
+  else
+    echo "FAIL $v: ${msg:-no 'column:' line in the report}"
+    fails=$((fails + 1))
+  fi
+done
 echo "$fails failed"
 [ "$fails" -eq 0 ]

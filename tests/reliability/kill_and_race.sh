@@ -6,6 +6,9 @@
 # 2. Two fits writing --json to one path at once, ROUNDS times: each time the file is whole JSON.
 # 3. Two shimmy runs into one --out folder: the second is refused while the first runs.
 # 4. shimmy killed while it draws: every PNG present is whole (ends with the IEND chunk).
+# 5. Two shimmy runs one after the other into one folder: the second removes the first's files
+#    it did not rewrite (a scenario folder), keeps a file the user put there, and a third run
+#    killed half-way removes nothing.
 set -euo pipefail
 identify=$(realpath "$1") shimmy=$(realpath "$2") data=$(realpath "$3") rounds=${4:-8}
 work=$(mktemp -d)
@@ -65,4 +68,18 @@ for ((i = 0; i < 3; i++)); do
       fail "$png is truncated after a kill"
   done
 done
-echo "kill_and_race: every output whole or absent, the second run refused"
+echo "== 5. runs one after the other into one folder"
+"$shimmy" --scenario touchdown --out seq >/dev/null 2>&1 || fail "shimmy --scenario touchdown failed"
+[ -d seq/touchdown ] || fail "no seq/touchdown after the first run"
+echo "mine" >seq/notes.txt
+"$shimmy" --scenario braked-slide --out seq >second.log 2>&1 || fail "second run: $(cat second.log)"
+[ -e seq/touchdown ] && fail "the first run's seq/touchdown is still there after the second run"
+grep -q "removed .* file(s) an earlier run had written" second.log || fail "no word on removed files"
+[ "$(cat seq/notes.txt)" = mine ] || fail "the user's seq/notes.txt was touched"
+"$shimmy" --scenario touchdown --out seq >/dev/null 2>&1 &
+pid=$!
+sleep 0.3
+kill -9 "$pid" 2>/dev/null || true
+wait "$pid" 2>/dev/null || true
+[ -d seq/braked-slide ] || fail "a killed run removed the previous run's files"
+echo "kill_and_race: every output whole or absent, the second run refused, stale files removed"

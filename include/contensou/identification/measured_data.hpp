@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "contensou/friction/kinematics.hpp"
+#include "contensou/identification/lab_columns.hpp"
 
 namespace contensou {
 
@@ -25,6 +26,9 @@ struct MeasuredPoint {
 struct MeasuredData {
   std::string source;  // file name or description
   std::vector<MeasuredPoint> points;
+  // How columns under other names or units were read ("omega_radps from 'omega [rpm]' ...,
+  // x 0.1047 to rad/s"), for the report; empty for a file in the SI names.
+  std::vector<std::string> column_notes;
 
   // Number of measured values of a channel.
   int count(int channel) const;
@@ -32,9 +36,22 @@ struct MeasuredData {
 
 // Reads the CSV: header row, columns in any order (vx_mps, vy_mps, omega_radps required;
 // Fx_N, Fy_N, Mz_Nm, Fz_N, t_s optional; other columns ignored), '#' comments, empty cell =
-// not measured. Throws ParseError naming file, line and column for a malformed or non-finite
-// cell, a missing required column or an empty kinematic cell, and a file without any channel.
-MeasuredData read_measured_csv(const std::string& path);
+// not measured. Columns may carry other units, in the name (omega_rpm, "Fx [kN]") or in a
+// units row under the header, and other names through `renames` (lab_columns.hpp); values are
+// converted to SI. Throws ParseError naming file, line and column for a malformed or non-finite
+// cell, a missing required column or an empty kinematic cell, a unit this reader does not
+// convert, and a file without any channel.
+MeasuredData read_measured_csv(const std::string& path, const ColumnRenames& renames = {});
+
+// The normal load the data carry in their Fz column: the mean over the rows that have it, the
+// largest relative deviation from it and the number of rows; nullopt if no row has one.
+struct LoadFromData {
+  double mean_n = 0.0;
+  double spread = 0.0;  // max |Fz - mean| / mean
+  int rows = 0;
+  std::string description() const;  // "mean of the Fz column over 112 rows, within +-0.8 %"
+};
+std::optional<LoadFromData> normal_load_from_data(const MeasuredData& data);
 
 // Writes the same format (with a comment header); throws std::runtime_error if it cannot.
 void write_measured_csv(const std::string& path, const MeasuredData& data,

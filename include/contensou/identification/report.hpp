@@ -5,6 +5,7 @@
 
 #include <optional>
 #include <string>
+#include <vector>
 
 #include "contensou/friction/pressure_profile.hpp"
 #include "contensou/identification/closed_loop.hpp"
@@ -19,6 +20,8 @@ struct ReportInput {
   int values = 0;
   double radius_m = 0.0;
   std::optional<double> normal_load_n;
+  std::string normal_load_source;                 // where N came from ("" if given directly)
+  std::vector<std::string> column_notes;          // columns read under other names or units
   std::string profile;                            // how the pressure profile was given ("" if none)
   std::optional<double> profile_rms_residual_pa;  // a smoothing fit's residual
   std::optional<double> profile_max_residual_pa;

@@ -1,0 +1,71 @@
+// The columns of measured diagrams as labs name them (theory.md section 6): a quantity (vx, vy,
+// omega, Fx, Fy, Mz, Fz, t) with its unit after an underscore (vx_mps, omega_rpm, Fx_kN), in
+// brackets (vx [m/s], Mz (N m)), in a units row under the header, or under another name mapped
+// to the quantity (--columns vx=Speed). Values in another unit are converted to SI, never taken
+// as they are.
+#pragma once
+
+#include <array>
+#include <optional>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace contensou {
+
+enum class MeasuredQuantity { vx, vy, omega, Fx, Fy, Mz, Fz, t };
+inline constexpr int kMeasuredQuantities = 8;
+
+// The quantity's short name ("vx", "omega", "Fx", ...) and its column name in SI ("vx_mps",
+// "omega_radps", "Fx_N", "Mz_Nm", "Fz_N", "t_s").
+const char* quantity_name(MeasuredQuantity q);
+const char* si_column_name(MeasuredQuantity q);
+
+// The units a quantity's column may be in, as text for messages ("m/s, km/h, mm/s").
+std::string accepted_units(MeasuredQuantity q);
+
+struct LabColumn {
+  int index = -1;             // column in the table (0-based); -1 = absent
+  std::string header;         // the header cell as written
+  std::string unit;           // the unit as written ("" if none given)
+  std::string si_unit;        // the SI unit it is converted to ("m/s", "rad/s", "N", "N m", "s")
+  double to_si = 1.0;         // value in SI = to_si * value in the file
+  bool unit_assumed = false;  // no unit given anywhere: taken as SI
+  bool renamed = false;       // found through a rename (--columns)
+
+  bool present() const { return index >= 0; }
+  // "'omega [rpm]' (column 4) in rpm, x 0.1047 to rad/s", for reports.
+  std::string description() const;
+};
+
+struct LabColumns {
+  std::array<LabColumn, kMeasuredQuantities> column;
+  bool units_row = false;  // the first row under the header holds units: not data
+
+  const LabColumn& operator[](MeasuredQuantity q) const { return column[static_cast<int>(q)]; }
+  // One line per column read under another name or unit than its SI name ("" if none):
+  // what a report prints so that a conversion is never silent.
+  std::vector<std::string> notes() const;
+};
+
+// Column renames: quantity short name ("vx", "omega", "Fx", ...) -> the header cell to read.
+using ColumnRenames = std::vector<std::pair<std::string, std::string>>;
+
+// Parses "vx=Speed,omega=Wheel rate [rpm]" into renames; throws std::invalid_argument naming a
+// part without '=' or an unknown quantity (with the list of quantities).
+ColumnRenames parse_column_renames(const std::string& text);
+
+struct LabHeader {
+  const std::vector<std::string>& header;     // the header row's cells
+  const std::vector<std::string>* first_row;  // the first row under it (nullptr: none)
+  std::string file;                           // for messages
+  int header_line = 0;                        // 1-based
+  int first_row_line = 0;                     // 1-based
+};
+
+// Resolves the columns. Throws ParseError naming file, line and column for: a unit this reader
+// does not convert (with the units it accepts), a unit of the wrong kind (Mz [N]), two columns
+// for one quantity, a units row that disagrees with the header, a rename naming no column.
+LabColumns resolve_lab_columns(const LabHeader& in, const ColumnRenames& renames = {});
+
+}  // namespace contensou

@@ -1,0 +1,176 @@
+// Lab files: columns with units in the name or in a units row, other names mapped with
+// --columns, values converted to SI and never taken as they are (lab_columns.hpp).
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <fstream>
+#include <string>
+
+#include "contensou/friction/error.hpp"
+#include "contensou/identification/lab_columns.hpp"
+#include "contensou/identification/measured_data.hpp"
+
+using namespace contensou;
+
+namespace {
+
+std::string write(const std::string& name, const std::string& text) {
+  const std::string path = ::testing::TempDir() + name;
+  std::ofstream(path) << text;
+  return path;
+}
+
+// The message of the ParseError reading `text` throws ("" if none).
+std::string error_of(const std::string& text, const ColumnRenames& renames = {}) {
+  try {
+    read_measured_csv(write("lab_bad.csv", text), renames);
+  } catch (const ParseError& e) {
+    return e.what();
+  }
+  return "";
+}
+
+// Two rows in SI, the oracle every unit variant must reproduce.
+const char* kSi =
+    "vx_mps,vy_mps,omega_radps,Fx_N,Fy_N,Mz_Nm,Fz_N\n"
+    "1.5,-0.25,10,-1200,35,-7.5,4000\n"
+    "0,0.5,-3,0,-800,2.25,4100\n";
+
+void expect_same(const MeasuredData& a, const MeasuredData& b) {
+  ASSERT_EQ(a.points.size(), b.points.size());
+  for (std::size_t i = 0; i < a.points.size(); ++i) {
+    const MeasuredPoint &p = a.points[i], &q = b.points[i];
+    EXPECT_NEAR(p.kinematics.vx, q.kinematics.vx, 1e-12 * (1 + std::abs(q.kinematics.vx)));
+    EXPECT_NEAR(p.kinematics.vy, q.kinematics.vy, 1e-12 * (1 + std::abs(q.kinematics.vy)));
+    EXPECT_NEAR(p.kinematics.omega, q.kinematics.omega, 1e-12 * (1 + std::abs(q.kinematics.omega)));
+    for (int c = 0; c < kChannels; ++c) {
+      ASSERT_EQ(p.force[c].has_value(), q.force[c].has_value());
+      if (p.force[c]) {
+        EXPECT_NEAR(*p.force[c], *q.force[c], 1e-9 * (1 + std::abs(*q.force[c])));
+      }
+    }
+    ASSERT_TRUE(p.normal_load && q.normal_load);
+    EXPECT_NEAR(*p.normal_load, *q.normal_load, 1e-9 * *q.normal_load);
+  }
+}
+
+}  // namespace
+
+TEST(LabColumns, UnitsInTheNameAreConvertedToSi) {
+  const MeasuredData si = read_measured_csv(write("lab_si.csv", kSi));
+  EXPECT_TRUE(si.column_notes.empty());
+  // 1.5 m/s = 5.4 km/h; 10 rad/s = 600/pi deg/s = 300/pi rpm; forces in kN, moment in N mm.
+  const std::string brackets =
+      "vx [km/h],vy (km/h),omega [deg/s],Fx [kN],Fy [kN],Mz [N mm],Fz [kN]\n"
+      "5.4,-0.9," +
+      std::to_string(10 * 180 / M_PI) + ",-1.2,0.035,-7500,4\n" + "0,1.8," +
+      std::to_string(-3 * 180 / M_PI) + ",0,-0.8,2250,4.1\n";
+  const MeasuredData b = read_measured_csv(write("lab_brackets.csv", brackets));
+  // std::to_string keeps 6 decimals: compare omega at that precision.
+  ASSERT_EQ(b.points.size(), 2u);
+  EXPECT_NEAR(b.points[0].kinematics.omega, 10.0, 1e-7);
+  MeasuredData b_exact = b;
+  for (std::size_t i = 0; i < 2; ++i)
+    b_exact.points[i].kinematics.omega = si.points[i].kinematics.omega;
+  expect_same(b_exact, si);
+  ASSERT_EQ(b.column_notes.size(), 7u);
+  EXPECT_NE(b.column_notes[0].find("vx_mps from 'vx [km/h]' (column 1) in km/h, x 0.277778"),
+            std::string::npos)
+      << b.column_notes[0];
+
+  const std::string underscores =
+      "vx_kmh,vy_mps,omega_rpm,Fx_kN,Fy_N,Mz_kNm,Fz_N\n"
+      "5.4,-0.25," +
+      std::to_string(10 * 60 / (2 * M_PI)) + ",-1.2,35,-0.0075,4000\n" + "0,0.5," +
+      std::to_string(-3 * 60 / (2 * M_PI)) + ",0,-800,0.00225,4100\n";
+  const MeasuredData u = read_measured_csv(write("lab_underscores.csv", underscores));
+  EXPECT_NEAR(u.points[1].kinematics.omega, -3.0, 1e-7);
+  MeasuredData u_exact = u;
+  for (std::size_t i = 0; i < 2; ++i)
+    u_exact.points[i].kinematics.omega = si.points[i].kinematics.omega;
+  expect_same(u_exact, si);
+}
+
+TEST(LabColumns, AUnitsRowIsReadAndChecked) {
+  const MeasuredData si = read_measured_csv(write("lab_si.csv", kSi));
+  const std::string with_row =
+      "vx,vy,omega,Fx,Fy,Mz,Fz\n"
+      "km/h,m/s,rad/s,kN,N,N m,kN\n"
+      "5.4,-0.25,10,-1.2,35,-7.5,4\n"
+      "0,0.5,-3,0,-800,2.25,4.1\n";
+  const MeasuredData r = read_measured_csv(write("lab_units_row.csv", with_row));
+  expect_same(r, si);
+  EXPECT_EQ(r.points[0].line, 3);  // the units row is not data
+  // A units row that contradicts the header's unit: line 2, the column named.
+  const std::string clash = error_of(
+      "vx [km/h],vy_mps,omega_radps,Fx_N\n"
+      "m/s,m/s,rad/s,N\n"
+      "1,2,3,4\n");
+  EXPECT_NE(clash.find(":2: column 'vx [km/h]' (1): the units row says 'm/s'"), std::string::npos)
+      << clash;
+  // A glitch in the first data row is not a units row: the usual "not a number" at its cell.
+  const std::string glitch = error_of(
+      "vx_mps,vy_mps,omega_radps,Fx_N\n"
+      "1,2,x3,4\n");
+  EXPECT_NE(glitch.find(":2: column 'omega_radps' (3): not a number: 'x3'"), std::string::npos)
+      << glitch;
+  // Bare names without a units row: read as SI, and the report says so.
+  const MeasuredData bare = read_measured_csv(write("lab_bare.csv", "vx,vy,omega,Fx\n1,2,3,4\n"));
+  ASSERT_EQ(bare.column_notes.size(), 4u);
+  EXPECT_NE(bare.column_notes[0].find("no unit given: read as m/s"), std::string::npos);
+}
+
+TEST(LabColumns, UnknownOrWrongUnitsAreRefusedWithTheUnitsAccepted) {
+  const std::string lbf = error_of("vx_mps,vy_mps,omega_radps,Fx [lbf]\n1,2,3,4\n");
+  EXPECT_NE(lbf.find("column 'Fx [lbf]' (4): unit 'lbf' of Fx is not one this reader converts "
+                     "(Fx: N, kN)"),
+            std::string::npos)
+      << lbf;
+  const std::string kind = error_of("vx_mps,vy_mps,omega_radps,Mz [N]\n1,2,3,4\n");
+  EXPECT_NE(kind.find("'N' is not a unit of Mz (Mz: N m, kN m, N mm)"), std::string::npos) << kind;
+  const std::string twice = error_of("vx_kmh,vx [m/s],vy_mps,omega_radps,Fx_N\n1,1,2,3,4\n");
+  EXPECT_NE(twice.find("two columns for vx"), std::string::npos) << twice;
+  // The SI-named column wins over the same quantity in another unit (logged twice by a rig).
+  const MeasuredData both = read_measured_csv(
+      write("lab_both.csv", "vx_mps,vy_mps,omega_rpm,omega_radps,Fx_N\n1,2,600,3,4\n"));
+  EXPECT_EQ(both.points[0].kinematics.omega, 3.0);
+  // A near miss is still refused, now with the way to map it.
+  const std::string miss = error_of("vx_mps,vy_mps,omega_radps,Fxx_N,Fy_N\n1,2,3,4,5\n");
+  EXPECT_NE(miss.find("did you mean 'Fx_N'"), std::string::npos) << miss;
+}
+
+TEST(LabColumns, RenamesMapOtherNamesWithTheirUnits) {
+  const std::string text =
+      "Speed [km/h],Side slip,Wheel rate (rpm),Long. force [kN],Torque\n"
+      "36,0,600,-2,-7.5\n";
+  const ColumnRenames renames =
+      parse_column_renames("vx=Speed, vy=Side slip,omega=Wheel rate,Fx=Long. force,Mz=Torque");
+  const MeasuredData d = read_measured_csv(write("lab_renamed.csv", text), renames);
+  ASSERT_EQ(d.points.size(), 1u);
+  EXPECT_NEAR(d.points[0].kinematics.vx, 10.0, 1e-12);
+  EXPECT_NEAR(d.points[0].kinematics.omega, 20 * M_PI, 1e-12);
+  EXPECT_NEAR(*d.points[0].force[0], -2000.0, 1e-9);
+  EXPECT_NEAR(*d.points[0].force[2], -7.5, 1e-12);
+  const std::string none = error_of(text, parse_column_renames("vx=Velocity"));
+  EXPECT_NE(none.find("--columns vx=Velocity: the header has no column 'Velocity'"),
+            std::string::npos)
+      << none;
+  EXPECT_THROW(parse_column_renames("speed=Speed"), std::invalid_argument);
+  EXPECT_THROW(parse_column_renames("vx"), std::invalid_argument);
+}
+
+TEST(LabColumns, TheLoadComesFromTheFzColumnInAnyUnit) {
+  const MeasuredData d = read_measured_csv(
+      write("lab_fz.csv", "vx_mps,vy_mps,omega_radps,Fx_N,Fz [kN]\n1,0,3,4,5\n2,0,3,4,5.5\n"));
+  const std::optional<LoadFromData> load = normal_load_from_data(d);
+  ASSERT_TRUE(load);
+  EXPECT_NEAR(load->mean_n, 5250.0, 1e-9);
+  EXPECT_NEAR(load->spread, 250.0 / 5250.0, 1e-12);
+  EXPECT_EQ(load->rows, 2);
+  const MeasuredData no_fz =
+      read_measured_csv(write("lab_nofz.csv", "vx_mps,vy_mps,omega_radps,Fx_N\n1,0,3,4\n"));
+  EXPECT_FALSE(normal_load_from_data(no_fz));
+  // A load that is not positive after conversion is refused at its cell.
+  const std::string bad = error_of("vx_mps,vy_mps,omega_radps,Fx_N,Fz_kN\n1,0,3,4,-1\n");
+  EXPECT_NE(bad.find(":2: column 'Fz_kN' (5): -1000 must be positive"), std::string::npos) << bad;
+}
