@@ -4,6 +4,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <numeric>
+#include <optional>
 
 #include "gnuplot.hpp"
 
@@ -62,32 +63,52 @@ std::string format_loop(const ClosedLoopReport& loop) {
   return s;
 }
 
+namespace {
+
+// The points with a positive sliding-spin ratio, in increasing psi.
+std::vector<std::size_t> points_by_psi(const std::vector<double>& psi) {
+  std::vector<std::size_t> order;
+  for (std::size_t i = 0; i < psi.size(); ++i)
+    if (std::isfinite(psi[i]) && psi[i] > 0.0) order.push_back(i);
+  std::sort(order.begin(), order.end(),
+            [&](std::size_t a, std::size_t b) { return psi[a] < psi[b]; });
+  return order;
+}
+
+// A cell of the pictures' CSV files: the value, or NaN where the channel was not measured.
+std::string cell(std::optional<double> v) {
+  return v ? fmt("%.10g", *v) : std::string("NaN");
+}
+
+const char* const kAxisLabel[kChannels] = {"Fx [N]", "Fy [N]", "Mz [N m]"};
+
+}  // namespace
+
 bool write_loop_plots(const std::string& dir, const MeasuredData& data,
                       const ClosedLoopReport& loop, double radius_m) {
   std::filesystem::create_directories(dir);
   const std::vector<double> psi = sliding_spin_ratio(data, radius_m);
-  std::vector<std::size_t> order(psi.size());
-  std::iota(order.begin(), order.end(), 0);
-  std::sort(order.begin(), order.end(),
-            [&](std::size_t a, std::size_t b) { return psi[a] < psi[b]; });
-  std::string gp = "set terminal pngcairo size 900,900 font ',10'\nset datafile missing 'NaN'\n";
+  const std::vector<std::size_t> order = points_by_psi(psi);
+  std::string gp =
+      "set terminal pngcairo size 900,900 font ',10'\nset datafile separator ','\n"
+      "set datafile columnheaders\nset datafile missing 'NaN'\n";
   int k = 0;
   for (const LoopStep& st : loop.steps) {
-    ++k;
-    const std::string dat = "loop_step_" + std::to_string(k) + ".dat";
-    std::string text = "# psi, then residual before and after for Fx, Fy, Mz\n";
+    const std::string csv = "loop_step_" + std::to_string(++k) + ".csv";
+    std::string text = "psi";  // then the residual before and after the step, per channel
+    for (int c = 0; c < kChannels; ++c)
+      text += std::string(",before_") + kChannelColumns[c] + ",after_" + kChannelColumns[c];
+    text += "\n";
     for (std::size_t i : order) {
-      if (!std::isfinite(psi[i]) || psi[i] <= 0.0) continue;
-      text += fmt("%.8g", psi[i]);
+      text += fmt("%.10g", psi[i]);
       for (int c = 0; c < kChannels; ++c) {
-        const auto& y = data.points[i].force[c];
-        text += y ? " " + fmt("%.8g", *y - st.fit_before.prediction[i].vector()(c)) + " " +
-                        fmt("%.8g", *y - st.fit_after.prediction[i].vector()(c))
-                  : std::string(" NaN NaN");
+        const std::optional<double>& y = data.points[i].force[c];
+        text += "," + cell(y ? std::optional(*y - st.fit_before.prediction[i].vector()(c)) : y) +
+                "," + cell(y ? std::optional(*y - st.fit_after.prediction[i].vector()(c)) : y);
       }
       text += "\n";
     }
-    write_file_atomically(dir + "/" + dat, text);
+    write_file_atomically(dir + "/" + csv, text);
     gp += "set output 'loop_step_" + std::to_string(k) + ".png'\n";
     gp += "set multiplot layout 3,1 title 'step " + std::to_string(k) + ": " + st.effect +
           (st.detail.empty() ? "" : " (" + st.detail + ")") + ", " +
@@ -96,14 +117,15 @@ bool write_loop_plots(const std::string& dir, const MeasuredData& data,
                          : "rejected") +
           "'\n";
     gp += "set logscale x\nset format x '10^{%L}'\nset grid\nset key top right opaque box\n";
-    const char* name[3] = {"Fx [N]", "Fy [N]", "Mz [N m]"};
+    gp += "set xlabel 'psi = v / (omega R) [-]'\n";
     for (int c = 0; c < kChannels; ++c) {
       if (data.count(c) == 0) continue;
-      gp += "set ylabel 'residual " + std::string(name[c]) + "'\n";
-      if (c == 2) gp += "set xlabel 'psi = v / (omega R)'\n";
-      gp += "plot '" + dat + "' using 1:" + std::to_string(2 + 2 * c) +
-            " with points pt 6 ps 0.7 lc rgb '#888888' title 'before', '' using 1:" +
-            std::to_string(3 + 2 * c) + " with points pt 7 ps 0.6 lc rgb '#d62728' title 'after'\n";
+      const std::string ch = kChannelColumns[c];
+      gp += "set ylabel 'residual " + std::string(kAxisLabel[c]) + "'\n";
+      gp +=
+          "plot '" + csv + "' using \"psi\":\"before_" + ch +
+          "\" with points pt 6 ps 0.7 lc rgb '#888888' title 'before', '' using \"psi\":\"after_" +
+          ch + "\" with points pt 7 ps 0.6 lc rgb '#d62728' title 'after'\n";
     }
     gp += "unset multiplot\nunset xlabel\n";
   }
@@ -163,45 +185,39 @@ bool write_plots(const std::string& dir, const MeasuredData& data, const FitRepo
   std::filesystem::create_directories(dir);
   const std::vector<double> psi = sliding_spin_ratio(data, radius_m);
   const std::vector<Resultants<double>>& model = fit.prediction;
-  std::vector<std::size_t> order(psi.size());
-  std::iota(order.begin(), order.end(), 0);
-  std::sort(order.begin(), order.end(),
-            [&](std::size_t a, std::size_t b) { return psi[a] < psi[b]; });
-  std::string dat =
-      "# psi upsilon Fx_meas Fx_fit Fy_meas Fy_fit Mz_meas Mz_fit (NaN = not measured)\n";
-  for (std::size_t i : order) {
-    if (!std::isfinite(psi[i]) || psi[i] <= 0.0) continue;
-    dat += fmt("%.8g", psi[i]) + " " + fmt("%.8g", 1.0 / psi[i]);
+  std::string csv = "psi,upsilon";  // then measured, fitted and residual, per channel
+  for (int c = 0; c < kChannels; ++c)
+    csv += std::string(",measured_") + kChannelColumns[c] + ",fit_" + kChannelColumns[c] +
+           ",residual_" + kChannelColumns[c];
+  csv += "\n";
+  for (std::size_t i : points_by_psi(psi)) {
+    csv += fmt("%.10g", psi[i]) + "," + fmt("%.10g", 1.0 / psi[i]);
     for (int c = 0; c < kChannels; ++c) {
-      const auto& y = data.points[i].force[c];
-      dat += " " + (y ? fmt("%.8g", *y) : std::string("NaN")) + " " +
-             fmt("%.8g", model[i].vector()(c));
+      const std::optional<double>& y = data.points[i].force[c];
+      const double m = model[i].vector()(c);
+      csv += "," + cell(y) + "," + fmt("%.10g", m) + "," + cell(y ? std::optional(*y - m) : y);
     }
-    dat += "\n";
+    csv += "\n";
   }
-  write_file_atomically(dir + "/fit.dat", dat);
-  std::string gp = "set terminal pngcairo size 900,720 font ',10'\nset datafile missing 'NaN'\n";
+  write_file_atomically(dir + "/fit.csv", csv);
+  std::string gp =
+      "set terminal pngcairo size 900,720 font ',10'\nset datafile separator ','\n"
+      "set datafile columnheaders\nset datafile missing 'NaN'\n";
   const char* title[3] = {"Fx: longitudinal force", "Fy: lateral force", "Mz: spin torque"};
-  const char* unit[3] = {"N", "N", "N m"};
-  const char* label[3] = {"Fx", "Fy", "Mz"};
-  const char* axis[3] = {"psi = v / (omega R)", "upsilon = omega R / v", "upsilon = omega R / v"};
   for (int c = 0; c < kChannels; ++c) {
     if (data.count(c) == 0) continue;
-    const int x = c == 0 ? 1 : 2, ym = 3 + 2 * c, yf = 4 + 2 * c;
-    gp += "set output 'fit_" + std::string(kChannelColumns[c]) + ".png'\n";
+    const std::string ch = kChannelColumns[c], x = c == 0 ? "psi" : "upsilon";
+    const std::string xlabel = c == 0 ? "psi = v / (omega R) [-]" : "upsilon = omega R / v [-]";
+    gp += "set output 'fit_" + ch + ".png'\n";
     gp += "set multiplot layout 2,1 title '" + std::string(title[c]) + "'\n";
     gp += "set logscale x\nset format x '10^{%L}'\nset grid\nset key top right opaque box\n";
-    gp += "set ylabel '" + std::string(label[c]) + " [" + unit[c] + "]'\nunset xlabel\n";
-    gp += "plot 'fit.dat' using " + std::to_string(x) + ":" + std::to_string(ym) +
-          " with points pt 7 ps 0.6 lc rgb '#1f77b4' title 'measured', '' using " +
-          std::to_string(x) + ":" + std::to_string(yf) +
-          " with lines lw 2 lc rgb '#d62728' title 'fitted law'\n";
-    gp += "unset key\nset xlabel '" + std::string(axis[c]) + "'\nset ylabel 'residual [" + unit[c] +
-          "]'\n";
-    gp += "plot 'fit.dat' using " + std::to_string(x) + ":($" + std::to_string(ym) + "-$" +
-          std::to_string(yf) +
-          ") with impulses lc rgb '#555555' notitle, 0 with lines lc rgb "
-          "'black' notitle\n";
+    gp += "set ylabel '" + std::string(kAxisLabel[c]) + "'\nset xlabel '" + xlabel + "'\n";
+    gp += "plot 'fit.csv' using \"" + x + "\":\"measured_" + ch +
+          "\" with points pt 7 ps 0.6 lc rgb '#1f77b4' title 'measured', '' using \"" + x +
+          "\":\"fit_" + ch + "\" with lines lw 2 lc rgb '#d62728' title 'fitted law'\n";
+    gp += "unset key\nset ylabel 'residual " + std::string(kAxisLabel[c]) + "'\n";
+    gp += "plot 'fit.csv' using \"" + x + "\":\"residual_" + ch +
+          "\" with impulses lc rgb '#555555' notitle, 0 with lines lc rgb 'black' notitle\n";
     gp += "unset multiplot\nunset logscale x\n";
   }
   return run_gnuplot(dir, "fit", gp);

@@ -23,7 +23,8 @@ bool write_loop_plots(const std::string& dir, const MeasuredData& data,
 // A readable table of parameters and fit quality.
 std::string format_table(const RunInfo& info, const FitReport& fit);
 
-// Writes dir/fit.dat and one PNG per measured channel (measured and fitted against psi or
+// Writes dir/fit.csv (psi, upsilon, and measured_, fit_, residual_ per channel, by name) and one
+// PNG per measured channel (measured and fitted against psi or
 // 1/psi on a log axis, residuals below). Returns false if the pictures could not be drawn.
 bool write_plots(const std::string& dir, const MeasuredData& data, const FitReport& fit,
                  double radius_m);

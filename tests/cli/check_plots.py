@@ -5,7 +5,8 @@ Usage: check_plots.py DIR [DIR ...]
 
 For every DIR/*.gp: each column a plot names ("name" or column("name")) is in the header of the
 CSV it reads; the axis labels carry the unit that the plotted columns' names end in (t_s -> [s],
-Mz_nm -> [N m], ...; a pure number -> [-]); where the script fixes a y range, every finite value
+Mz_nm -> [N m], ...; a pure number -> [-]), and a label that names a force or moment channel
+(Fx, Fy, Mz, ...) names the one its column holds; where the script fixes a y range, every finite value
 of the plotted columns lies inside it. Columns chosen by number (using 1:3) are refused: they
 silently pick another quantity when a column is added. Exit status 1 with one line per problem.
 """
@@ -53,6 +54,7 @@ def column_values(path, name):
 
 
 def label(script, axis):
+    """The axis label in force at the end of `script` (the last one set before a plot)."""
     m = re.findall(r"set %slabel '([^']*)'" % axis, script)
     return m[-1] if m else None
 
@@ -62,9 +64,11 @@ def check_script(gp):
     folder = os.path.dirname(gp)
     script = open(gp).read()
     yrange = re.findall(r"set yrange \[([^:\]]+):([^\]]+)\]", script)
-    for line in script.splitlines():
+    lines = script.splitlines()
+    for number, line in enumerate(lines):
         if not line.startswith("plot "):
             continue
+        before = "\n".join(lines[:number])
         current = None
         for clause in re.split(r",\s*(?=')", line[5:]):
             f = re.match(r"'([^']*)'", clause)
@@ -92,10 +96,17 @@ def check_script(gp):
                 continue
             x, y = plotted[0]
             for axis, col in (("x", x), ("y", y)):
-                text = label(script, axis)
+                text = label(before, axis)
                 want = "[" + unit_of(col) + "]"
                 if text is None or not text.endswith(want):
                     problems.append(f"{gp}: {axis} label '{text}' does not end in {want} ({col})")
+                # A label that names a force or moment channel names the one plotted (not Fy
+                # under 'Mz [N]'); a generic label ('friction force [N]') may hold several.
+                named = re.findall(r"\b(F[xyz]|M[xyz])\b", text or "")
+                for channel in re.findall(r"(?:^|_)(F[xyz]|M[xyz])(?=_|$)", col):
+                    if named and channel not in named:
+                        problems.append(f"{gp}: {axis} label '{text}' does not name {channel} "
+                                        f"({col})")
             if yrange and y in have:
                 lo, hi = (float(v) for v in yrange[-1])
                 vals = column_values(csv_path, y)
