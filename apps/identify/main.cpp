@@ -12,6 +12,7 @@
 #include "contensou/contensou.hpp"
 #include "contensou/identification/fit.hpp"
 #include "contensou/identification/report.hpp"
+#include "contensou/identification/report_text.hpp"
 #include "contensou/identification/simulation.hpp"
 #include "gnuplot.hpp"
 #include "report.hpp"
@@ -95,7 +96,7 @@ int run_fit_only(const FitArgs& a, const MeasuredData& data, const Identificatio
                  const app::RunInfo& info) {
   const FitReport fit = fit_fractional_law(data, o);
   std::printf("%s %s: fractional law (seed eqs. 5-7)\n%s", kName, kVersion,
-              app::format_table(info, fit).c_str());
+              fit_report_text(info, fit).c_str());
   if (!a.plots_dir.empty() && app::write_plots(a.plots_dir, data, fit, a.radius))
     std::printf("pictures: %s/fit_*.png\n", a.plots_dir.c_str());
   if (!a.json_path.empty()) {
@@ -137,14 +138,7 @@ int run_loop(const FitArgs& a, const MeasuredData& data, const IdentificationOpt
   lo.alpha = a.alpha;
   lo.speed_inside_integrals = a.speed_inside;
   const ClosedLoopReport loop = close_the_loop_with_progress(data, o, lo);
-  std::printf("%s %s: base model, the fractional law (seed eqs. 5-7)\n%s", kName, kVersion,
-              app::format_table(info, loop.base).c_str());
-  std::printf("%s", app::format_loop(loop).c_str());
-  if (!loop.accepted_effects.empty())
-    std::printf(
-        "\nfinal model (%s):\n%s",
-        loop.final_spec.uses_exact() ? "exact integrals over the profile" : "fractional law",
-        app::format_table(info, loop.final_fit).c_str());
+  std::printf("%s %s\n%s", kName, kVersion, loop_report_text(info, loop).c_str());
   if (!a.plots_dir.empty()) {
     const bool p = app::write_plots(a.plots_dir, data, loop.final_fit, a.radius);
     const bool q = app::write_loop_plots(a.plots_dir, data, loop, a.radius);

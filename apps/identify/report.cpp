@@ -19,50 +19,6 @@ std::string fmt(const char* f, double v) {
 
 }  // namespace
 
-std::string format_loop(const ClosedLoopReport& loop) {
-  std::string s = "\nclosed loop (score test, then LR at alpha / candidates, BIC and 5-fold CV):\n";
-  s +=
-      "step  effect              detail            LR p-value  threshold  BIC before -> after      "
-      "error before -> after  verdict\n";
-  int k = 0;
-  for (const LoopStep& st : loop.steps) {
-    char line[512];
-    std::snprintf(line, sizeof line,
-                  "%-4d  %-18s  %-16s  %-10.2e  %-9.1e  %9.1f -> %-9.1f  %.4f -> %.4f  %s\n", ++k,
-                  st.effect.c_str(), st.detail.c_str(), st.lr_p_value, st.threshold, st.bic_before,
-                  st.bic_after, st.error_before, st.error_after,
-                  st.removed    ? "removed (backward pass)"
-                  : st.accepted ? "accepted"
-                                : "rejected");
-    s += line;
-    if (st.accepted && !st.removed)
-      for (const std::string& alt : st.ambiguous_with)
-        s += "      ambiguous with " + alt + " (see its row; the lower BIC picks " + st.effect +
-             ")\n";
-  }
-  s += "accepted effects:";
-  std::vector<std::string> notes;
-  for (const LoopStep& st : loop.steps)
-    if (st.accepted && !st.removed) {
-      s += " " + st.effect + (st.detail.empty() ? "" : " (" + st.detail + ")");
-      if (!st.ambiguous_with.empty()) {
-        s += " [or";
-        for (std::size_t i = 0; i < st.ambiguous_with.size(); ++i)
-          s += (i ? ", " : " ") + st.ambiguous_with[i];
-        s += "]";
-      }
-      notes.insert(notes.end(), st.separation.begin(), st.separation.end());
-    }
-  if (loop.accepted_effects.empty()) s += " none";
-  for (const std::string& n : notes) s += "\nAMBIGUOUS: " + n;
-  s += "\nerror before " + fmt("%.4f", loop.base.error) + ", after " +
-       fmt("%.4f", loop.final_fit.error) + "\n";
-  if (loop.structure_remains)
-    s += "STRUCTURE REMAINS: the final residual is still not white; the model lacks something the "
-         "catalogue does not name.\n";
-  return s;
-}
-
 namespace {
 
 // The points with a positive sliding-spin ratio, in increasing psi.
@@ -131,53 +87,6 @@ bool write_loop_plots(const std::string& dir, const MeasuredData& data,
   }
   if (k == 0) return true;
   return run_gnuplot(dir, "loop", gp);
-}
-
-std::string format_table(const RunInfo& info, const FitReport& fit) {
-  std::string s;
-  s += "data: " + info.file + ", " + std::to_string(info.points) + " points, " +
-       std::to_string(info.values) + " measured values, R = " + fmt("%g", info.radius_m) + " m";
-  if (info.normal_load_n) s += ", N = " + fmt("%g", *info.normal_load_n) + " N";
-  if (!info.normal_load_source.empty()) s += " (" + info.normal_load_source + ")";
-  for (const std::string& note : info.column_notes) s += "\ncolumn: " + note;
-  if (!info.profile.empty()) {
-    s += "\nprofile: " + info.profile;
-    if (info.profile_rms_residual_pa)
-      s += " (fit residual: rms " + fmt("%.4g", *info.profile_rms_residual_pa) + " Pa, max " +
-           fmt("%.4g", *info.profile_max_residual_pa) + " Pa)";
-  }
-  s += "\n\nparameter   value          95 % interval                 unit\n";
-  for (const ParameterEstimate& p : fit.parameters) {
-    char line[160];
-    std::string ci;
-    if (p.derived)
-      ci = "(from the profile)";
-    else if (p.fixed)
-      ci = "(fixed)";
-    else if (!p.determined)
-      ci = "not determined by the data";
-    else if (p.ci95)
-      ci = "[" + fmt("%.6g", (*p.ci95)[0]) + ", " + fmt("%.6g", (*p.ci95)[1]) + "]";
-    std::snprintf(line, sizeof line, "%-10s  %-13.6g  %-28s  %s\n", p.name.c_str(), p.value,
-                  ci.c_str(), p.unit.c_str());
-    s += line;
-  }
-  s += "\nchannel  points  rms          noise scale  runs p   lag-1   white\n";
-  for (const ChannelDiagnostics& c : fit.channels) {
-    char line[160];
-    std::snprintf(line, sizeof line, "%-7s  %6d  %-11.4g  %-11.4g  %-7.3f  %+6.3f  %s\n",
-                  c.channel.c_str(), c.points, c.rms, c.noise_scale, c.runs_p_value, c.lag1,
-                  c.white ? "yes" : "no");
-    s += line;
-  }
-  s += "\nfit: chi2 = " + fmt("%.4g", fit.chi2) + " on " + std::to_string(fit.degrees_of_freedom) +
-       " degrees of freedom, AIC = " + fmt("%.2f", fit.aic) + ", BIC = " + fmt("%.2f", fit.bic) +
-       ", error = " + fmt("%.4f", fit.error) + (fit.converged ? "" : "  (solver NOT converged)") +
-       "\n";
-  s += fit.residual_white
-           ? "residuals: white (no structure found by the runs and lag-1 tests)\n"
-           : "residuals: NOT white: the model misses something the data show (see the pictures)\n";
-  return s;
 }
 
 bool write_plots(const std::string& dir, const MeasuredData& data, const FitReport& fit,

@@ -1,4 +1,5 @@
-// Presentation of an identification: the table on stdout, the JSON report, the pictures.
+// The identification's pictures (the text and JSON reports are the library's: report_text.hpp,
+// report.hpp).
 #pragma once
 
 #include <string>
@@ -13,15 +14,9 @@ namespace contensou::app {
 // written by the library, contensou/identification/report.hpp).
 using RunInfo = ReportInput;
 
-// The steps of the loop as a table.
-std::string format_loop(const ClosedLoopReport& loop);
-
 // For each fitted step, a PNG of the residuals before and after it (loop_step_K.png).
 bool write_loop_plots(const std::string& dir, const MeasuredData& data,
                       const ClosedLoopReport& loop, double radius_m);
-
-// A readable table of parameters and fit quality.
-std::string format_table(const RunInfo& info, const FitReport& fit);
 
 // Writes dir/fit.csv (psi, upsilon, and measured_, fit_, residual_ per channel, by name) and one
 // PNG per measured channel (measured and fitted against psi or

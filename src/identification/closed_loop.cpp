@@ -308,7 +308,8 @@ LoopStep test_extension(const MeasuredData& data, const LoopState& cur, const Lo
       std::string(lr_ok ? "LR significant" : "LR not significant") +
       (bic_ok ? ", BIC improves" : ", BIC does not improve") +
       (cv_ok ? ", cross-validated error improves" : ", cross-validated error does not improve");
-  if (c.effect == "shape") trial.verdict += "; the exact integrals replace the law";
+  if (c.effect == "shape" && trial.accepted)
+    trial.verdict += "; the exact integrals replace the law";
   trial.error_before = cur.fit.error;
   trial.channels_before = cur.fit.channels;
   trial.fit_before = cur.fit;

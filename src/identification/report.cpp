@@ -1,6 +1,7 @@
 // The identification report as JSON and the choice of a profile (moved from the app so that the
 // Python package writes the same report).
 #include "contensou/identification/report.hpp"
+#include "contensou/identification/report_text.hpp"
 
 #include <cmath>
 #include <filesystem>
@@ -53,6 +54,7 @@ nlohmann::json model_json(const std::string& name, const std::vector<std::string
   m["degrees_of_freedom"] = fit.degrees_of_freedom;
   m["error"] = fit.error;
   m["converged"] = fit.converged;
+  m["warnings"] = fit_warnings(fit);
   nlohmann::json corr = nlohmann::json::object();
   corr["names"] = fit.correlation_names;
   nlohmann::json rows = nlohmann::json::array();
@@ -91,6 +93,7 @@ nlohmann::json fit_report(const ReportInput& info, const FitReport& base) {
   r["error_after"] = base.error;
   r["error_definition"] =
       "root mean square over measured channels of (channel rms / channel's largest |value|)";
+  r["warnings"] = fit_warnings(base);
   return r;
 }
 
@@ -115,28 +118,33 @@ nlohmann::json loop_report(const ReportInput& info, const ClosedLoopReport& loop
     nlohmann::json rms_b = nlohmann::json::object(), rms_a = nlohmann::json::object();
     for (const ChannelDiagnostics& c : st.channels_before) rms_b[c.channel] = c.rms;
     for (const ChannelDiagnostics& c : st.channels_after) rms_a[c.channel] = c.rms;
-    steps.push_back({{"step", ++k},
-                     {"candidate_scores", scores},
-                     {"chosen", st.effect},
-                     {"detail", st.detail},
-                     {"accepted", st.accepted && !st.removed},
-                     {"removed_in_backward_pass", st.removed},
-                     {"verdict", st.verdict},
-                     {"ambiguous_with", st.ambiguous_with},
-                     {"separation", st.separation},
-                     {"parameters", params},
-                     {"lr", st.lr},
-                     {"lr_dof", st.lr_dof},
-                     {"lr_p_value", st.lr_p_value},
-                     {"threshold", st.threshold},
-                     {"bic_before", st.bic_before},
-                     {"bic_after", st.bic_after},
-                     {"cv_before", st.cv_before},
-                     {"cv_after", st.cv_after},
-                     {"rms_before", rms_b},
-                     {"rms_after", rms_a},
-                     {"error_before", st.error_before},
-                     {"error_after", st.error_after}});
+    steps.push_back(
+        {{"step", ++k},
+         {"candidate_scores", scores},
+         {"chosen", st.effect},
+         {"detail", st.detail},
+         {"accepted", st.accepted && !st.removed},
+         {"removed_in_backward_pass", st.removed},
+         {"verdict", step_fit_failed(st) ? "failed fit: the extended fit ended worse than the "
+                                           "model it extends, so it says nothing about " +
+                                               st.effect + " (" + st.verdict + ")"
+                                         : st.verdict},
+         {"fit_failed", step_fit_failed(st)},
+         {"ambiguous_with", st.ambiguous_with},
+         {"separation", st.separation},
+         {"parameters", params},
+         {"lr", st.lr},
+         {"lr_dof", st.lr_dof},
+         {"lr_p_value", st.lr_p_value},
+         {"threshold", st.threshold},
+         {"bic_before", st.bic_before},
+         {"bic_after", st.bic_after},
+         {"cv_before", st.cv_before},
+         {"cv_after", st.cv_after},
+         {"rms_before", rms_b},
+         {"rms_after", rms_a},
+         {"error_before", st.error_before},
+         {"error_after", st.error_after}});
   }
   r["steps"] = steps;
   r["accepted_effects"] = loop.accepted_effects;
@@ -149,6 +157,8 @@ nlohmann::json loop_report(const ReportInput& info, const ClosedLoopReport& loop
                           loop.accepted_effects, loop.final_fit);
   r["error_after"] = loop.final_fit.error;
   r["structure_remains"] = loop.structure_remains;
+  r["summary"] = loop_summary(loop);
+  r["warnings"] = fit_warnings(loop.final_fit);
   return r;
 }
 

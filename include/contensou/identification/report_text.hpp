@@ -1,0 +1,40 @@
+// The identification report as text, as contensou-identify prints it and as Python's
+// IdentificationResult.text gives it: the input, the parameters with their intervals, the
+// channels' diagnostics, warnings in words, the closed loop's steps with a legend, and a
+// plain-language summary. The JSON report (report.hpp) carries the same facts.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "contensou/identification/closed_loop.hpp"
+#include "contensou/identification/fit.hpp"
+#include "contensou/identification/report.hpp"
+
+namespace contensou {
+
+// Fewer residual degrees of freedom than this per estimated noise scale make a warning: a
+// scale estimated from k degrees of freedom has a relative standard error of about
+// 1 / sqrt(2 k), 22 % at 10.
+inline constexpr int kFewDegreesOfFreedomPerScale = 10;
+
+// What a reader must know before trusting the fit, in words (empty if nothing): too little data
+// for the noise scales, parameters the data do not determine, a solver that did not converge.
+std::vector<std::string> fit_warnings(const FitReport& fit);
+
+// A loop step whose extended fit ends worse than the model it extends (which it nests): its
+// optimiser failed, so the step says nothing about the effect.
+bool step_fit_failed(const LoopStep& step);
+
+// The loop's outcome in plain words: what the data show, what was tried and not needed, what
+// limits the fit.
+std::string loop_summary(const ClosedLoopReport& loop);
+
+// The fit of the fractional law alone: input, parameters, channels, fit line, warnings.
+std::string fit_report_text(const ReportInput& input, const FitReport& fit);
+
+// The closed loop: the base fit as above, the steps with a legend, the final model and a
+// summary in plain words.
+std::string loop_report_text(const ReportInput& input, const ClosedLoopReport& loop);
+
+}  // namespace contensou

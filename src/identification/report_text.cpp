@@ -1,0 +1,235 @@
+#include "contensou/identification/report_text.hpp"
+
+#include <cstdio>
+#include <map>
+
+namespace contensou {
+
+namespace {
+
+std::string fmt(const char* f, double v) {
+  char b[64];
+  std::snprintf(b, sizeof b, f, v);
+  return b;
+}
+
+std::string input_text(const ReportInput& info) {
+  std::string s = "data: " + info.file + ", " + std::to_string(info.points) + " points, " +
+                  std::to_string(info.values) +
+                  " measured values, R = " + fmt("%g", info.radius_m) + " m";
+  if (info.normal_load_n) s += ", N = " + fmt("%g", *info.normal_load_n) + " N";
+  if (!info.normal_load_source.empty()) s += " (" + info.normal_load_source + ")";
+  for (const std::string& note : info.column_notes) s += "\ncolumn: " + note;
+  if (!info.profile.empty()) {
+    s += "\nprofile: " + info.profile;
+    if (info.profile_rms_residual_pa)
+      s += " (fit residual: rms " + fmt("%.4g", *info.profile_rms_residual_pa) + " Pa, max " +
+           fmt("%.4g", *info.profile_max_residual_pa) + " Pa)";
+  }
+  return s + "\n";
+}
+
+std::string parameters_text(const FitReport& fit) {
+  std::string s = "\nparameter   value          95 % interval                 unit\n";
+  for (const ParameterEstimate& p : fit.parameters) {
+    std::string ci;
+    if (p.derived)
+      ci = "(from the profile)";
+    else if (p.fixed)
+      ci = "(fixed)";
+    else if (!p.determined)
+      ci = "not determined by the data";
+    else if (p.ci95)
+      ci = "[" + fmt("%.6g", (*p.ci95)[0]) + ", " + fmt("%.6g", (*p.ci95)[1]) + "]";
+    char line[160];
+    std::snprintf(line, sizeof line, "%-10s  %-13.6g  %-28s  %s\n", p.name.c_str(), p.value,
+                  ci.c_str(), p.unit.c_str());
+    s += line;
+  }
+  return s;
+}
+
+std::string channels_text(const FitReport& fit) {
+  std::string s = "\nchannel  points  rms          noise scale  runs p   lag-1   white\n";
+  for (const ChannelDiagnostics& c : fit.channels) {
+    char line[160];
+    std::snprintf(line, sizeof line, "%-7s  %6d  %-11.4g  %-11.4g  %-7.3f  %+6.3f  %s\n",
+                  c.channel.c_str(), c.points, c.rms, c.noise_scale, c.runs_p_value, c.lag1,
+                  c.white ? "yes" : "no");
+    s += line;
+  }
+  return s;
+}
+
+const char* verdict_word(const LoopStep& st) {
+  if (step_fit_failed(st)) return "FAILED FIT";
+  if (st.removed) return "removed (backward pass)";
+  return st.accepted ? "accepted" : "rejected";
+}
+
+std::string steps_text(const ClosedLoopReport& loop) {
+  std::string s = "\nclosed loop (score test, then LR at alpha / candidates, BIC and 5-fold CV):\n";
+  s +=
+      "step  effect              detail            LR p-value  threshold  BIC before -> after      "
+      "error before -> after  verdict\n";
+  int k = 0;
+  for (const LoopStep& st : loop.steps) {
+    char line[512];
+    std::snprintf(line, sizeof line,
+                  "%-4d  %-18s  %-16s  %-10.2e  %-9.1e  %9.1f -> %-9.1f  %.4f -> %.4f  %s\n", ++k,
+                  st.effect.c_str(), st.detail.c_str(), st.lr_p_value, st.threshold, st.bic_before,
+                  st.bic_after, st.error_before, st.error_after, verdict_word(st));
+    s += line;
+    if (step_fit_failed(st))
+      s += "      the fit with " + st.effect +
+           " ended worse than the model it extends: its optimiser failed, so this step says "
+           "nothing about " +
+           st.effect + "\n";
+    if (st.accepted && !st.removed)
+      for (const std::string& alt : st.ambiguous_with)
+        s += "      ambiguous with " + alt + " (see its row; the lower BIC picks " + st.effect +
+             ")\n";
+  }
+  return s;
+}
+
+std::string legend_text() {
+  return "legend: LR p-value  likelihood-ratio test of the step against the model before it "
+         "(small: the effect is in the data)\n"
+         "        threshold   alpha / the number of candidate effects (Bonferroni)\n"
+         "        BIC         Bayesian information criterion: the fit penalised by its number of "
+         "parameters (lower is better)\n"
+         "        5-fold CV   the error on data left out of each of five fits\n"
+         "        accepted    LR p-value below the threshold, and BIC and CV both lower\n"
+         "        FAILED FIT  the extended fit ended worse than the model it extends (its "
+         "optimiser failed)\n"
+         "        error       rms over the channels of (channel rms / channel's largest "
+         "|value|)\n"
+         "        white       the runs and lag-1 tests find no structure left in the residual "
+         "(level 0.01 over all the tests)\n";
+}
+
+std::string accepted_text(const ClosedLoopReport& loop) {
+  std::string s = "accepted effects:";
+  std::vector<std::string> notes;
+  for (const LoopStep& st : loop.steps)
+    if (st.accepted && !st.removed) {
+      s += " " + st.effect + (st.detail.empty() ? "" : " (" + st.detail + ")");
+      if (!st.ambiguous_with.empty()) {
+        s += " [or";
+        for (std::size_t i = 0; i < st.ambiguous_with.size(); ++i)
+          s += (i ? ", " : " ") + st.ambiguous_with[i];
+        s += "]";
+      }
+      notes.insert(notes.end(), st.separation.begin(), st.separation.end());
+    }
+  if (loop.accepted_effects.empty()) s += " none";
+  for (const std::string& n : notes) s += "\nAMBIGUOUS: " + n;
+  s += "\nerror before " + fmt("%.4f", loop.base.error) + ", after " +
+       fmt("%.4f", loop.final_fit.error) + "\n";
+  if (loop.structure_remains)
+    s += "STRUCTURE REMAINS: the final residual is still not white; the model lacks something the "
+         "catalogue does not name.\n";
+  return s;
+}
+
+// The effects in words a test engineer uses.
+std::string in_words(const std::string& effect) {
+  static const std::map<std::string, std::string> words = {
+      {"shape",
+       "the pressure profile's shape matters (the exact integrals fit better than the "
+       "fractional law)"},
+      {"speed_dependence", "friction changes with the slip speed"},
+      {"anisotropy", "friction differs along and across the patch"},
+      {"pressure_shift_y", "the pressure centre is shifted sideways"},
+      {"channel_offset", "a channel reads a constant offset (load-cell zero drift)"},
+      {"channel_crosstalk", "one load-cell channel picks up another (crosstalk)"}};
+  const auto it = words.find(effect);
+  return it == words.end() ? effect : it->second;
+}
+
+std::string join(const std::vector<std::string>& parts, const std::string& last) {
+  std::string s;
+  for (std::size_t i = 0; i < parts.size(); ++i)
+    s += (i == 0 ? "" : i + 1 == parts.size() ? last : "; ") + parts[i];
+  return s;
+}
+
+}  // namespace
+
+std::string loop_summary(const ClosedLoopReport& loop) {
+  std::vector<std::string> shown, not_needed, failed;
+  for (const LoopStep& st : loop.steps) {
+    if (step_fit_failed(st))
+      failed.push_back(st.effect);
+    else if (st.accepted && !st.removed)
+      shown.push_back(in_words(st.effect));
+    else
+      not_needed.push_back(st.effect);
+  }
+  std::string s = shown.empty() ? "the data need nothing beyond the fractional law"
+                                : "the data show that " + join(shown, "; and ");
+  if (!not_needed.empty()) s += ". Tried and not needed: " + join(not_needed, ", ");
+  if (!failed.empty()) s += ". Not decided (the fit failed): " + join(failed, ", ");
+  const std::vector<std::string> warnings = fit_warnings(loop.final_fit);
+  s += ". The fit is limited by ";
+  if (loop.structure_remains)
+    s += "something the catalogue of effects does not name (structure remains in the residual)";
+  else if (!warnings.empty())
+    s += "the data: " + warnings.front();
+  else
+    s += "the measurement noise (the residual is white, error " +
+         fmt("%.4f", loop.final_fit.error) + ")";
+  return s + ".";
+}
+
+std::vector<std::string> fit_warnings(const FitReport& fit) {
+  std::vector<std::string> w;
+  const int scales = fit.residuals - fit.free_parameters - fit.degrees_of_freedom;
+  if (fit.degrees_of_freedom < kFewDegreesOfFreedomPerScale * std::max(1, scales))
+    w.push_back("too little data: " + std::to_string(fit.residuals) + " measured values for " +
+                std::to_string(fit.free_parameters) + " parameters and " + std::to_string(scales) +
+                " noise scales leave " + std::to_string(fit.degrees_of_freedom) +
+                " degrees of freedom (fewer than " + std::to_string(kFewDegreesOfFreedomPerScale) +
+                " per noise scale): the noise scales are uncertain and the intervals wide "
+                "(Student t with " +
+                std::to_string(fit.degrees_of_freedom) + " degrees of freedom)");
+  for (const ParameterEstimate& p : fit.parameters)
+    if (!p.derived && !p.fixed && !p.determined)
+      w.push_back(p.name + " is not determined by the data (no row is sensitive to it)");
+  if (!fit.converged) w.push_back("the solver did not converge; the values are its last iterate");
+  return w;
+}
+
+bool step_fit_failed(const LoopStep& st) {
+  // The extended model contains the one before it, so at its optimum the error cannot be
+  // larger; a relative 1e-6 allows for the solvers' tolerances.
+  return st.error_after > st.error_before * (1.0 + 1e-6) + 1e-12;
+}
+
+std::string fit_report_text(const ReportInput& input, const FitReport& fit) {
+  std::string s = input_text(input) + parameters_text(fit) + channels_text(fit);
+  s += "\nfit: chi2 = " + fmt("%.4g", fit.chi2) + " on " + std::to_string(fit.degrees_of_freedom) +
+       " degrees of freedom, AIC = " + fmt("%.2f", fit.aic) + ", BIC = " + fmt("%.2f", fit.bic) +
+       ", error = " + fmt("%.4f", fit.error) + (fit.converged ? "" : "  (solver NOT converged)") +
+       "\n";
+  s += fit.residual_white
+           ? "residuals: white (no structure found by the runs and lag-1 tests)\n"
+           : "residuals: NOT white: the model misses something the data show (see the pictures)\n";
+  s += "error = rms over the channels of (channel rms / channel's largest |value|)\n";
+  for (const std::string& w : fit_warnings(fit)) s += "WARNING: " + w + "\n";
+  return s;
+}
+
+std::string loop_report_text(const ReportInput& input, const ClosedLoopReport& loop) {
+  std::string s = "base model: the fractional law (seed eqs. 5-7)\n" +
+                  fit_report_text(input, loop.base) + steps_text(loop) + legend_text() +
+                  accepted_text(loop);
+  if (!loop.accepted_effects.empty())
+    s += std::string("\nfinal model (") +
+         (loop.final_spec.uses_exact() ? "exact integrals over the profile" : "fractional law") +
+         "):\n" + fit_report_text(input, loop.final_fit);
+  return s + "\nin plain words: " + loop_summary(loop) + "\n";
+}
+
+}  // namespace contensou
