@@ -6,6 +6,7 @@
 #include <sstream>
 
 #include "contensou/friction/error.hpp"
+#include "contensou/friction/exact_law.hpp"
 #include "contensou/friction/exact_resultants.hpp"
 #include "contensou/friction/pressure_profile.hpp"
 
@@ -27,15 +28,25 @@ Curves exact_curves(const ContactPatch& patch, const Grid& g) {
   const ExactModel<double> model = make_exact_model(patch);
   const double N = normal_load(patch), R = patch.radius_m;
   const double F0 = patch.friction * N, M0 = spin_torque_per_load(patch) * N;
+  // The exact law (exact_law.hpp): the exact resultants (theory.md section 2) from tables built
+  // once, within a certified bound `achieved` of the integrals relative to f N and f N R, the
+  // integrator's own tolerance here. A build that misses it (it says so) leaves the points to the
+  // adaptive integrator.
+  constexpr double kTolerance = 1e-9;
+  ExactLawOptions options;
+  options.tolerance = kTolerance;
+  const ExactLaw law = make_exact_law(model, options);
   Curves c;
   for (int i = 0; i < g.points; ++i) {
     const double psi =
         g.psi_min * std::pow(g.psi_max / g.psi_min, static_cast<double>(i) / (g.points - 1));
     const double omega = 1.0 / R;  // u = omega R = 1, v = psi
-    const auto r = exact_resultants(model, Kinematics<double>{psi, 0.0, omega}, {1e-9});
+    const Kinematics<double> k{psi, 0.0, omega};
+    const Resultants<double> r = law.reached ? exact_law_resultants(law, k)
+                                             : exact_resultants(model, k, {kTolerance}).resultants;
     c.psi.push_back(psi);
-    c.force.push_back(-r.resultants.Fx / F0);
-    c.torque.push_back(-r.resultants.Mz / M0);
+    c.force.push_back(-r.Fx / F0);
+    c.torque.push_back(-r.Mz / M0);
   }
   return c;
 }

@@ -27,7 +27,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from ._core import ContactPatch, ExactModel, hertz_profile, seed_tire_profile, uniform_profile
-from .friction import exact_resultants
+from .friction import ExactLaw, exact_law_resultants, exact_resultants
 
 PROFILES = ("uniform", "hertz", "seed-tire")
 PSI_MIN, PSI_MAX, PSI_POINTS = 1e-3, 1e3, 121
@@ -73,8 +73,16 @@ def exact_curves(profile: str, radius: float, friction: float, psi: np.ndarray):
     patch.reference_pressure_pa = 1.0 / n
     m0 = friction * radius * patch.profile.moment(2) / patch.profile.moment(1)
     omega = 1.0 / radius
-    r = exact_resultants(ExactModel(patch), psi * radius * omega, 0.0, omega, tolerance=1e-9)
-    return -r.resultants[:, 0] / friction, -r.resultants[:, 2] / m0, m0
+    # The exact law (contensou/friction/exact_law.hpp): the exact resultants from tables built
+    # once, within a certified bound of the integrals (relative to f N and f N R), the
+    # integrator's tolerance here; a build that misses it leaves the points to the integrator.
+    model = ExactModel(patch)
+    law = ExactLaw(model, tolerance=1e-9)
+    if law.reached:
+        r = exact_law_resultants(law, psi * radius * omega, 0.0, omega)
+    else:
+        r = exact_resultants(model, psi * radius * omega, 0.0, omega, tolerance=1e-9).resultants
+    return -r[:, 0] / friction, -r[:, 2] / m0, m0
 
 
 def engine_coefficients(profile: str, radius: float, friction: float) -> list[EngineCoefficient]:

@@ -4,6 +4,7 @@
 
 #include <cmath>
 #include <numbers>
+#include <vector>
 
 #include "exact_law_sampling.hpp"
 #include "parallel_for.hpp"
@@ -81,6 +82,31 @@ double z_interpolation_error(const double* v, int stride) {
     worst = std::max(worst, std::abs(s - v[(NZ + 1 + k) * stride]));
   }
   return worst;
+}
+
+// The Lebesgue constant of interpolation at the n + 1 Chebyshev-Lobatto points x_j = cos(j pi /
+// n), max over [-1, 1] of sum_j |l_j(x)| (about (2 / pi) ln n + 0.6, below 2 for n = 8): the
+// factor by which errors at the points can grow between them. The Lebesgue function is a sum of
+// |polynomials| with its maxima between the points; sampled at 64 points between each pair, with
+// a margin of 1 % for what the samples miss.
+double lobatto_lebesgue_constant(int n) {
+  std::vector<double> x(n + 1), w(n + 1);
+  for (int j = 0; j <= n; ++j) {  // barycentric weights (-1)^j, halved at the ends
+    x[j] = std::cos(std::numbers::pi * j / n);
+    w[j] = (j % 2 ? -1.0 : 1.0) * (j == 0 || j == n ? 0.5 : 1.0);
+  }
+  double worst = 1.0;
+  for (int j = 0; j < n; ++j)
+    for (int k = 1; k < 64; ++k) {
+      const double y = x[j] + (x[j + 1] - x[j]) * k / 64.0;
+      double num = 0.0, den = 0.0;
+      for (int i = 0; i <= n; ++i) {
+        num += std::abs(w[i] / (y - x[i]));
+        den += w[i] / (y - x[i]);
+      }
+      worst = std::max(worst, num / std::abs(den));
+    }
+  return 1.01 * worst;
 }
 
 // The table of the falling part (exact_law.hpp, SlipSpeedTable). Pieces of 1 + z are added until
@@ -181,6 +207,11 @@ FallingBuild build_falling(const ExactModel<double>& model, double delta, double
   const ExactModel<double> unit = detail::unit_model(model);
   SlipSpeedMeasureOptions measure;
   measure.largest_q = 1e6;
+  // The samples' own error a thousandth of the budget (the default 1e-13 at most, 1e-11 at least).
+  measure.ring_tolerance = std::clamp(1e-3 * tolerance, 1e-13, 1e-11);
+  // 10 nodes a panel in nu where the budget allows: on the seed tire and the 101-point table the
+  // samples then move by 5e-13 (12: below 1e-13; 8: 4e-10).
+  if (tolerance >= 1e-9) measure.nodes = 10;
   const int J = falling_pieces(unit, delta, measure, tolerance, threads);
   // Per piece: its NZ + 1 Lobatto points in z, then the NZ points between them.
   std::vector<double> zs;
@@ -212,7 +243,7 @@ FallingBuild build_falling(const ExactModel<double>& model, double delta, double
     }
   };
   PiecewiseChebyshevOptions o = base;
-  o.tolerance = tolerance / 3.0;  // the Lebesgue constant of the z points is below 3
+  o.tolerance = tolerance / lobatto_lebesgue_constant(NZ);  // the t-errors at the z points
   o.weight = [J](double t, double* w) { sigma_weights(t, J * (kSlipDegreeZ + 1), w); };
   // A table's profile makes the falling part wiggle at large q where the centre of sliding
   // crosses its knots (jumps of p''): there the build stops at a bounded number of pieces and
@@ -223,10 +254,48 @@ FallingBuild build_falling(const ExactModel<double>& model, double delta, double
   out.table.exponent = delta;
   out.table.tail = tail;
   const double dropped = store_falling_blocks(b.table, J, 1e-3 * tolerance, out.table);
-  out.achieved = std::max({3.0 * b.achieved, z_error, tail}) + dropped;
+  out.achieved = std::max({lobatto_lebesgue_constant(NZ) * b.achieved, z_error, tail}) + dropped;
   out.reached = b.reached && out.achieved <= 2.0 * tolerance;
   out.samples = b.samples;
   return out;
+}
+
+// Adds the falling table of the model's slip-speed law to a law whose constant table is built
+// (`achieved` its bound so far); o are the constant table's options, k = |(kx, ky)|.
+void add_falling_table(const ExactModel<double>& model, const ExactLawOptions& options,
+                       const PiecewiseChebyshevOptions& o, double k, ExactLaw& law) {
+  // Relative to f_s N: the constant part carries f_k, the falling part f_s - f_k, so the falling
+  // table needs f_s / |f_s - f_k| times less accuracy.
+  const SlipSpeedFriction<double>& f = *model.slip_speed;
+  const double fs = std::max(f.static_coefficient, f.kinetic_coefficient);
+  const double fall = std::abs(f.static_coefficient - f.kinetic_coefficient);
+  if (fall == 0.0) {  // constant after all
+    law.parameters.slip_speed.reset();
+    law.parameters.friction = f.kinetic_coefficient;
+    return;
+  }
+  PiecewiseChebyshevOptions of = o;
+  of.degree = options.falling_degree;
+  // The falling table gets 80 % of what the constant one left of the tolerance: the bound below
+  // is (f_k e_constant + |f_s - f_k| e_falling) / f_s plus the representation's share.
+  double err[kLawFunctions];
+  std::fill(err, err + kLawFunctions, 1.0);
+  const double per_function = options.tolerance / resultant_error_bound(err, model.kappa, k);
+  const double representation = model.representation_error * std::numbers::pi / law.load_area;
+  const double left =
+      0.8 * options.tolerance * fs - f.kinetic_coefficient * law.achieved - fs * representation;
+  const double budget =
+      std::clamp(left > 0.0 ? left / (fall * resultant_error_bound(err, model.kappa, k))
+                            : 0.5 * per_function * fs / fall,
+                 10.0 * kNoiseFloor, 1e-3);
+  const FallingBuild fb = build_falling(model, f.exponent, budget, of, options.threads);
+  law.falling = fb.table;
+  std::fill(err, err + kLawFunctions, fb.achieved);
+  law.achieved =
+      (f.kinetic_coefficient * law.achieved + fall * resultant_error_bound(err, model.kappa, k)) /
+      fs;
+  law.reached = law.reached && fb.reached;
+  law.samples += fb.samples;
 }
 
 }  // namespace
@@ -261,9 +330,12 @@ ExactLaw make_exact_law(const ExactModel<double>& model, const ExactLawOptions& 
   o.degree = options.degree;
   // Below about 1e-13 of the load the five integrals' rounding (and the differences that make
   // a, b, c, d of them) is all a check sees: the table is not refined for it, and says so.
-  o.tolerance = std::max(0.5 * per_function, kNoiseFloor);
+  // With a slip-speed law the constant table (tens of milliseconds) takes a tenth of that, to
+  // leave the rest of the tolerance to the falling table (seconds; its budget below).
+  o.tolerance = std::max((model.slip_speed ? 0.05 : 0.5) * per_function, kNoiseFloor);
   o.max_pieces = 512;
   o.breaks = graded_breaks(6);
+  o.singular_points = {0.0};  // the centre of sliding on the rim (exact_law.hpp)
   o.weight = [](double t, double* w) { sigma_weights(t, 1, w); };
   const PiecewiseChebyshevBuild b = build_piecewise_chebyshev_batch(
       kLawFunctions,
@@ -278,29 +350,7 @@ ExactLaw make_exact_law(const ExactModel<double>& model, const ExactLawOptions& 
   law.achieved = resultant_error_bound(err, model.kappa, k);
   law.reached = b.reached;
   law.samples = b.samples;
-  if (model.slip_speed) {
-    // Relative to f_s N: the constant part carries f_k, the falling part f_s - f_k, so the falling
-    // table needs f_s / |f_s - f_k| times less accuracy.
-    const SlipSpeedFriction<double>& f = *model.slip_speed;
-    const double fs = std::max(f.static_coefficient, f.kinetic_coefficient);
-    const double fall = std::abs(f.static_coefficient - f.kinetic_coefficient);
-    if (fall == 0.0) {  // constant after all
-      law.parameters.slip_speed.reset();
-      law.parameters.friction = f.kinetic_coefficient;
-    } else {
-      PiecewiseChebyshevOptions of = o;
-      of.degree = options.falling_degree;
-      const double budget = std::clamp(0.5 * per_function * fs / fall, 10.0 * kNoiseFloor, 1e-3);
-      const FallingBuild fb = build_falling(model, f.exponent, budget, of, options.threads);
-      law.falling = fb.table;
-      std::fill(err, err + kLawFunctions, fb.achieved);
-      law.achieved = (f.kinetic_coefficient * law.achieved +
-                      fall * resultant_error_bound(err, model.kappa, k)) /
-                     fs;
-      law.reached = law.reached && fb.reached;
-      law.samples += fb.samples;
-    }
-  }
+  if (model.slip_speed) add_falling_table(model, options, o, k, law);
   law.achieved += model.representation_error * std::numbers::pi / law.load_area;
   law.reached = law.reached && law.achieved <= options.tolerance;
   return law;

@@ -127,6 +127,41 @@ PiecewiseChebyshevBuild build_piecewise_chebyshev(int m, const ChebyshevSampler&
       o);
 }
 
+namespace {
+
+// Splits [a, b] (which missed the tolerance with `error`) into halves; or, if it ends at one of
+// the singular points, geometrically towards that point into the d halvings after which the
+// error, shrinking like the width squared there, meets the tolerance: d = ceil(log2(error /
+// tolerance) / 2). Those are the pieces repeated bisection reaches, without fitting the ones in
+// between. `pieces` is the number of pieces done or waiting.
+void split_piece(double a, double b, double error, const PiecewiseChebyshevOptions& o, int pieces,
+                 std::vector<std::pair<double, double>>& work) {
+  const double mid = 0.5 * (a + b), w = b - a;
+  const auto at = [&](double x) {
+    return std::find(o.singular_points.begin(), o.singular_points.end(), x) !=
+           o.singular_points.end();
+  };
+  int d = 1;
+  if (std::isfinite(error) && (at(a) || at(b)))
+    d = std::clamp(static_cast<int>(std::ceil(0.5 * std::log2(error / o.tolerance))), 1, 8);
+  while (d > 1 && (std::ldexp(w, -d) < 2.0 * o.smallest_width || pieces + d + 1 > o.max_pieces))
+    --d;
+  if (d == 1) {
+    work.emplace_back(mid, b);
+    work.emplace_back(a, mid);
+    return;
+  }
+  const double toward = at(a) ? a : b, step = at(a) ? w : -w;  // from the singular end
+  for (int j = 1; j <= d; ++j) {  // [toward + step 2^-j, toward + step 2^-(j-1)]
+    const double near = toward + std::ldexp(step, -j), far = toward + std::ldexp(step, 1 - j);
+    work.emplace_back(std::min(near, far), std::max(near, far));
+  }
+  const double last = toward + std::ldexp(step, -d);
+  work.emplace_back(std::min(toward, last), std::max(toward, last));
+}
+
+}  // namespace
+
 PiecewiseChebyshevBuild build_piecewise_chebyshev_batch(int m, const ChebyshevBatchSampler& sample,
                                                         const PiecewiseChebyshevOptions& o) {
   if (m < 1) throw std::invalid_argument("piecewise Chebyshev: no functions");
@@ -148,9 +183,7 @@ PiecewiseChebyshevBuild build_piecewise_chebyshev_batch(int m, const ChebyshevBa
       if (p.error > o.tolerance) out.reached = false;
       done.push_back(std::move(p));
     } else {
-      const double mid = 0.5 * (a + b);
-      work.emplace_back(mid, b);
-      work.emplace_back(a, mid);
+      split_piece(a, b, p.error, o, static_cast<int>(done.size() + work.size()), work);
     }
   }
   std::sort(done.begin(), done.end(), [](const Piece& x, const Piece& y) { return x.a < y.a; });

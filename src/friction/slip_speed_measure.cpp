@@ -91,62 +91,80 @@ int plain_piece_nodes(double va, double vb, double root, const RingRules& rules)
   return n;
 }
 
-// Adds the nodes of piece k (cubic c about knot tk) of the ring's range on [a, b] to `nodes`,
-// minus the profile's value p_c at the middle of the range (half_ring_table).
-void add_ring_piece(const std::array<double, 4>& c, double tk, double a, double b, double t_min,
-                    double t_max, double root_span, double p_c, const RingRules& rules,
-                    RingNodes& nodes) {
+// What the pieces of one table ring share (half_ring_table): the ring's range of t = |r|^2,
+// t_min = (s - eps)^2 to t_max = (s + eps)^2, its span and the square root of the span, and the
+// profile's value p_c at the middle of the range.
+struct TableRing {
+  double t_min, t_max, span, root_span, p_c;
+};
+
+// Adds the nodes of piece k of the table (the cubic about knot k) on [a, b] of the ring's range
+// to `nodes`, minus the profile's value p_c at the middle of the range (half_ring_table).
+void add_ring_piece(const ExactModel<double>& m, std::size_t k, double a, double b,
+                    const TableRing& ring, const RingRules& rules, RingNodes& nodes) {
   // A piece far from both ends of the ring's range: v = sqrt(t - t_min) on the lower half,
   // sqrt(t_max - t) on the upper half (dt / sqrt(t - t_min) = 2 dv: the near square root gone,
   // the far one smooth). A piece near both: the angle phi itself, t = t_min + (t_max - t_min)
   // sin^2(phi / 2), dt / sqrt((t - t_min)(t_max - t)) = d phi, with the fine rule.
-  const double span = t_max - t_min;
-  const bool lower = (a - t_min) <= (t_max - b);
-  const double far = lower ? t_max - b : a - t_min;
+  const double t_min = ring.t_min, span = ring.span;
+  const bool lower = (a - t_min) <= (ring.t_max - b);
+  const double far = lower ? ring.t_max - b : a - t_min;
   const bool angle = far < 4.0 * (b - a);
   double va, vb;
   if (angle) {  // phi at a and b: sin^2(phi / 2) = (t - t_min) / span
     va = 2.0 * std::asin(std::sqrt(std::clamp((a - t_min) / span, 0.0, 1.0)));
     vb = 2.0 * std::asin(std::sqrt(std::clamp((b - t_min) / span, 0.0, 1.0)));
   } else {
-    va = lower ? std::sqrt(a - t_min) : std::sqrt(t_max - b);
-    vb = lower ? std::sqrt(b - t_min) : std::sqrt(t_max - a);
+    va = lower ? std::sqrt(a - t_min) : std::sqrt(ring.t_max - b);
+    vb = lower ? std::sqrt(b - t_min) : std::sqrt(ring.t_max - a);
   }
   const GaussLegendreRule& g =
-      angle ? rules.fine : rules.gauss[plain_piece_nodes(va, vb, root_span, rules)];
+      angle ? rules.fine : rules.gauss[plain_piece_nodes(va, vb, ring.root_span, rules)];
   const int n = static_cast<int>(g.nodes.size());
   nodes.reserve(nodes.size + n + 4);
   double* f = nodes.f.data() + nodes.size;
   double* lo = nodes.lo.data() + nodes.size;
   double* fr = nodes.far.data() + nodes.size;
   const double dv = 0.5 * (vb - va);
-  for (int i = 0; i < n; ++i) {
-    const double v = va + dv * (1.0 + g.nodes[i]);
-    double weight;
-    if (angle) {  // dt / root = d phi
-      const double h = std::sin(0.5 * v);
+  if (angle) {
+    for (int i = 0; i < n; ++i) {  // dt / root = d phi
+      const double h = std::sin(0.5 * (va + dv * (1.0 + g.nodes[i])));
       lo[i] = span * h * h;
       fr[i] = 1.0;
-      weight = dv * g.weights[i];
-    } else {  // dt / root = 2 v dv / (v sqrt(far end)) = 2 dv / sqrt(far end)
-      lo[i] = lower ? v * v : span - v * v;
-      fr[i] = v > 0.0 ? span - v * v : 0.0;  // hi on the lower half, lo on the upper
-      weight = 2.0 * dv * g.weights[i];
+      f[i] = dv * g.weights[i];
     }
-    const double x = std::clamp(t_min + lo[i], a, b) - tk;  // the piece's cubic
-    f[i] = weight * (c[0] + x * (c[1] + x * (c[2] + x * c[3])) - p_c);
+  } else {  // t = t_min + v^2 or t_max - v^2: dt / root = 2 v dv / (v sqrt(far end))
+    const double sign = lower ? 1.0 : -1.0, start = lower ? 0.0 : span;
+    for (int i = 0; i < n; ++i) {
+      const double v = va + dv * (1.0 + g.nodes[i]), v2 = v * v;
+      lo[i] = start + sign * v2;
+      fr[i] = v2 > 0.0 ? span - v2 : 0.0;  // hi on the lower half, lo on the upper
+      f[i] = 2.0 * dv * g.weights[i];
+    }
+  }
+  // Times the piece's cubic about its knot, minus p_c.
+  const std::array<double, 4>& c = m.piece[k];
+  const double tk = m.knot[k], c0 = c[0] - ring.p_c;
+  for (int i = 0; i < n; ++i) {
+    const double x = std::min(std::max(t_min + lo[i], a), b) - tk;
+    f[i] *= c0 + x * (c[1] + x * (c[2] + x * c[3]));
   }
   nodes.size += n;
 }
 
-// The sums of the ring weights (add_ring_point) over the nodes, four at a time:
-//   c = cos(phi) = 1 - lo / D, sin^2(phi) = lo hi / D^2 (hi = span - lo), y = (eps - s) + s lo / D.
-SlipMoments ring_node_sums(RingNodes& nodes, double span, double D, double eps, double s) {
+// The sums S_l = sum f lambda^l (l = 0..3) over the nodes, lambda = lo / D in [0, 2] (four at a
+// time), and from them the six ring weights (add_ring_point): with D = 2 eps s and span = 2 D,
+// cos(phi) = 1 - lambda, sin^2(phi) = lambda (2 - lambda), y = y0 + s lambda (y0 = eps - s), so
+// each weight is a cubic in lambda (theory.md section 2, the slip direction about r_c):
+//   c -> S0 - S1,  s sin^2 -> s (2 S1 - S2),  y c -> y0 S0 + (s - y0) S1 - s S2,
+//   s^2 sin^2 c -> s^2 (2 S1 - 3 S2 + S3),  s y sin^2 -> s (2 y0 S1 + (2 s - y0) S2 - s S3),
+//   y^2 c -> y0^2 S0 + y0 (2 s - y0) S1 + s (s - 2 y0) S2 - s^2 S3.
+SlipMoments ring_node_sums(RingNodes& nodes, double D, double eps, double s) {
   const std::size_t n = (nodes.size + 3) / 4 * 4;
   nodes.reserve(n);
   for (std::size_t i = nodes.size; i < n; ++i) nodes.f[i] = nodes.lo[i] = 0.0, nodes.far[i] = 1.0;
-  const double inv_d = 1.0 / D, inv_d2 = inv_d * inv_d, y0 = eps - s;
-  double acc[6][4] = {};
+  const double inv_d = 1.0 / D, y0 = eps - s;
+  double acc[4][4] = {};
   for (std::size_t i = 0; i < n; i += 4) {
     double f[4];
 #if defined(__SSE2__)
@@ -165,22 +183,22 @@ SlipMoments ring_node_sums(RingNodes& nodes, double span, double D, double eps, 
     }
 #endif
     for (int l = 0; l < 4; ++l) {
-      const double lo = nodes.lo[i + l], c = 1.0 - lo * inv_d, y = y0 + s * lo * inv_d;
-      const double A = f[l] * c, B = f[l] * lo * (span - lo) * inv_d2;
-      acc[0][l] += A;
-      acc[1][l] += B;
-      acc[2][l] += A * y;
-      acc[3][l] += B * c;
-      acc[4][l] += B * y;
-      acc[5][l] += A * y * y;
+      const double lambda = nodes.lo[i + l] * inv_d;
+      const double f1 = f[l] * lambda, f2 = f1 * lambda;
+      acc[0][l] += f[l];
+      acc[1][l] += f1;
+      acc[2][l] += f2;
+      acc[3][l] += f2 * lambda;
     }
   }
-  SlipMoments out;
-  for (int k = 0; k < 6; ++k) out[k] = (acc[k][0] + acc[k][1]) + (acc[k][2] + acc[k][3]);
-  out[1] *= s;
-  out[3] *= s * s;
-  out[4] *= s;
-  return out;
+  double S[4];
+  for (int k = 0; k < 4; ++k) S[k] = (acc[k][0] + acc[k][1]) + (acc[k][2] + acc[k][3]);
+  return {S[0] - S[1],
+          s * (2.0 * S[1] - S[2]),
+          y0 * S[0] + (s - y0) * S[1] - s * S[2],
+          s * s * (2.0 * S[1] - 3.0 * S[2] + S[3]),
+          s * (2.0 * y0 * S[1] + (2.0 * s - y0) * S[2] - s * S[3]),
+          y0 * y0 * S[0] + y0 * (2.0 * s - y0) * S[1] + s * (s - 2.0 * y0) * S[2] - s * s * S[3]};
 }
 
 // The half ring of a table in the variable t = |r|^2 = C - D cos(phi) (C = s^2 + eps^2,
@@ -189,38 +207,40 @@ SlipMoments ring_node_sums(RingNodes& nodes, double span, double D, double eps, 
 // t_max for a ring inside the disk) are removed by t = t_min + w u^2 on the end pieces.
 SlipMoments half_ring_table(const ExactModel<double>& m, double s, double eps,
                             const RingRules& rules) {
-  const double t_min = (s - eps) * (s - eps), t_max = (s + eps) * (s + eps);
-  const double t_end = std::min(1.0, t_max), D = 2.0 * eps * s;
-  const auto first = std::upper_bound(m.knot.begin(), m.knot.end(), t_min);
+  TableRing ring;
+  ring.t_min = (s - eps) * (s - eps);
+  ring.t_max = (s + eps) * (s + eps);
+  ring.span = ring.t_max - ring.t_min;
+  ring.root_span = std::sqrt(ring.span);
+  const double t_end = std::min(1.0, ring.t_max), D = 2.0 * eps * s;
+  const auto first = std::upper_bound(m.knot.begin(), m.knot.end(), ring.t_min);
   // The profile's value at the middle of the ring's range, in closed form; the rule takes only
   // the rest, p - p_c, which is O(eps s) on the ring: its error shrinks with the centre's
   // distance from O (the functions are divided by sigma ~ eps near pure spin).
-  double p_c, t_c = std::min(s * s + eps * eps, 1.0);
-  profile_at(m, &t_c, 1, &p_c);
+  double t_c = std::min(s * s + eps * eps, 1.0);
+  profile_at(m, &t_c, 1, &ring.p_c);
   const double phi_end =
-      t_end == t_max
+      t_end == ring.t_max
           ? std::numbers::pi
-          : 2.0 * std::asin(std::sqrt(std::clamp((1.0 - t_min) / (t_max - t_min), 0.0, 1.0)));
-  const SlipMoments closed = constant_ring(p_c, s, eps, phi_end);
+          : 2.0 * std::asin(std::sqrt(std::clamp((1.0 - ring.t_min) / ring.span, 0.0, 1.0)));
+  const SlipMoments closed = constant_ring(ring.p_c, s, eps, phi_end);
   thread_local RingNodes nodes;
   nodes.size = 0;
-  const double root_span = std::sqrt(t_max - t_min);
   // The pieces between t_min, the knots inside the range and t_end; the first is the table's
   // piece holding t_min.
   std::size_t k =
       std::min<std::size_t>(std::max<std::ptrdiff_t>(first - m.knot.begin(), 1), m.piece.size()) -
       1;
-  double a = t_min;
+  double a = ring.t_min;
   for (auto it = first;; ++it) {
     const bool last = it == m.knot.end() || !(*it < t_end);
     const double b = last ? t_end : *it;
-    if (b > a)
-      add_ring_piece(m.piece[k], m.knot[k], a, b, t_min, t_max, root_span, p_c, rules, nodes);
+    if (b > a) add_ring_piece(m, k, a, b, ring, rules, nodes);
     if (last) break;
     a = b;
     k = std::min(k + 1, m.piece.size() - 1);
   }
-  SlipMoments out = ring_node_sums(nodes, t_max - t_min, D, eps, s);
+  SlipMoments out = ring_node_sums(nodes, D, eps, s);
   for (int i = 0; i < 6; ++i) out[i] += closed[i];
   return out;
 }
@@ -322,63 +342,46 @@ double panel_coordinate(const Panel& p, double nu) {
   return std::sqrt(std::clamp(p.squeeze < 0 ? (nu - p.a) / w : (p.b - nu) / w, 0.0, 1.0));
 }
 
-// The ring weights W(G) = integral G(nu) 2 s ring(s) ds (s = nu / eta) of the points of a panel.
-void panel_rule(const ExactModel<double>& m, const Panel& p, double eps, double eta, double tol,
-                const GaussLegendreRule& g, const RingRules& ring_rule, std::vector<double>& nu,
-                std::vector<SlipMoments>& weight) {
+// What the panels of one t share: the profile, the centre of sliding eps = sigma / eta, eta, the
+// ring tolerance, the ring rules, and for a table the knot tangencies `cuts` with the rules of
+// table_panel_rule (a panel's own, its target, and a piece's between two cuts).
+struct PanelContext {
+  const ExactModel<double>& model;
+  double eps, eta, tol;
+  const RingRules& ring_rule;
+  const GaussLegendreRule& panel;
+  std::vector<double> cuts;
+  GaussLegendreRule target, piece;
+};
+
+// The ring weights W(G) = integral G(nu) 2 s ring(s) ds (s = nu / eta) of the points of panel p
+// under rule g, appended to out.
+void panel_rule(const PanelContext& ctx, const Panel& p, const GaussLegendreRule& g,
+                SlipSpeedMeasure& out) {
   for (std::size_t i = 0; i < g.nodes.size(); ++i) {
     double dnu;
-    const double x = panel_point(p, 0.5 * (1.0 + g.nodes[i]), dnu), s = x / eta;
-    const SlipMoments ring = half_ring(m, s, eps, tol, ring_rule);
-    const double w = 0.5 * g.weights[i] * dnu * 2.0 * s / eta;
+    const double x = panel_point(p, 0.5 * (1.0 + g.nodes[i]), dnu), s = x / ctx.eta;
+    const SlipMoments ring = half_ring(ctx.model, s, ctx.eps, ctx.tol, ctx.ring_rule);
+    const double w = 0.5 * g.weights[i] * dnu * 2.0 * s / ctx.eta;
     SlipMoments wk;
     for (int c = 0; c < 6; ++c) wk[c] = w * ring[c];
-    nu.push_back(x);
-    weight.push_back(wk);
+    out.nu.push_back(x);
+    out.weight.push_back(wk);
   }
 }
 
-// A table's panel: its pieces between the knot tangencies in it (nu = eta |rho_k - eps| and
-// eta (rho_k + eps), where m(s) is only C2) each get a short rule, and their points are moved
-// onto `target`, a rule of the panel, by Lagrange interpolation in its coordinate u (exact for G
-// a polynomial in u of the target's degree: the panels are graded for G, the pieces for m; the
-// target has twice the nodes of the panel's own rule, as interpolation has half the order of
-// Gauss quadrature).
-void table_panel_rule(const ExactModel<double>& m, const Panel& p, const std::vector<double>& cuts,
-                      double eps, double eta, double tol, const GaussLegendreRule& g,
-                      const GaussLegendreRule& target, const GaussLegendreRule& piece_rule,
-                      const RingRules& ring_rule, std::vector<double>& nu,
-                      std::vector<SlipMoments>& weight) {
-  auto lo = std::upper_bound(cuts.begin(), cuts.end(), p.a);
-  auto hi = std::lower_bound(cuts.begin(), cuts.end(), p.b);
-  if (lo == hi) return panel_rule(m, p, eps, eta, tol, g, ring_rule, nu, weight);
-  std::vector<double> fine_nu;
-  std::vector<SlipMoments> fine_w;
-  double a = p.a;
-  for (auto it = lo; it <= hi; ++it) {
-    const double b = it == hi ? p.b : *it;
-    if (b - a <= 1e-12 * (p.b - p.a)) continue;
-    // m(s) is C2 with a (s - s_k)^(5/2) term at the tangencies: squeezed towards both ends.
-    const Panel piece{a, b, 2};
-    panel_rule(m, piece, eps, eta, tol, piece_rule, ring_rule, fine_nu, fine_w);
-    a = b;
-  }
-  const std::size_t n = target.nodes.size(), base = nu.size();
-  std::vector<double> u(n);
-  for (std::size_t j = 0; j < n; ++j) {
-    double dnu;
-    u[j] = 0.5 * (1.0 + target.nodes[j]);
-    nu.push_back(panel_point(p, u[j], dnu));
-    weight.push_back(SlipMoments{});
-  }
-  // The Lagrange basis in the first barycentric form: l_j(x) = prod_i (x - u_i) lambda_j /
-  // (x - u_j), lambda_j = 1 / prod_(i != j) (u_j - u_i).
+// Adds to the weights of the target's points (at u[j] of panel p, from `base` on in out) the
+// points of `fine` moved onto them by Lagrange interpolation in u, in the first barycentric
+// form: l_j(x) = prod_i (x - u_i) lambda_j / (x - u_j), lambda_j = 1 / prod_(i != j) (u_j - u_i).
+void move_onto_target(const Panel& p, const std::vector<double>& u, const SlipSpeedMeasure& fine,
+                      std::size_t base, SlipSpeedMeasure& out) {
+  const std::size_t n = u.size();
   std::vector<double> lambda(n, 1.0), l(n);
   for (std::size_t j = 0; j < n; ++j)
     for (std::size_t i = 0; i < n; ++i)
       if (i != j) lambda[j] /= u[j] - u[i];
-  for (std::size_t k = 0; k < fine_nu.size(); ++k) {
-    const double x = panel_coordinate(p, fine_nu[k]);
+  for (std::size_t k = 0; k < fine.nu.size(); ++k) {
+    const double x = panel_coordinate(p, fine.nu[k]);
     double all = 1.0;
     std::size_t at = n;  // a node x equals
     for (std::size_t i = 0; i < n; ++i) {
@@ -387,10 +390,40 @@ void table_panel_rule(const ExactModel<double>& m, const Panel& p, const std::ve
     }
     for (std::size_t j = 0; j < n; ++j)
       l[j] = at < n ? (j == at ? 1.0 : 0.0) : all * lambda[j] / (x - u[j]);
-    for (std::size_t j = 0; j < n; ++j) {
-      for (int c = 0; c < 6; ++c) weight[base + j][c] += l[j] * fine_w[k][c];
-    }
+    for (std::size_t j = 0; j < n; ++j)
+      for (int c = 0; c < 6; ++c) out.weight[base + j][c] += l[j] * fine.weight[k][c];
   }
+}
+
+// A table's panel: its pieces between the knot tangencies in it (nu = eta |rho_k - eps| and
+// eta (rho_k + eps), where m(s) is only C2) each get a short rule, and their points are moved
+// onto the target, a rule of the panel, by Lagrange interpolation in its coordinate u (exact for
+// G a polynomial in u of the target's degree: the panels are graded for G, the pieces for m; the
+// target has twice the nodes of the panel's own rule, as interpolation has half the order of
+// Gauss quadrature).
+void table_panel_rule(const PanelContext& ctx, const Panel& p, SlipSpeedMeasure& out) {
+  const std::vector<double>& cuts = ctx.cuts;
+  auto lo = std::upper_bound(cuts.begin(), cuts.end(), p.a);
+  auto hi = std::lower_bound(cuts.begin(), cuts.end(), p.b);
+  if (lo == hi) return panel_rule(ctx, p, ctx.panel, out);
+  SlipSpeedMeasure fine;
+  double a = p.a;
+  for (auto it = lo; it <= hi; ++it) {
+    const double b = it == hi ? p.b : *it;
+    if (b - a <= 1e-12 * (p.b - p.a)) continue;
+    // m(s) is C2 with a (s - s_k)^(5/2) term at the tangencies: squeezed towards both ends.
+    panel_rule(ctx, Panel{a, b, 2}, ctx.piece, fine);
+    a = b;
+  }
+  const std::size_t n = ctx.target.nodes.size(), base = out.nu.size();
+  std::vector<double> u(n);
+  for (std::size_t j = 0; j < n; ++j) {
+    double dnu;
+    u[j] = 0.5 * (1.0 + ctx.target.nodes[j]);
+    out.nu.push_back(panel_point(p, u[j], dnu));
+    out.weight.push_back(SlipMoments{});
+  }
+  move_onto_target(p, u, fine, base, out);
 }
 
 }  // namespace
@@ -426,27 +459,25 @@ SlipSpeedMeasure slip_speed_measure(const ExactModel<double>& model, double t,
   ring_rule.fine = gauss_legendre(2 * o.ring_nodes + 4);
   ring_rule.coarse_max = o.ring_nodes;
   ring_rule.coarse_min = std::min(3, o.ring_nodes);
-  // B^(-2n) = e^(-34) (about 1e-15): r = cosh(17 / n) (plain_piece_nodes).
+  // B^(-2n) = 1e-2 ring_tolerance (the default: about 1e-15): r = cosh(-ln(B^(-2n)) / (2 n))
+  // (plain_piece_nodes).
+  const double exponent = -0.5 * std::log(std::clamp(1e-2 * o.ring_tolerance, 1e-16, 1e-6));
   for (int n = 0; n <= o.ring_nodes; ++n)
-    ring_rule.reach.push_back(n < 1 ? INFINITY : std::cosh(17.0 / n));
-  const double tol = o.ring_tolerance * load;
+    ring_rule.reach.push_back(n < 1 ? INFINITY : std::cosh(exponent / n));
+  PanelContext ctx{model, eps, eta, o.ring_tolerance * load, ring_rule, g, {}, {}, {}};
   if (model.piece.empty()) {
-    for (const Panel& p : panels)
-      panel_rule(model, p, eps, eta, tol, g, ring_rule, out.nu, out.weight);
+    for (const Panel& p : panels) panel_rule(ctx, p, g, out);
     return out;
   }
-  std::vector<double> cuts;
   for (std::size_t k = 1; k + 1 < model.knot.size(); ++k) {
     const double rho = std::sqrt(model.knot[k]);
-    cuts.push_back(eta * std::abs(rho - eps));
-    cuts.push_back(eta * (rho + eps));
+    ctx.cuts.push_back(eta * std::abs(rho - eps));
+    ctx.cuts.push_back(eta * (rho + eps));
   }
-  std::sort(cuts.begin(), cuts.end());
-  const GaussLegendreRule piece_rule = gauss_legendre(o.piece_nodes);
-  const GaussLegendreRule target = gauss_legendre(2 * o.nodes);
-  for (const Panel& p : panels)
-    table_panel_rule(model, p, cuts, eps, eta, tol, g, target, piece_rule, ring_rule, out.nu,
-                     out.weight);
+  std::sort(ctx.cuts.begin(), ctx.cuts.end());
+  ctx.piece = gauss_legendre(o.piece_nodes);
+  ctx.target = gauss_legendre(2 * o.nodes);
+  for (const Panel& p : panels) table_panel_rule(ctx, p, out);
   return out;
 }
 

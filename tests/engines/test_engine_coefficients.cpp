@@ -10,6 +10,7 @@
 #include "closed_forms.hpp"
 #include "coefficients.hpp"
 #include "contensou/friction/error.hpp"
+#include "contensou/friction/exact_resultants.hpp"
 
 using namespace contensou;
 using namespace contensou::engines;
@@ -84,4 +85,35 @@ TEST(EngineCoefficients, BadInputNamesTheOption) {
             std::string::npos);
   EXPECT_NE(message([] { named_patch("uniform", 0.1, NAN); }).find("--friction = nan"),
             std::string::npos);
+}
+
+// The curves come from the exact law (exact_law.hpp): on the seed tire (a profile without closed
+// forms) the worst errors of the pure-spin rows equal those from the adaptive integrator at a
+// tighter tolerance on the same grid, to the law's tolerance (1e-9 of F0 and f N R).
+TEST(EngineCoefficients, ExactLawCurvesAgreeWithTheIntegrator) {
+  const double R = 0.087, f = 0.3;
+  const ContactPatch patch = named_patch("seed-tire", R, f);
+  Grid g;
+  g.points = 41;
+  const auto rows = engine_coefficients(patch, g);
+  const ExactModel<double> model = make_exact_model(patch);
+  const double N = normal_load(patch), F0 = f * N, M0 = spin_torque_per_load(patch) * N;
+  const double c = M0 / (F0 * R);  // the elliptic cone at pure spin (coefficients.hpp)
+  double ef = 0, em = 0, uf = 0, um = 0;
+  for (int i = 0; i < g.points; ++i) {
+    const double psi = g.psi_min * std::pow(g.psi_max / g.psi_min, double(i) / (g.points - 1));
+    const auto r = exact_resultants(model, Kinematics<double>{psi, 0.0, 1.0 / R}, {1e-12});
+    const double fp = -r.resultants.Fx / F0, mz = -r.resultants.Mz / M0;
+    const double s = std::hypot(psi, c);
+    ef = std::max(ef, std::abs(psi / s - fp));
+    em = std::max(em, std::abs(c / s - mz));
+    uf = std::max(uf, std::abs(1 - fp));
+    um = std::max(um, std::abs(1 - mz));
+  }
+  // Torques relative to M0 = f N R A^2 / A^1: the law's bound 1e-9 f N R is (A^1 / A^2) 1e-9 of M0.
+  const double tol_f = 1e-9, tol_m = 1e-9 * F0 * R / M0;
+  EXPECT_NEAR(row(rows, "MuJoCo").worst_force_error, ef, tol_f);
+  EXPECT_NEAR(row(rows, "MuJoCo").worst_torque_error, em, tol_m);
+  EXPECT_NEAR(row(rows, "Chrono").worst_force_error, uf, tol_f);
+  EXPECT_NEAR(row(rows, "Chrono").worst_torque_error, um, tol_m);
 }

@@ -54,6 +54,10 @@ struct PiecewiseChebyshevOptions {
   std::function<void(double t, double* w)> weight;
   std::vector<double> breaks;     // initial partition (default: halves graded towards t = 0)
   double smallest_width = 1e-13;  // pieces are not split below this width
+  // Points where the functions have an x log|x| singularity (the errors of a piece ending there
+  // shrink like its width squared): such a piece that misses the tolerance is split towards the
+  // point at once into as many halvings as its error asks for (the pieces bisection would reach).
+  std::vector<double> singular_points;
   int max_pieces = 4000;
 };
 
