@@ -11,6 +11,7 @@
 
 #include "contensou/contensou.hpp"
 #include "contensou/identification/fit.hpp"
+#include "contensou/identification/identify.hpp"
 #include "contensou/identification/report.hpp"
 #include "contensou/identification/report_text.hpp"
 #include "contensou/identification/simulation.hpp"
@@ -92,52 +93,42 @@ IdentificationOptions identification_options(const FitArgs& a, ProfileChoice& pr
   return o;
 }
 
-int run_fit_only(const FitArgs& a, const MeasuredData& data, const IdentificationOptions& o,
-                 const app::RunInfo& info) {
-  const FitReport fit = fit_fractional_law(data, o);
-  std::printf("%s %s: fractional law (seed eqs. 5-7)\n%s", kName, kVersion,
-              fit_report_text(info, fit).c_str());
-  if (!a.plots_dir.empty() && app::write_plots(a.plots_dir, data, fit, a.radius))
-    std::printf("pictures: %s/fit_*.png\n", a.plots_dir.c_str());
-  if (!a.json_path.empty()) {
-    write_file_atomically(a.json_path, fit_report_json(info, fit) + "\n");
-    std::printf("report: %s\n", a.json_path.c_str());
+// Progress for people: one line, rewritten in place, on a terminal; in scripts and pipes
+// stderr keeps errors only. Cleared when destroyed.
+class LoopProgress {
+ public:
+  explicit LoopProgress(ClosedLoopOptions& lo) {
+    if (isatty(fileno(stderr)))
+      lo.progress = [this](const std::string& line) {
+        std::fprintf(stderr, "\r\033[K[closed loop] %s", line.c_str());
+        std::fflush(stderr);
+        shown_ = true;
+      };
   }
-  return 0;
-}
-
-ClosedLoopReport close_the_loop_with_progress(const MeasuredData& data,
-                                              const IdentificationOptions& o,
-                                              ClosedLoopOptions lo) {
-  // Progress for people: one line, rewritten in place, on a terminal; in scripts and pipes
-  // stderr keeps errors only.
-  bool progress_shown = false;
-  if (isatty(fileno(stderr)))
-    lo.progress = [&progress_shown](const std::string& line) {
-      std::fprintf(stderr, "\r\033[K[closed loop] %s", line.c_str());
-      std::fflush(stderr);
-      progress_shown = true;
-    };
-  auto end_progress = [&progress_shown] {
-    if (progress_shown) std::fprintf(stderr, "\r\033[K");
-    progress_shown = false;
-  };
-  try {
-    ClosedLoopReport loop = close_the_loop(data, o, lo);
-    end_progress();
-    return loop;
-  } catch (...) {
-    end_progress();
-    throw;
+  ~LoopProgress() {
+    if (shown_) std::fprintf(stderr, "\r\033[K");
   }
-}
+  LoopProgress(const LoopProgress&) = delete;
+  LoopProgress& operator=(const LoopProgress&) = delete;
 
-int run_loop(const FitArgs& a, const MeasuredData& data, const IdentificationOptions& o,
-             const app::RunInfo& info) {
-  ClosedLoopOptions lo;
-  lo.alpha = a.alpha;
-  lo.speed_inside_integrals = a.speed_inside;
-  const ClosedLoopReport loop = close_the_loop_with_progress(data, o, lo);
+ private:
+  bool shown_ = false;
+};
+
+int print_and_write(const FitArgs& a, const Identification& run, const app::RunInfo& info) {
+  const MeasuredData& data = run.fitted;
+  if (!run.loop) {
+    std::printf("%s %s: fractional law (seed eqs. 5-7)\n%s", kName, kVersion,
+                fit_report_text(info, run.fit).c_str());
+    if (!a.plots_dir.empty() && app::write_plots(a.plots_dir, data, run.fit, a.radius))
+      std::printf("pictures: %s/fit_*.png\n", a.plots_dir.c_str());
+    if (!a.json_path.empty()) {
+      write_file_atomically(a.json_path, fit_report_json(info, run.fit) + "\n");
+      std::printf("report: %s\n", a.json_path.c_str());
+    }
+    return 0;
+  }
+  const ClosedLoopReport& loop = *run.loop;
   std::printf("%s %s\n%s", kName, kVersion, loop_report_text(info, loop).c_str());
   if (!a.plots_dir.empty()) {
     const bool p = app::write_plots(a.plots_dir, data, loop.final_fit, a.radius);
@@ -163,9 +154,21 @@ int run_fit(const FitArgs& a) {
       o.normal_load_n = l->mean_n;  // f = F0 / N is then reported
       load_source = l->description();
     }
+  IdentifyOptions io;
+  io.fit = o;
+  std::optional<LoopProgress> progress;
+  if (!a.no_loop) {
+    io.loop = ClosedLoopOptions{};
+    io.loop->alpha = a.alpha;
+    io.loop->speed_inside_integrals = a.speed_inside;
+    progress.emplace(*io.loop);
+  }
+  const Identification run = identify(data, io);
+  progress.reset();
   app::RunInfo info = describe_run(a.data_path, data, a.radius, o.normal_load_n, profile);
   info.normal_load_source = load_source;
-  return a.no_loop ? run_fit_only(a, data, o, info) : run_loop(a, data, o, info);
+  info.outliers = run.outliers;
+  return print_and_write(a, run, info);
 }
 
 struct SimulateArgs {
