@@ -4,6 +4,7 @@
 #include <glog/logging.h>
 
 #include <CLI/CLI.hpp>
+#include <chrono>
 #include <cstdio>
 #include <filesystem>
 #include <optional>
@@ -40,25 +41,36 @@ std::pair<std::string, double> parse_fix(const std::string& s) {
   return {s.substr(0, eq), v};
 }
 
-int run_fit(const std::string& data_path, double radius, std::optional<double> load,
-            const std::string& profile_spec, std::optional<double> pressure,
-            const std::vector<std::string>& fixes, const std::string& loss, double loss_scale,
-            const std::string& noise_model, const std::vector<double>& noise_scale,
-            const std::string& json_path, const std::string& plots_dir, bool loop_on, double alpha,
-            bool speed_inside, int failing_point, int smoothing, bool profile_clip) {
+// The command line of a fit (the options of the main command).
+struct FitArgs {
+  std::string data_path, json_path, plots_dir, profile_spec, loss = "none",
+                                                             noise_model = "additive";
+  double radius = 0.0, loss_scale = 2.0, alpha = 1e-3;
+  std::optional<double> load, pressure;
+  std::vector<std::string> fixes;
+  std::vector<double> noise_scale;
+  bool loop_on = true, speed_inside = true, profile_clip = false, progress = false;
+  int failing_point = -1, smoothing = 0;
+};
+
+int run_fit(const FitArgs& a) {
+  const double radius = a.radius;
+  const std::optional<double> load = a.load;
+  const std::string &profile_spec = a.profile_spec, &json_path = a.json_path,
+                    &plots_dir = a.plots_dir;
   IdentificationOptions o;
   o.radius_m = radius;
   require_positive("--radius", radius);
-  if (smoothing > 0 && (profile_spec.empty() || !std::filesystem::exists(profile_spec)))
+  if (a.smoothing > 0 && (profile_spec.empty() || !std::filesystem::exists(profile_spec)))
     throw std::runtime_error("--profile-smoothing needs --profile with a CSV file");
   ProfileChoice profile;
   if (load) require_positive("--normal-load", *load);
   o.normal_load_n = load;
   if (!profile_spec.empty()) {
-    profile = choose_profile(profile_spec, smoothing, profile_clip);
+    profile = choose_profile(profile_spec, a.smoothing, a.profile_clip);
     const ProfileChoice& p = profile;
     o.profile = p.profile;
-    const std::optional<double> ps = p.reference_pressure ? p.reference_pressure : pressure;
+    const std::optional<double> ps = p.reference_pressure ? p.reference_pressure : a.pressure;
     if (ps) {
       ContactPatch patch;
       patch.radius_m = radius;
@@ -67,21 +79,21 @@ int run_fit(const std::string& data_path, double radius, std::optional<double> l
       o.normal_load_n = normal_load(patch);
     }
   }
-  for (const std::string& f : fixes) o.fixed.insert(parse_fix(f));
-  o.failing_point = failing_point;
-  o.loss = loss == "huber"    ? RobustLoss::huber
-           : loss == "cauchy" ? RobustLoss::cauchy
+  for (const std::string& f : a.fixes) o.fixed.insert(parse_fix(f));
+  o.failing_point = a.failing_point;
+  o.loss = a.loss == "huber"    ? RobustLoss::huber
+           : a.loss == "cauchy" ? RobustLoss::cauchy
                               : RobustLoss::none;
-  o.loss_scale = loss_scale;
-  o.noise_model = noise_model == "relative" ? NoiseModel::relative : NoiseModel::additive;
-  if (!noise_scale.empty()) {
-    if (noise_scale.size() != 3)
+  o.loss_scale = a.loss_scale;
+  o.noise_model = a.noise_model == "relative" ? NoiseModel::relative : NoiseModel::additive;
+  if (!a.noise_scale.empty()) {
+    if (a.noise_scale.size() != 3)
       throw std::runtime_error("--noise-scale needs three values: Fx,Fy,Mz");
-    o.noise_scale = std::array<double, 3>{noise_scale[0], noise_scale[1], noise_scale[2]};
+    o.noise_scale = std::array<double, 3>{a.noise_scale[0], a.noise_scale[1], a.noise_scale[2]};
   }
-  const MeasuredData data = read_measured_csv(data_path);
-  const app::RunInfo info = describe_run(data_path, data, radius, o.normal_load_n, profile);
-  if (!loop_on) {
+  const MeasuredData data = read_measured_csv(a.data_path);
+  const app::RunInfo info = describe_run(a.data_path, data, radius, o.normal_load_n, profile);
+  if (!a.loop_on) {
     const FitReport fit = fit_fractional_law(data, o);
     std::printf("%s %s: fractional law (seed eqs. 5-7)\n%s", kName, kVersion,
                 app::format_table(info, fit).c_str());
@@ -94,29 +106,21 @@ int run_fit(const std::string& data_path, double radius, std::optional<double> l
     return 0;
   }
   ClosedLoopOptions lo;
-  lo.alpha = alpha;
-  lo.speed_inside_integrals = speed_inside;
-  // Progress for people: one line, rewritten in place, on a terminal; in scripts and pipes
-  // stderr keeps errors only.
-  bool progress_shown = false;
-  if (isatty(fileno(stderr)))
-    lo.progress = [&progress_shown](const std::string& line) {
-      std::fprintf(stderr, "\r\033[K[closed loop] %s", line.c_str());
+  lo.alpha = a.alpha;
+  lo.speed_inside_integrals = a.speed_inside;
+  // Progress for people (on a terminal, or with --progress): a line per stage of the loop on
+  // stderr, each with the time since the loop began; in scripts and pipes stderr keeps errors
+  // only.
+  if (a.progress || isatty(fileno(stderr))) {
+    const auto start = std::chrono::steady_clock::now();
+    lo.progress = [start](const std::string& line) {
+      const double s =
+          std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+      std::fprintf(stderr, "[closed loop %7.1f s] %s\n", s, line.c_str());
       std::fflush(stderr);
-      progress_shown = true;
     };
-  auto end_progress = [&progress_shown] {
-    if (progress_shown) std::fprintf(stderr, "\r\033[K");
-    progress_shown = false;
-  };
-  ClosedLoopReport loop;
-  try {
-    loop = close_the_loop(data, o, lo);
-  } catch (...) {
-    end_progress();
-    throw;
   }
-  end_progress();
+  const ClosedLoopReport loop = close_the_loop(data, o, lo);
   std::printf("%s %s: base model, the fractional law (seed eqs. 5-7)\n%s", kName, kVersion,
               app::format_table(info, loop.base).c_str());
   std::printf("%s", app::format_loop(loop).c_str());
@@ -221,16 +225,16 @@ int main(int argc, char** argv) {
       "diagrams Fx, Fy, Mz against the sliding velocity and spin (CSV, theory.md section 6),\n"
       "and reports the parameters with 95 % confidence intervals."};
   app.set_version_flag("--version", std::string(kName) + " " + kVersion);
-  std::string data_path, json_path, plots_dir, profile_spec, loss = "none",
-                                                             noise_model = "additive";
-  double radius = 0.0, loss_scale = 2.0;
-  std::optional<double> load, pressure;
-  std::vector<std::string> fixes;
-  std::vector<double> noise_scale;
-  bool no_loop = false, speed_inside = true, effective_speed = false, verbose = false,
-       profile_clip = false;
-  int failing_point = -1, smoothing = 0;
-  double alpha = 1e-3;
+  FitArgs fit;
+  std::string &data_path = fit.data_path, &json_path = fit.json_path, &plots_dir = fit.plots_dir,
+              &profile_spec = fit.profile_spec, &loss = fit.loss, &noise_model = fit.noise_model;
+  double &radius = fit.radius, &loss_scale = fit.loss_scale, &alpha = fit.alpha;
+  std::optional<double>&load = fit.load, &pressure = fit.pressure;
+  std::vector<std::string>& fixes = fit.fixes;
+  std::vector<double>& noise_scale = fit.noise_scale;
+  bool &speed_inside = fit.speed_inside, &profile_clip = fit.profile_clip;
+  bool no_loop = false, effective_speed = false, verbose = false;
+  int &failing_point = fit.failing_point, &smoothing = fit.smoothing;
   app.add_option("data", data_path,
                  "measured diagrams (CSV: vx_mps, vy_mps, omega_radps, Fx_N, ...)");
   auto* radius_opt = app.add_option("--radius", radius, "patch radius R [m]");
@@ -268,6 +272,9 @@ int main(int argc, char** argv) {
       ->check(CLI::Range(1, 64));
   app.add_flag("--profile-clip", profile_clip,
                "clip a --profile CSV that dips below zero at zero (otherwise refused)");
+  app.add_flag("--progress", fit.progress,
+               "closed loop: a line per stage on stderr with the time so far (the default on "
+               "a terminal)");
   app.add_flag("--verbose", verbose, "show the solver's own log (Ceres, glog) on stderr");
   // Testing only (hidden): the residual of this data point fails to evaluate.
   app.add_option("--test-failing-point", failing_point)->group("");
@@ -332,10 +339,8 @@ int main(int argc, char** argv) {
                                "hertz, seed-tire); give one, or the load as --normal-load");
     std::optional<app::OutputFolderLock> lock;
     if (!plots_dir.empty()) lock.emplace(plots_dir);  // before the fit: a second run stops here
-    return app::finish_output(run_fit(data_path, radius, load, profile_spec, pressure, fixes, loss,
-                                      loss_scale, noise_model, noise_scale, json_path, plots_dir,
-                                      !no_loop, alpha, speed_inside, failing_point, smoothing,
-                                      profile_clip));
+    fit.loop_on = !no_loop;
+    return app::finish_output(run_fit(fit));
   } catch (const std::exception& e) {
     std::fprintf(stderr, "%s: error: %s\n", kName, e.what());
     return 1;

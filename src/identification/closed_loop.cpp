@@ -385,6 +385,7 @@ ClosedLoopReport close_the_loop(const MeasuredData& data, const IdentificationOp
   say(loop, "fitting the base law");
   LoopState st = fit_state(data, base_spec_for(data, options), noise);
   report.base = st.fit;
+  say(loop, "base law fitted: BIC " + std::to_string(st.fit.bic));
   for (int step = 1; step <= loop.max_steps; ++step) {
     const std::vector<Candidate> cands = catalogue(data, st.spec);
     if (cands.empty()) break;
@@ -424,6 +425,8 @@ ClosedLoopReport close_the_loop(const MeasuredData& data, const IdentificationOp
       say(loop, step_label(step) + "fitting " + label(c));
       LoopState ext = fit_state(data, ext_spec, noise);
       LoopStep trial = test_extension(data, st, ext, c, threshold, noise.model, loop);
+      say(loop, step_label(step) + label(c) + " fitted: BIC " + std::to_string(trial.bic_before) +
+                    " -> " + std::to_string(trial.bic_after));
       trial.scores = sorted;
       trials.push_back({order[rank], std::move(ext), std::move(trial)});
     }

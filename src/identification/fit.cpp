@@ -10,6 +10,7 @@
 #include <numeric>
 #include <optional>
 #include <stdexcept>
+#include <thread>
 #include <string>
 
 #include "contensou/friction/error.hpp"
@@ -52,6 +53,19 @@ struct PointResidual {
     return true;
   }
 };
+
+// Threads of Ceres' evaluations of the residuals and the Jacobian (the bulk of a fit's time on
+// large data): one per core.
+int evaluation_threads() {
+  return static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
+}
+
+// Ceres' evaluation of a whole problem, on evaluation_threads().
+ceres::Problem::EvaluateOptions evaluate_options() {
+  ceres::Problem::EvaluateOptions o;
+  o.num_threads = evaluation_threads();
+  return o;
+}
 
 // Derivatives in passes of 8 parameters (ceres::Jet<double, 8>).
 using PointCost = ceres::DynamicAutoDiffCostFunction<PointResidual, 8>;
@@ -502,6 +516,7 @@ Solution solve(const FitSetup& s) {
     opt.gradient_tolerance = 1e-12;
     opt.parameter_tolerance = 1e-10;
     opt.logging_type = ceres::SILENT;
+    opt.num_threads = evaluation_threads();
     ceres::Solve(opt, sol.problem.get(), &sol.summary);
     // Never go on (covariance, report) from a failed solve.
     if (!sol.summary.IsSolutionUsable())
@@ -525,7 +540,7 @@ Eigen::MatrixXd jacobian_at_optimum(ceres::Problem& problem, const ModelSpec& sp
   std::vector<double> residuals;
   double cost = 0.0;
   const bool evaluated =
-      problem.Evaluate(ceres::Problem::EvaluateOptions(), &cost, &residuals, nullptr, &crs);
+      problem.Evaluate(evaluate_options(), &cost, &residuals, nullptr, &crs);
   Eigen::MatrixXd J = Eigen::MatrixXd::Zero(crs.num_rows, crs.num_cols);
   for (int r = 0; r < crs.num_rows; ++r)
     for (int k = crs.rows[r]; k < crs.rows[r + 1]; ++k) J(r, crs.cols[k]) = crs.values[k];
@@ -767,7 +782,7 @@ void weighted_jacobian(const MeasuredData& data, const ModelSpec& spec,
   ceres::CRSMatrix crs;
   std::vector<double> res;
   double cost = 0.0;
-  problem.Evaluate(ceres::Problem::EvaluateOptions(), &cost, &res, nullptr, &crs);
+  problem.Evaluate(evaluate_options(), &cost, &res, nullptr, &crs);
   *r = Eigen::Map<Eigen::VectorXd>(res.data(), static_cast<Eigen::Index>(res.size()));
   *J = Eigen::MatrixXd::Zero(crs.num_rows, K);
   for (int row = 0; row < crs.num_rows; ++row)
