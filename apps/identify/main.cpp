@@ -83,7 +83,7 @@ int run_fit(const FitArgs& a) {
   o.failing_point = a.failing_point;
   o.loss = a.loss == "huber"    ? RobustLoss::huber
            : a.loss == "cauchy" ? RobustLoss::cauchy
-                              : RobustLoss::none;
+                                : RobustLoss::none;
   o.loss_scale = a.loss_scale;
   o.noise_model = a.noise_model == "relative" ? NoiseModel::relative : NoiseModel::additive;
   if (!a.noise_scale.empty()) {
@@ -130,9 +130,9 @@ int run_fit(const FitArgs& a) {
         loop.final_spec.uses_exact() ? "exact integrals over the profile" : "fractional law",
         app::format_table(info, loop.final_fit).c_str());
   if (!plots_dir.empty()) {
-    const bool a = app::write_plots(plots_dir, data, loop.final_fit, radius);
-    const bool b = app::write_loop_plots(plots_dir, data, loop, radius);
-    if (a && b)
+    const bool fit_plots = app::write_plots(plots_dir, data, loop.final_fit, radius);
+    const bool loop_plots = app::write_loop_plots(plots_dir, data, loop, radius);
+    if (fit_plots && loop_plots)
       std::printf("pictures: %s/fit_*.png (final model), %s/loop_step_*.png\n", plots_dir.c_str(),
                   plots_dir.c_str());
   }

@@ -10,8 +10,8 @@
 #include <numeric>
 #include <optional>
 #include <stdexcept>
-#include <thread>
 #include <string>
+#include <thread>
 
 #include "contensou/friction/error.hpp"
 #include "contensou/identification/effect_model.hpp"
@@ -258,6 +258,7 @@ NoiseSettings noise_settings_for(const IdentificationOptions& o) {
   n.loss_scale = o.loss_scale;
   n.iterations = o.noise_iterations;
   n.failing_point = o.failing_point;
+  n.stop = o.stop;
   return n;
 }
 
@@ -477,6 +478,18 @@ std::string failing_row(ceres::Problem& problem, const FitSetup& s) {
   return "";
 }
 
+// Ends a solve (SOLVER_ABORT) after the iteration in which the caller's stop request fired.
+class StopCallback : public ceres::IterationCallback {
+ public:
+  explicit StopCallback(const StopRequest& stop) : stop_(stop) {}
+  ceres::CallbackReturnType operator()(const ceres::IterationSummary&) override {
+    return stop_ && stop_() ? ceres::SOLVER_ABORT : ceres::SOLVER_CONTINUE;
+  }
+
+ private:
+  const StopRequest& stop_;
+};
+
 // Build the problem, solve, estimate the noise scales; repeated (warm-started) until the
 // scales settle, once when they are given and additive.
 Solution solve(const FitSetup& s) {
@@ -517,7 +530,11 @@ Solution solve(const FitSetup& s) {
     opt.parameter_tolerance = 1e-10;
     opt.logging_type = ceres::SILENT;
     opt.num_threads = evaluation_threads();
+    StopCallback stop_callback(s.noise.stop);
+    if (s.noise.stop) opt.callbacks.push_back(&stop_callback);
+    throw_if_stopped(s.noise.stop);
     ceres::Solve(opt, sol.problem.get(), &sol.summary);
+    throw_if_stopped(s.noise.stop);  // the solve was aborted (or is over): not a result
     // Never go on (covariance, report) from a failed solve.
     if (!sol.summary.IsSolutionUsable())
       throw std::runtime_error("fit of the " + fit_name(s.spec) +
@@ -539,8 +556,7 @@ Eigen::MatrixXd jacobian_at_optimum(ceres::Problem& problem, const ModelSpec& sp
   ceres::CRSMatrix crs;
   std::vector<double> residuals;
   double cost = 0.0;
-  const bool evaluated =
-      problem.Evaluate(evaluate_options(), &cost, &residuals, nullptr, &crs);
+  const bool evaluated = problem.Evaluate(evaluate_options(), &cost, &residuals, nullptr, &crs);
   Eigen::MatrixXd J = Eigen::MatrixXd::Zero(crs.num_rows, crs.num_cols);
   for (int r = 0; r < crs.num_rows; ++r)
     for (int k = crs.rows[r]; k < crs.rows[r + 1]; ++k) J(r, crs.cols[k]) = crs.values[k];
