@@ -4,6 +4,7 @@
 #include <glog/logging.h>
 
 #include <CLI/CLI.hpp>
+#include <chrono>
 #include <cstdio>
 #include <filesystem>
 #include <optional>
@@ -50,7 +51,7 @@ struct FitArgs {
   std::optional<double> load, pressure;
   std::vector<std::string> fixes;
   std::vector<double> noise_scale;
-  bool no_loop = false, speed_inside = true, profile_clip = false;
+  bool no_loop = false, speed_inside = true, profile_clip = false, progress = false;
   int failing_point = -1, smoothing = 0;
 };
 
@@ -93,27 +94,19 @@ IdentificationOptions identification_options(const FitArgs& a, ProfileChoice& pr
   return o;
 }
 
-// Progress for people: one line, rewritten in place, on a terminal; in scripts and pipes
-// stderr keeps errors only. Cleared when destroyed.
-class LoopProgress {
- public:
-  explicit LoopProgress(ClosedLoopOptions& lo) {
-    if (isatty(fileno(stderr)))
-      lo.progress = [this](const std::string& line) {
-        std::fprintf(stderr, "\r\033[K[closed loop] %s", line.c_str());
-        std::fflush(stderr);
-        shown_ = true;
-      };
-  }
-  ~LoopProgress() {
-    if (shown_) std::fprintf(stderr, "\r\033[K");
-  }
-  LoopProgress(const LoopProgress&) = delete;
-  LoopProgress& operator=(const LoopProgress&) = delete;
-
- private:
-  bool shown_ = false;
-};
+// Progress for people (on a terminal, or with --progress): a line per stage of the loop on
+// stderr, each with the time since the loop began; in scripts and pipes stderr keeps errors
+// only.
+void show_progress(ClosedLoopOptions& lo, bool asked) {
+  if (!asked && !isatty(fileno(stderr))) return;
+  const auto start = std::chrono::steady_clock::now();
+  lo.progress = [start](const std::string& line) {
+    const double s =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    std::fprintf(stderr, "[closed loop %7.1f s] %s\n", s, line.c_str());
+    std::fflush(stderr);
+  };
+}
 
 int print_and_write(const FitArgs& a, const Identification& run, const app::RunInfo& info) {
   const MeasuredData& data = run.fitted;
@@ -156,15 +149,13 @@ int run_fit(const FitArgs& a) {
     }
   IdentifyOptions io;
   io.fit = o;
-  std::optional<LoopProgress> progress;
   if (!a.no_loop) {
     io.loop = ClosedLoopOptions{};
     io.loop->alpha = a.alpha;
     io.loop->speed_inside_integrals = a.speed_inside;
-    progress.emplace(*io.loop);
+    show_progress(*io.loop, a.progress);
   }
   const Identification run = identify(data, io);
-  progress.reset();
   app::RunInfo info = describe_run(a.data_path, data, a.radius, o.normal_load_n, profile);
   info.normal_load_source = load_source;
   info.outliers = run.outliers;
@@ -298,6 +289,9 @@ int main(int argc, char** argv) {
       ->check(CLI::Range(1, 64));
   app.add_flag("--profile-clip", a.profile_clip,
                "clip a --profile CSV that dips below zero at zero (otherwise refused)");
+  app.add_flag("--progress", a.progress,
+               "closed loop: a line per stage on stderr with the time so far (the default on "
+               "a terminal)");
   app.add_flag("--verbose", verbose, "show the solver's own log (Ceres, glog) on stderr");
   // Testing only (hidden): the residual of this data point fails to evaluate.
   app.add_option("--test-failing-point", a.failing_point)->group("");
