@@ -55,9 +55,8 @@ struct FitArgs {
   int failing_point = -1, smoothing = 0;
 };
 
-// The library's options from the command line; the profile chosen and where N came from.
-IdentificationOptions identification_options(const FitArgs& a, ProfileChoice& profile,
-                                             std::string& load_source) {
+// The library's options from the command line, and the profile chosen.
+IdentificationOptions identification_options(const FitArgs& a, ProfileChoice& profile) {
   IdentificationOptions o;
   o.radius_m = a.radius;
   require_positive("--radius", a.radius);
@@ -76,7 +75,6 @@ IdentificationOptions identification_options(const FitArgs& a, ProfileChoice& pr
       patch.reference_pressure_pa = *ps;
       patch.profile = profile.profile;
       o.normal_load_n = normal_load(patch);
-      load_source = "from the profile's pressure";
     }
   }
   for (const std::string& f : a.fixes) o.fixed.insert(parse_fix(f));
@@ -140,7 +138,7 @@ int print_and_write(const FitArgs& a, const Identification& run, const app::RunI
 int run_fit(const FitArgs& a) {
   ProfileChoice profile;
   std::string load_source;
-  IdentificationOptions o = identification_options(a, profile, load_source);
+  IdentificationOptions o = identification_options(a, profile);
   const MeasuredData data = read_measured_csv(a.data_path, parse_column_renames(a.columns));
   if (!o.normal_load_n)
     if (const std::optional<LoadFromData> l = normal_load_from_data(data)) {
