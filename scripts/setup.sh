@@ -10,7 +10,7 @@ cd "$(dirname "$0")/.."
 packages=(build-essential cmake ninja-build pkg-config
   libeigen3-dev libceres-dev libsundials-dev libgtest-dev libgmock-dev libbenchmark-dev
   libcubature-dev libcli11-dev nlohmann-json3-dev gnuplot-nox clang-format
-  clang-14 libclang-rt-14-dev python3-venv python3-dev)
+  clang-14 libclang-rt-14-dev libomp-14-dev python3-venv python3-dev)
 missing=()
 for p in "${packages[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")

@@ -10,7 +10,11 @@ skip=()
 if [ "${1:-}" = "--sanitize" ]; then
   dir=build-asan
   # -O1 -g1 (line tables for the reports): half the compile time of -O2 -g, same findings.
-  cmake -S . -B "$dir" -G Ninja -DCMAKE_BUILD_TYPE=Debug -DCMAKE_CXX_FLAGS_DEBUG="-O1 -g1" \
+  # clang 14 when present (scripts/setup.sh installs it for the fuzzers): under ASan+UBSan it
+  # compiles this tree in about half the time GCC 12 takes, and its warnings are a second opinion.
+  compilers=()
+  if command -v clang++-14 >/dev/null; then compilers=(-DCMAKE_C_COMPILER=clang-14 -DCMAKE_CXX_COMPILER=clang++-14); fi
+  cmake -S . -B "$dir" -G Ninja "${compilers[@]}" -DCMAKE_BUILD_TYPE=Debug -DCMAKE_CXX_FLAGS_DEBUG="-O1 -g1" \
     -DCONTENSOU_SANITIZE=ON -DCONTENSOU_WERROR=ON -DCONTENSOU_BUILD_BENCHMARKS=OFF \
     -DCONTENSOU_BUILD_EXAMPLES=OFF
   cmake --build "$dir" --parallel

@@ -13,6 +13,7 @@
 #include "contensou/contensou.hpp"
 #include "contensou/identification/fit.hpp"
 #include "contensou/identification/identify.hpp"
+#include "contensou/identification/identify_request.hpp"
 #include "contensou/identification/report.hpp"
 #include "contensou/identification/report_text.hpp"
 #include "contensou/identification/simulation.hpp"
@@ -43,62 +44,21 @@ std::pair<std::string, double> parse_fix(const std::string& s) {
   return {s.substr(0, eq), v};
 }
 
-// What the fit's command line gives (main binds the options to these fields).
+// What the fit's command line gives besides the request (main binds the options to these).
 struct FitArgs {
-  std::string data_path, json_path, plots_dir, profile_spec, columns;
-  std::string loss = "none", noise_model = "additive";
-  double radius = 0.0, loss_scale = 2.0, alpha = 1e-3;
-  std::optional<double> load, pressure;
+  IdentifyRequest request;
+  std::string data_path, json_path, plots_dir, columns;
   std::vector<std::string> fixes;
-  std::vector<double> noise_scale;
-  bool no_loop = false, speed_inside = true, profile_clip = false, progress = false;
-  int failing_point = -1, smoothing = 0;
+  bool progress = false;
 };
-
-// The library's options from the command line, and the profile chosen.
-IdentificationOptions identification_options(const FitArgs& a, ProfileChoice& profile) {
-  IdentificationOptions o;
-  o.radius_m = a.radius;
-  require_positive("--radius", a.radius);
-  if (a.smoothing > 0 && (a.profile_spec.empty() || !std::filesystem::exists(a.profile_spec)))
-    throw std::runtime_error("--profile-smoothing needs --profile with a CSV file");
-  if (a.load) require_positive("--normal-load", *a.load);
-  o.normal_load_n = a.load;
-  if (!a.profile_spec.empty()) {
-    profile = choose_profile(a.profile_spec, a.smoothing, a.profile_clip);
-    o.profile = profile.profile;
-    const std::optional<double> ps =
-        profile.reference_pressure ? profile.reference_pressure : a.pressure;
-    if (ps) {
-      ContactPatch patch;
-      patch.radius_m = a.radius;
-      patch.reference_pressure_pa = *ps;
-      patch.profile = profile.profile;
-      o.normal_load_n = normal_load(patch);
-    }
-  }
-  for (const std::string& f : a.fixes) o.fixed.insert(parse_fix(f));
-  o.failing_point = a.failing_point;
-  o.loss = a.loss == "huber"    ? RobustLoss::huber
-           : a.loss == "cauchy" ? RobustLoss::cauchy
-                                : RobustLoss::none;
-  o.loss_scale = a.loss_scale;
-  o.noise_model = a.noise_model == "relative" ? NoiseModel::relative : NoiseModel::additive;
-  if (!a.noise_scale.empty()) {
-    if (a.noise_scale.size() != 3)
-      throw std::runtime_error("--noise-scale needs three values: Fx,Fy,Mz");
-    o.noise_scale = std::array<double, 3>{a.noise_scale[0], a.noise_scale[1], a.noise_scale[2]};
-  }
-  return o;
-}
 
 // Progress for people (on a terminal, or with --progress): a line per stage of the loop on
 // stderr, each with the time since the loop began; in scripts and pipes stderr keeps errors
 // only.
-void show_progress(ClosedLoopOptions& lo, bool asked) {
+void show_progress(IdentifyRequest& r, bool asked) {
   if (!asked && !isatty(fileno(stderr))) return;
   const auto start = std::chrono::steady_clock::now();
-  lo.progress = [start](const std::string& line) {
+  r.progress = [start](const std::string& line) {
     const double s =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     std::fprintf(stderr, "[closed loop %7.1f s] %s\n", s, line.c_str());
@@ -106,12 +66,12 @@ void show_progress(ClosedLoopOptions& lo, bool asked) {
   };
 }
 
-int print_and_write(const FitArgs& a, const Identification& run, const app::RunInfo& info) {
+int print_and_write(const FitArgs& a, const Identification& run, const ReportInput& info) {
   const MeasuredData& data = run.fitted;
   if (!run.loop) {
     std::printf("%s %s: fractional law (seed eqs. 5-7)\n%s", kName, kVersion,
                 fit_report_text(info, run.fit).c_str());
-    if (!a.plots_dir.empty() && app::write_plots(a.plots_dir, data, run.fit, a.radius))
+    if (!a.plots_dir.empty() && app::write_plots(a.plots_dir, data, run.fit, a.request.radius_m))
       std::printf("pictures: %s/fit_*.png\n", a.plots_dir.c_str());
     if (!a.json_path.empty()) {
       write_file_atomically(a.json_path, fit_report_json(info, run.fit) + "\n");
@@ -122,8 +82,8 @@ int print_and_write(const FitArgs& a, const Identification& run, const app::RunI
   const ClosedLoopReport& loop = *run.loop;
   std::printf("%s %s\n%s", kName, kVersion, loop_report_text(info, loop).c_str());
   if (!a.plots_dir.empty()) {
-    const bool p = app::write_plots(a.plots_dir, data, loop.final_fit, a.radius);
-    const bool q = app::write_loop_plots(a.plots_dir, data, loop, a.radius);
+    const bool p = app::write_plots(a.plots_dir, data, loop.final_fit, a.request.radius_m);
+    const bool q = app::write_loop_plots(a.plots_dir, data, loop, a.request.radius_m);
     if (p && q)
       std::printf("pictures: %s/fit_*.png (final model), %s/loop_step_*.png\n", a.plots_dir.c_str(),
                   a.plots_dir.c_str());
@@ -135,29 +95,12 @@ int print_and_write(const FitArgs& a, const Identification& run, const app::RunI
   return 0;
 }
 
-int run_fit(const FitArgs& a) {
-  ProfileChoice profile;
-  std::string load_source;
-  IdentificationOptions o = identification_options(a, profile);
-  const MeasuredData data = read_measured_csv(a.data_path, parse_column_renames(a.columns));
-  if (!o.normal_load_n)
-    if (const std::optional<LoadFromData> l = normal_load_from_data(data)) {
-      o.normal_load_n = l->mean_n;  // f = F0 / N is then reported
-      load_source = l->description();
-    }
-  IdentifyOptions io;
-  io.fit = o;
-  if (!a.no_loop) {
-    io.loop = ClosedLoopOptions{};
-    io.loop->alpha = a.alpha;
-    io.loop->speed_inside_integrals = a.speed_inside;
-    show_progress(*io.loop, a.progress);
-  }
-  const Identification run = identify(data, io);
-  app::RunInfo info = describe_run(a.data_path, data, a.radius, o.normal_load_n, profile);
-  info.normal_load_source = load_source;
-  info.outliers = run.outliers;
-  return print_and_write(a, run, info);
+int run_fit(FitArgs a) {
+  for (const std::string& f : a.fixes) a.request.fix.insert(parse_fix(f));
+  show_progress(a.request, a.progress);
+  MeasuredData data = read_measured_csv(a.data_path, parse_column_renames(a.columns));
+  const IdentifyRun run = identify(data, a.request);
+  return print_and_write(a, run.result, run.input);
 }
 
 struct SimulateArgs {
@@ -236,65 +179,55 @@ int run_simulate(SimulateArgs a) {
 
 }  // namespace
 
-int main(int argc, char** argv) {
-  CLI::App app{
-      "Fits the coupled dry-friction law (Kireenkov & Zhavoronok 2020, eqs. 5-7) to measured\n"
-      "diagrams Fx, Fy, Mz against the sliding velocity and spin (CSV, theory.md section 6),\n"
-      "and reports the parameters with 95 % confidence intervals."};
-  app.set_version_flag("--version", std::string(kName) + " " + kVersion);
-  FitArgs a;
-  bool effective_speed = false, verbose = false;
+// The fit's options: the request's keys (identify_request.hpp) with their help from its table,
+// and the app's own (files, pictures, progress).
+struct FitOptionHandles {
+  CLI::Option* radius = nullptr;
+  bool effective_speed = false, no_loop = false, no_outliers = false, verbose = false;
+};
+
+void add_fit_options(CLI::App& app, FitArgs& a, FitOptionHandles& h) {
+  IdentifyRequest& r = a.request;
+  const auto opt = [](const char* key) { return key_name(key, KeyStyle::command_line); };
   app.add_option("data", a.data_path,
                  "measured diagrams (CSV: vx_mps, vy_mps, omega_radps, Fx_N, ...)");
-  auto* radius_opt = app.add_option("--radius", a.radius, "patch radius R [m]");
-  auto* load_opt =
-      app.add_option("--normal-load", a.load, "normal load N [N] (f = F0/N is reported)");
-  app.add_option("--profile", a.profile_spec,
-                 "pressure profile: CSV rho,pressure_Pa or uniform|hertz|seed-tire (fixes the "
-                 "shape constants; with a CSV or --pressure it also gives N)")
-      ->excludes(load_opt);
-  app.add_option("--pressure", a.pressure, "reference pressure p* [Pa] for a built-in profile");
+  h.radius = app.add_option(opt("radius"), r.radius_m, key_help("radius"));
+  auto* load = app.add_option(opt("normal_load"), r.normal_load_n, key_help("normal_load"));
+  app.add_option(opt("profile"), r.profile, key_help("profile"))->excludes(load);
+  app.add_option(opt("pressure"), r.pressure_pa, key_help("pressure"));
   app.add_option("--json", a.json_path, "write the report as JSON (whole or not at all)");
   app.add_option("--plots", a.plots_dir, "write pictures (PNG via gnuplot) and their data here");
   app.add_option("--columns", a.columns,
                  "read columns under other names: QUANTITY=COLUMN,... with QUANTITY one of vx, "
                  "vy, omega, Fx, Fy, Mz, Fz, t; a unit in the name ('Speed [km/h]') or a units "
                  "row is converted");
-  app.add_option("--fix", a.fixes, "hold a parameter fixed: NAME=VALUE (F0_N, a, M0_Nm, m, kx)");
-  app.add_option("--loss", a.loss, "robust loss")
-      ->check(CLI::IsMember({"none", "huber", "cauchy"}));
-  app.add_option("--loss-scale", a.loss_scale, "robust loss threshold in noise scales")
-      ->check(CLI::PositiveNumber);
-  app.add_option("--noise-model", a.noise_model,
-                 "noise: additive (constant per channel) or relative")
-      ->check(CLI::IsMember({"additive", "relative"}));
-  app.add_option("--noise-scale", a.noise_scale, "given noise scales Fx,Fy,Mz (else estimated)")
-      ->delimiter(',');
-  app.add_flag("--no-loop", a.no_loop, "fit the fractional law only; do not close the loop");
-  app.add_option("--alpha", a.alpha, "closed loop: family-wise level of the LR test per step")
-      ->check(CLI::Range(1e-12, 0.5));
-  auto* inside = app.add_flag("--speed-inside-integrals", a.speed_inside,
-                              "closed loop: slip-speed friction at the local slip speed inside "
-                              "the exact integrals (the default)");
-  app.add_flag("--effective-speed", effective_speed,
+  app.add_option(opt("fix"), a.fixes, key_help("fix"));
+  app.add_option(opt("loss"), r.loss, key_help("loss"));
+  app.add_option(opt("loss_scale"), r.loss_scale, key_help("loss_scale"));
+  app.add_option(opt("noise_model"), r.noise_model, key_help("noise_model"));
+  app.add_option(opt("noise_scale"), r.noise_scale, key_help("noise_scale"))->delimiter(',');
+  app.add_flag("--no-loop", h.no_loop, "fit the fractional law only; do not close the loop");
+  app.add_option(opt("alpha"), r.alpha, key_help("alpha"));
+  auto* inside = app.add_flag(opt("speed_inside_integrals"), r.speed_inside_integrals,
+                              key_help("speed_inside_integrals"));
+  app.add_flag("--effective-speed", h.effective_speed,
                "closed loop: slip-speed friction at the effective speed (v^2 + (2u/3)^2)^(1/2) "
                "outside the exact integrals instead")
       ->excludes(inside);
-
-  app.add_option("--profile-smoothing", a.smoothing,
-                 "fit the --profile CSV by a Chebyshev series in rho^2 of N terms (noisy film "
-                 "data) instead of interpolating it; the fit's residual is reported")
-      ->check(CLI::Range(1, 64));
-  app.add_flag("--profile-clip", a.profile_clip,
-               "clip a --profile CSV that dips below zero at zero (otherwise refused)");
+  app.add_flag("--no-outliers", h.no_outliers,
+               "keep every row in the fit (no search for gross errors)");
+  app.add_option(opt("profile_smoothing"), r.profile_smoothing, key_help("profile_smoothing"));
+  app.add_flag(opt("profile_clip"), r.profile_clip, key_help("profile_clip"));
   app.add_flag("--progress", a.progress,
                "closed loop: a line per stage on stderr with the time so far (the default on "
                "a terminal)");
-  app.add_flag("--verbose", verbose, "show the solver's own log (Ceres, glog) on stderr");
+  app.add_flag("--verbose", h.verbose, "show the solver's own log (Ceres, glog) on stderr");
   // Testing only (hidden): the residual of this data point fails to evaluate.
-  app.add_option("--test-failing-point", a.failing_point)->group("");
+  app.add_option("--test-failing-point", r.failing_point)->group("");
+}
 
-  SimulateArgs sim;
+// The options of `contensou-identify simulate`.
+CLI::App* add_simulate_options(CLI::App& app, SimulateArgs& sim) {
   auto* simulate =
       app.add_subcommand("simulate", "write synthetic diagrams in the same CSV format");
   simulate->add_option("--out", sim.out, "output CSV")->required();
@@ -332,26 +265,41 @@ int main(int argc, char** argv) {
   simulate->add_option("--periodic", sim.spec.rig.periodic_amplitude_n,
                        "a periodic disturbance of Fy in time [N] (outside the catalogue)");
 
+  return simulate;
+}
+
+int main(int argc, char** argv) {
+  CLI::App app{
+      "Fits the coupled dry-friction law (Kireenkov & Zhavoronok 2020, eqs. 5-7) to measured\n"
+      "diagrams Fx, Fy, Mz against the sliding velocity and spin (CSV, theory.md section 6),\n"
+      "and reports the parameters with 95 % confidence intervals."};
+  app.set_version_flag("--version", std::string(kName) + " " + kVersion);
+  FitArgs a;
+  a.request.style = KeyStyle::command_line;
+  FitOptionHandles h;
+  add_fit_options(app, a, h);
+
+  SimulateArgs sim;
+  CLI::App* simulate = add_simulate_options(app, sim);
+
   app::prepare_output();
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
     return app.exit(e);
   }
-  if (effective_speed) a.speed_inside = false;
+  if (h.effective_speed) a.request.speed_inside_integrals = false;
+  if (h.no_loop) a.request.loop = false;
+  if (h.no_outliers) a.request.outliers = false;
   // Ceres logs through glog: quiet unless asked for.
   FLAGS_logtostderr = true;
-  FLAGS_minloglevel = verbose ? google::GLOG_INFO : google::GLOG_FATAL;
+  FLAGS_minloglevel = h.verbose ? google::GLOG_INFO : google::GLOG_FATAL;
   google::InitGoogleLogging(argv[0]);
   try {
     if (simulate->parsed()) return app::finish_output(run_simulate(sim));
     if (a.data_path.empty()) throw std::runtime_error("no data file given (see --help)");
-    if (radius_opt->count() == 0)
+    if (h.radius->count() == 0)
       throw std::runtime_error("--radius is required (patch radius in m)");
-    if (a.pressure && a.profile_spec.empty())
-      throw std::runtime_error("--pressure " + format_value(*a.pressure) +
-                               " is the reference pressure of a built-in --profile (uniform, "
-                               "hertz, seed-tire); give one, or the load as --normal-load");
     std::optional<app::OutputFolderLock> lock;
     if (!a.plots_dir.empty()) lock.emplace(a.plots_dir);  // before the fit: a second run stops
     const int status = run_fit(a);

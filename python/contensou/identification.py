@@ -9,7 +9,6 @@ report (``contensou-identify --json``) byte for byte.
 
 from __future__ import annotations
 
-import difflib
 import json
 import os
 from dataclasses import dataclass, field
@@ -84,6 +83,8 @@ class IdentificationResult:
     (columns Fx, Fy, Mz; NaN where the channel was not measured)."""
 
     def __init__(self, raw: dict[str, Any]):
+        # kinematics, measured and the predictions are (n, 3) over the rows fitted (``rows``);
+        # a value left out as a gross error (``outliers``) is NaN in ``measured``.
         self._json: str = raw["json"]
         self.report: dict[str, Any] = json.loads(self._json)
         final = self.report["final"]
@@ -97,6 +98,10 @@ class IdentificationResult:
         cov = raw["covariance"]
         self.covariance_names: list[str] = list(cov["names"])
         self.covariance: np.ndarray = np.asarray(cov["matrix"])
+        self.text: str = raw["text"]  # the report as contensou-identify prints it
+        # The rows fitted (their index in the data given) and the gross errors left out.
+        self.rows: np.ndarray = np.asarray(raw["rows"]).astype(np.int64)
+        self.outliers: list[dict[str, Any]] = list(self.report["input"].get("outliers", []))
         self.kinematics: np.ndarray = np.asarray(raw["kinematics"])
         self.measured: np.ndarray = np.asarray(raw["measured"])
         self.prediction: np.ndarray = np.asarray(raw["final_prediction"])
@@ -170,11 +175,10 @@ class IdentificationResult:
         return f"<IdentificationResult {self.model}: {body}; effects {self.accepted_effects}>"
 
 
-def _column(data: Any, name: str) -> Optional[np.ndarray]:
-    try:
-        col = data[name]
-    except (KeyError, IndexError, ValueError):
-        return None
+def _cells(data: Any, name: Any) -> Union[np.ndarray, list[str]]:
+    """A column as float64 numbers (NaN = empty), or as text when it holds other things: the
+    reader refuses text only in a column it reads, naming the row."""
+    col = data[name]
     dtype = getattr(col, "dtype", None)
     if (np.issubdtype(dtype, np.complexfloating) if isinstance(dtype, np.dtype)
             else np.iscomplexobj(np.asarray(col))):
@@ -185,14 +189,17 @@ def _column(data: Any, name: str) -> Optional[np.ndarray]:
             arr = col.to_numpy(dtype=np.float64, na_value=np.nan)
         else:
             arr = np.asarray(col, dtype=np.float64)
-    except (TypeError, ValueError) as e:
-        raise ValueError(f"column '{name}': not numbers ({e})") from None
+    except (TypeError, ValueError):
+        values = col.tolist() if hasattr(col, "tolist") else list(col)
+        return ["" if v is None or (isinstance(v, float) and np.isnan(v)) else str(v)
+                for v in values]
     if arr.ndim != 1:
         raise ValueError(f"column '{name}': expected one dimension, got shape {arr.shape}")
     return np.ascontiguousarray(arr)
 
 
-def _columns_of(data: Any) -> dict[str, Optional[np.ndarray]]:
+def _table_of(data: Any) -> tuple[list[str], list[Any]]:
+    """Column names and columns of a DataFrame, mapping, structured or plain 2-D array."""
     if isinstance(data, np.ndarray) and data.dtype.names is None:
         if np.iscomplexobj(data):
             raise ValueError("complex values; give real numbers (the imaginary part would be lost)")
@@ -202,30 +209,17 @@ def _columns_of(data: Any) -> dict[str, Optional[np.ndarray]]:
                 f"a plain array must be (n, k) with 4 <= k <= 8 columns in the order "
                 f"{', '.join(COLUMNS)}; got shape {a.shape}"
             )
-        return {
-            name: np.ascontiguousarray(a[:, k]) if k < a.shape[1] else None
-            for k, name in enumerate(COLUMNS)
-        }
-    names = data.dtype.names if isinstance(data, np.ndarray) else list(getattr(data, "keys")())
-    missing = [c for c in COLUMNS[:3] if c not in names]
-    if missing:
-        raise ValueError(
-            f"missing required column(s) {', '.join(missing)} (columns: {', '.join(map(str, names))};"
-            f" expected vx_mps, vy_mps, omega_radps and any of Fx_N, Fy_N, Mz_Nm, Fz_N, t_s)"
-        )
-    # A near miss of a known column (Fx_n, fx_N, Mz_Nmm) is refused, not dropped: its data would
-    # be silently left out. Other columns (run_id, temperature) are ignored as in the CSV reader.
-    absent = [c for c in COLUMNS if c not in names]
-    for n in names:
-        if n in COLUMNS:
-            continue
-        close = difflib.get_close_matches(str(n), absent, n=1, cutoff=0.75)
-        close = close or [c for c in absent if c.lower() == str(n).lower()]
-        if close:
-            raise ValueError(
-                f"column '{n}' is not a known column; did you mean '{close[0]}'? (rename it, "
-                f"converting its values if its unit differs)")
-    return {c: (_column(data, c) if c in names else None) for c in COLUMNS}
+        return list(COLUMNS[: a.shape[1]]), [np.ascontiguousarray(a[:, k]) for k in range(a.shape[1])]
+    names = list(data.dtype.names) if isinstance(data, np.ndarray) else list(data.keys())
+    return [str(n) for n in names], [_cells(data, n) for n in names]
+
+
+def _renames(columns: Optional[Union[str, Mapping[str, str]]]) -> str:
+    if columns is None:
+        return ""
+    if isinstance(columns, str):
+        return columns
+    return ",".join(f"{q}={c}" for q, c in columns.items())
 
 
 def identify(
@@ -245,48 +239,54 @@ def identify(
     speed_inside_integrals: bool = True,
     profile_smoothing: int = 0,
     profile_clip: bool = False,
+    outliers: bool = True,
+    columns: Optional[Union[str, Mapping[str, str]]] = None,
     source: Optional[str] = None,
 ) -> IdentificationResult:
     """Fits the fractional law to measured diagrams and, with ``loop=True`` (the default),
-    closes the loop as ``contensou-identify`` does (same options: ``profile`` is uniform,
-    hertz, seed-tire or a CSV path, ``pressure`` the reference pressure of a built-in profile,
-    ``fix`` holds parameters, ...). ``source`` names the data in the report (default: the
-    path, or "<DataFrame>" / "<arrays>")."""
-    kwargs: dict[str, Any] = dict(
-        radius=float(radius),
-        normal_load=None if normal_load is None else float(normal_load),
-        profile=None if profile is None else os.fspath(profile),
-        pressure=None if pressure is None else float(pressure),
-        fixed={str(k): float(v) for k, v in (fix or {}).items()},
-        loss=loss,
-        loss_scale=float(loss_scale),
-        noise_model=noise_model,
-        noise_scale=None if noise_scale is None else [float(s) for s in noise_scale],
-        loop=bool(loop),
-        alpha=float(alpha),
-        speed_inside_integrals=bool(speed_inside_integrals),
-        profile_smoothing=int(profile_smoothing),
-        profile_clip=bool(profile_clip),
-    )
-    none: dict[str, Any] = dict(vx=None, vy=None, omega=None, fx=None, fy=None, mz=None, fz=None, t=None)
+    closes the loop, exactly as ``contensou-identify`` does: the same keys (``normal_load`` is
+    ``--normal-load`` there), the same reading of columns and units, the same search for gross
+    errors, the same report (``to_json()``, ``text``).
+
+    ``data`` is a CSV path, a DataFrame, a mapping of column name to array, or a structured or
+    (n, k) array in the order vx_mps, vy_mps, omega_radps, Fx_N, Fy_N, Mz_Nm, Fz_N, t_s.
+    Columns may carry units in their names ('vx [km/h]', omega_rpm, 'Fx [kN]'): they are
+    converted to SI. ``columns`` maps other names: ``{"vx": "Speed [km/h]"}`` or
+    ``"vx=Speed [km/h],omega=Rate"``. ``source`` names the data in the report (default: the
+    path, or "<DataFrame>" / "<arrays>"). Errors in in-memory data name the row (1-based) and
+    its index.
+
+    The keys:
+    """
+    request = _core._IdentifyRequest()
+    request.radius = float(radius)
+    request.normal_load = None if normal_load is None else float(normal_load)
+    request.profile = "" if profile is None else os.fspath(profile)
+    request.pressure = None if pressure is None else float(pressure)
+    request.profile_smoothing = int(profile_smoothing)
+    request.profile_clip = bool(profile_clip)
+    request.fix = {str(k): float(v) for k, v in (fix or {}).items()}
+    request.loss = str(loss)
+    request.loss_scale = float(loss_scale)
+    request.noise_model = str(noise_model)
+    request.noise_scale = [] if noise_scale is None else [float(x) for x in noise_scale]
+    request.loop = bool(loop)
+    request.alpha = float(alpha)
+    request.speed_inside_integrals = bool(speed_inside_integrals)
+    request.outliers = bool(outliers)
+    renames = _renames(columns)
     if isinstance(data, (str, os.PathLike)):
         path = os.fspath(data)
-        raw = _core._identify(path=path, source=source or path, **none, **kwargs)
+        raw = _core._identify(path, source or path, [], [], renames, request)
     else:
-        cols = _columns_of(data)
         if source is None:
             source = "<DataFrame>" if hasattr(data, "iloc") else "<arrays>"
-        raw = _core._identify(
-            path=None,
-            source=source,
-            vx=cols["vx_mps"],
-            vy=cols["vy_mps"],
-            omega=cols["omega_radps"],
-            fx=cols["Fx_N"],
-            fy=cols["Fy_N"],
-            mz=cols["Mz_Nm"],
-            fz=cols["Fz_N"],
-            t=cols["t_s"],
-            **kwargs,
-        )
+        names, cols = _table_of(data)
+        raw = _core._identify(None, source, names, cols, renames, request)
     return IdentificationResult(raw)
+
+
+# The keys' meaning from the library's table (identify_request.hpp), shared with the app's --help.
+identify.__doc__ = (identify.__doc__ or "") + "".join(
+    f"\n    - ``{key}``: {text}" for key, text in _core._identify_keys
+) + "\n"

@@ -3,11 +3,13 @@
 #include <glog/logging.h>
 #include <nanobind/stl/map.h>
 #include <nanobind/stl/optional.h>
+#include <nanobind/stl/pair.h>
 #include <nanobind/stl/string.h>
 #include <nanobind/stl/vector.h>
 
 #include <array>
 #include <cmath>
+#include <cstdio>
 #include <filesystem>
 #include <map>
 #include <optional>
@@ -21,65 +23,45 @@ namespace {
 using namespace nb::literals;
 using Column = nb::ndarray<const double, nb::ndim<1>, nb::c_contig, nb::device::cpu>;
 
-// Measured data from columns: kinematics (finite), channels (NaN = not measured; a missing
-// column = None), optional Fz_N (positive) and t_s. Rows are numbered from 1 in messages.
-MeasuredData data_from_columns(const std::string& source, Column vx, Column vy, Column omega,
-                               const std::array<std::optional<Column>, kChannels>& channels,
-                               std::optional<Column> fz, std::optional<Column> ts) {
-  const std::size_t n = vx.shape(0);
-  auto check_length = [&](const Column& c, const char* name) {
-    if (c.shape(0) != n)
-      throw std::invalid_argument(std::string("column '") + name + "' has " +
-                                  std::to_string(c.shape(0)) + " rows, vx_mps has " +
-                                  std::to_string(n));
-  };
-  check_length(vy, "vy_mps");
-  check_length(omega, "omega_radps");
-  bool any = false;
-  for (int c = 0; c < kChannels; ++c)
-    if (channels[c]) {
-      check_length(*channels[c], kChannelColumns[c]);
-      any = true;
+// A table's cells from a column given as numbers (NaN = empty) or as text.
+std::vector<std::string> cells_of(const nb::handle& column) {
+  Column numbers;
+  if (nb::try_cast<Column>(column, numbers)) {
+    std::vector<std::string> cells(numbers.shape(0));
+    char buf[32];
+    for (std::size_t i = 0; i < cells.size(); ++i) {
+      if (std::isnan(numbers(i))) continue;  // not measured
+      std::snprintf(buf, sizeof buf, "%.17g", numbers(i));
+      cells[i] = buf;
     }
-  if (!any)
-    throw std::invalid_argument(source + ": no measured channel (need Fx_N, Fy_N or Mz_Nm)");
-  if (fz) check_length(*fz, "Fz_N");
-  if (ts) check_length(*ts, "t_s");
-  if (n == 0) throw std::invalid_argument(source + ": no data rows");
-  auto bad = [&](std::size_t i, const char* column, double v, const char* rule) {
-    throw std::invalid_argument(source + ": row " + std::to_string(i + 1) + ": column '" + column +
-                                "': " + format_value(v) + " " + rule);
-  };
-  MeasuredData d;
-  d.source = source;
-  d.points.resize(n);
-  for (std::size_t i = 0; i < n; ++i) {
-    MeasuredPoint& p = d.points[i];
-    p.line = static_cast<int>(i + 1);
-    p.kinematics = {vx(i), vy(i), omega(i)};
-    const double k[3] = {vx(i), vy(i), omega(i)};
-    const char* names[3] = {"vx_mps", "vy_mps", "omega_radps"};
-    for (int j = 0; j < 3; ++j)
-      if (!std::isfinite(k[j]))
-        bad(i, names[j], k[j], "is not finite (the kinematics must be given)");
-    for (int c = 0; c < kChannels; ++c) {
-      if (!channels[c]) continue;
-      const double y = (*channels[c])(i);
-      if (std::isnan(y)) continue;  // not measured
-      if (!std::isfinite(y)) bad(i, kChannelColumns[c], y, "is not finite");
-      p.force[c] = y;
-    }
-    if (fz && !std::isnan((*fz)(i))) {
-      const double v = (*fz)(i);
-      if (!(v > 0.0) || !std::isfinite(v)) bad(i, "Fz_N", v, "must be positive");
-      p.normal_load = v;
-    }
-    if (ts && !std::isnan((*ts)(i))) {
-      if (!std::isfinite((*ts)(i))) bad(i, "t_s", (*ts)(i), "is not finite");
-      p.time = (*ts)(i);
-    }
+    return cells;
   }
-  return d;
+  return nb::cast<std::vector<std::string>>(column);
+}
+
+// Measured data from named columns (a DataFrame's): the CSV reader's table in memory, so that
+// units in names, renames, near misses and bad cells are handled as for a file; errors name
+// the row (1-based) and its index.
+MeasuredData data_from_columns(const std::string& source, const std::vector<std::string>& names,
+                               const nb::list& columns, const ColumnRenames& renames) {
+  CsvTable t;
+  t.file = source;
+  t.header = names;
+  t.rows_numbered = true;
+  std::vector<std::vector<std::string>> cells;
+  for (nb::handle c : columns) cells.push_back(cells_of(c));
+  const std::size_t n = cells.empty() ? 0 : cells.front().size();
+  for (std::size_t j = 0; j < cells.size(); ++j)
+    if (cells[j].size() != n)
+      throw std::invalid_argument("column '" + names[j] + "' has " +
+                                  std::to_string(cells[j].size()) + " rows, '" + names[0] +
+                                  "' has " + std::to_string(n));
+  t.rows.resize(n);
+  for (std::size_t i = 0; i < n; ++i) {
+    t.rows[i].line = static_cast<int>(i + 1);
+    for (std::vector<std::string>& c : cells) t.rows[i].cells.push_back(std::move(c[i]));
+  }
+  return measured_data_from_table(t, renames);
 }
 
 std::vector<double> forces_of(const std::vector<Resultants<double>>& r) {
@@ -109,124 +91,93 @@ nb::dict covariance_of(const FitReport& fit) {
   return d;
 }
 
-nb::dict identify(std::optional<std::string> path, std::string source, std::optional<Column> vx,
-                  std::optional<Column> vy, std::optional<Column> omega, std::optional<Column> fx,
-                  std::optional<Column> fy, std::optional<Column> mz, std::optional<Column> fz,
-                  std::optional<Column> ts, double radius, std::optional<double> load,
-                  std::optional<std::string> profile_spec, std::optional<double> pressure,
-                  const std::map<std::string, double>& fixed, const std::string& loss,
-                  double loss_scale, const std::string& noise_model,
-                  std::optional<std::vector<double>> noise_scale, bool loop_on, double alpha,
-                  bool speed_inside, int smoothing, bool profile_clip) {
-  // The option handling of contensou-identify (apps/identify/main.cpp, run_fit).
-  IdentificationOptions o;
-  o.radius_m = radius;
-  require_positive("radius", radius);
-  if (load && profile_spec)
-    throw std::invalid_argument("give normal_load or profile, not both (the profile gives N)");
-  if (smoothing > 0 && (!profile_spec || !std::filesystem::exists(*profile_spec)))
-    throw std::invalid_argument("profile_smoothing needs profile with a CSV file");
-  if (load) require_positive("normal_load", *load);
-  o.normal_load_n = load;
-  ProfileChoice profile;
-  if (profile_spec) {
-    try {
-      profile = choose_profile(*profile_spec, smoothing, profile_clip);
-    } catch (const ParseError&) {
-      throw;
-    } catch (const std::runtime_error& e) {
-      throw std::invalid_argument(e.what());  // a missing file or a refused table: bad input
-    }
-    o.profile = profile.profile;
-    const std::optional<double> ps =
-        profile.reference_pressure ? profile.reference_pressure : pressure;
-    if (ps) {
-      ContactPatch patch;
-      patch.radius_m = radius;
-      patch.reference_pressure_pa = *ps;
-      patch.profile = profile.profile;
-      o.normal_load_n = normal_load(patch);
-    }
-  }
-  o.fixed = fixed;
-  if (loss != "none" && loss != "huber" && loss != "cauchy")
-    throw std::invalid_argument("loss = " + loss + ": must be none, huber or cauchy");
-  o.loss = loss == "huber"    ? RobustLoss::huber
-           : loss == "cauchy" ? RobustLoss::cauchy
-                              : RobustLoss::none;
-  require_positive("loss_scale", loss_scale);
-  o.loss_scale = loss_scale;
-  if (noise_model != "additive" && noise_model != "relative")
-    throw std::invalid_argument("noise_model = " + noise_model + ": must be additive or relative");
-  o.noise_model = noise_model == "relative" ? NoiseModel::relative : NoiseModel::additive;
-  if (noise_scale) {
-    if (noise_scale->size() != 3)
-      throw std::invalid_argument("noise_scale needs three values: Fx, Fy, Mz");
-    o.noise_scale = std::array<double, 3>{(*noise_scale)[0], (*noise_scale)[1], (*noise_scale)[2]};
-  }
-  if (!(alpha >= 1e-12 && alpha <= 0.5))
-    throw std::invalid_argument("alpha = " + format_value(alpha) + ": must lie in [1e-12, 0.5]");
-
-  MeasuredData data;
-  if (path) {
-    data = read_measured_csv(*path);
-    if (source.empty()) source = *path;
-  } else {
-    if (!vx || !vy || !omega)
-      throw std::invalid_argument("the kinematics vx_mps, vy_mps and omega_radps are required");
-    data = data_from_columns(source, *vx, *vy, *omega, {fx, fy, mz}, fz, ts);
-  }
-  const ReportInput info = describe_run(source, data, radius, o.normal_load_n, profile);
-  const std::size_t n = data.points.size();
-  std::vector<double> measured(3 * n, std::nan(""));
-  for (std::size_t i = 0; i < n; ++i)
+// The fitted rows as arrays: their index in the data given, kinematics and measured values
+// (NaN = not measured, or left out as a gross error).
+void put_fitted_rows(nb::dict& out, const MeasuredData& given, const MeasuredData& fitted) {
+  std::map<int, std::size_t> index_of_line;
+  for (std::size_t i = 0; i < given.points.size(); ++i) index_of_line[given.points[i].line] = i;
+  const std::size_t n = fitted.points.size();
+  std::vector<double> measured(3 * n, std::nan("")), k(3 * n), rows(n);
+  for (std::size_t i = 0; i < n; ++i) {
+    const MeasuredPoint& p = fitted.points[i];
+    rows[i] = static_cast<double>(index_of_line[p.line]);
+    k[3 * i] = p.kinematics.vx;
+    k[3 * i + 1] = p.kinematics.vy;
+    k[3 * i + 2] = p.kinematics.omega;
     for (int c = 0; c < kChannels; ++c)
-      if (data.points[i].force[c]) measured[3 * i + c] = *data.points[i].force[c];
-
-  nb::dict out;
-  out["measured"] = to_numpy(std::move(measured), {n, 3});
-  out["kinematics"] = [&] {
-    std::vector<double> k;
-    for (const MeasuredPoint& p : data.points) {
-      k.push_back(p.kinematics.vx);
-      k.push_back(p.kinematics.vy);
-      k.push_back(p.kinematics.omega);
-    }
-    return to_numpy(std::move(k), {n, 3});
-  }();
-  if (!loop_on) {
-    const FitReport fit = run_interruptible([&](const StopRequest& stop) {
-      IdentificationOptions with_stop = o;
-      with_stop.stop = stop;
-      return fit_fractional_law(data, with_stop);
-    });
-    out["json"] = fit_report_json(info, fit);
-    out["base_prediction"] = to_numpy(forces_of(fit.prediction), {n, 3});
-    out["final_prediction"] = to_numpy(forces_of(fit.prediction), {n, 3});
-    out["covariance"] = covariance_of(fit);
-    return out;
+      if (p.force[c]) measured[3 * i + c] = *p.force[c];
   }
-  ClosedLoopOptions lo;
-  lo.alpha = alpha;
-  lo.speed_inside_integrals = speed_inside;
-  const ClosedLoopReport loop = run_interruptible([&](const StopRequest& stop) {
-    IdentificationOptions with_stop = o;
-    with_stop.stop = stop;
-    return close_the_loop(data, with_stop, lo);
-  });
-  out["json"] = loop_report_json(info, loop);
-  out["base_prediction"] = to_numpy(forces_of(loop.base.prediction), {n, 3});
-  out["final_prediction"] = to_numpy(forces_of(loop.final_fit.prediction), {n, 3});
-  out["covariance"] = covariance_of(loop.final_fit);
+  out["rows"] = to_numpy(std::move(rows), {n});
+  out["kinematics"] = to_numpy(std::move(k), {n, 3});
+  out["measured"] = to_numpy(std::move(measured), {n, 3});
+}
+
+// The report as text and JSON, the predictions and the loop's steps.
+void put_results(nb::dict& out, const IdentifyRun& run) {
+  const Identification& r = run.result;
+  const std::size_t n = r.fitted.points.size();
+  out["base_prediction"] = to_numpy(forces_of(r.fit.prediction), {n, 3});
+  out["final_prediction"] = to_numpy(forces_of(r.final_fit().prediction), {n, 3});
+  out["covariance"] = covariance_of(r.final_fit());
   nb::list steps;
-  for (const LoopStep& st : loop.steps) {
-    nb::dict s;
-    s["prediction_before"] = to_numpy(forces_of(st.fit_before.prediction), {n, 3});
-    s["prediction_after"] = to_numpy(forces_of(st.fit_after.prediction), {n, 3});
-    steps.append(s);
+  if (!r.loop) {
+    out["json"] = fit_report_json(run.input, r.fit);
+    out["text"] = fit_report_text(run.input, r.fit);
+  } else {
+    out["json"] = loop_report_json(run.input, *r.loop);
+    out["text"] = loop_report_text(run.input, *r.loop);
+    for (const LoopStep& st : r.loop->steps) {
+      nb::dict s;
+      s["prediction_before"] = to_numpy(forces_of(st.fit_before.prediction), {n, 3});
+      s["prediction_after"] = to_numpy(forces_of(st.fit_after.prediction), {n, 3});
+      steps.append(s);
+    }
   }
   out["steps"] = steps;
+}
+
+// contensou.identify(): the data from a CSV path or named columns, the request as the app's.
+nb::dict identify(std::optional<std::string> path, std::string source,
+                  const std::vector<std::string>& names, const nb::list& columns,
+                  const std::string& renames, IdentifyRequest request) {
+  const ColumnRenames column_renames = parse_column_renames(renames);
+  MeasuredData data = path ? read_measured_csv(*path, column_renames)
+                           : data_from_columns(source, names, columns, column_renames);
+  if (!source.empty()) data.source = source;
+  request.style = KeyStyle::python;
+  const IdentifyRun run = run_interruptible([&](const StopRequest& stop) {
+    IdentifyRequest with_stop = request;
+    with_stop.stop = stop;
+    return contensou::identify(data, with_stop);
+  });
+  nb::dict out;
+  put_fitted_rows(out, data, run.result.fitted);
+  put_results(out, run);
   return out;
+}
+
+// The request's keys as attributes (identify_request.hpp's table gives their meaning).
+void bind_request(nb::module_& m) {
+  nb::class_<IdentifyRequest>(m, "_IdentifyRequest")
+      .def(nb::init<>())
+      .def_rw("radius", &IdentifyRequest::radius_m)
+      .def_rw("normal_load", &IdentifyRequest::normal_load_n)
+      .def_rw("profile", &IdentifyRequest::profile)
+      .def_rw("pressure", &IdentifyRequest::pressure_pa)
+      .def_rw("profile_smoothing", &IdentifyRequest::profile_smoothing)
+      .def_rw("profile_clip", &IdentifyRequest::profile_clip)
+      .def_rw("fix", &IdentifyRequest::fix)
+      .def_rw("loss", &IdentifyRequest::loss)
+      .def_rw("loss_scale", &IdentifyRequest::loss_scale)
+      .def_rw("noise_model", &IdentifyRequest::noise_model)
+      .def_rw("noise_scale", &IdentifyRequest::noise_scale)
+      .def_rw("loop", &IdentifyRequest::loop)
+      .def_rw("alpha", &IdentifyRequest::alpha)
+      .def_rw("speed_inside_integrals", &IdentifyRequest::speed_inside_integrals)
+      .def_rw("outliers", &IdentifyRequest::outliers);
+  std::vector<std::pair<std::string, std::string>> keys;
+  for (const RequestKey& k : identify_request_keys()) keys.emplace_back(k.key, k.help);
+  m.attr("_identify_keys") = keys;
 }
 
 }  // namespace
@@ -234,11 +185,9 @@ nb::dict identify(std::optional<std::string> path, std::string source, std::opti
 void bind_identification(nb::module_& m) {
   // Ceres logs through glog: quiet, as contensou-identify without --verbose.
   FLAGS_minloglevel = google::GLOG_FATAL;
-  m.def("_identify", &identify, "path"_a.none(), "source"_a, "vx"_a.none(), "vy"_a.none(),
-        "omega"_a.none(), "fx"_a.none(), "fy"_a.none(), "mz"_a.none(), "fz"_a.none(), "t"_a.none(),
-        "radius"_a, "normal_load"_a.none(), "profile"_a.none(), "pressure"_a.none(), "fixed"_a,
-        "loss"_a, "loss_scale"_a, "noise_model"_a, "noise_scale"_a.none(), "loop"_a, "alpha"_a,
-        "speed_inside_integrals"_a, "profile_smoothing"_a, "profile_clip"_a);
+  bind_request(m);
+  m.def("_identify", &identify, "path"_a.none(), "source"_a, "names"_a, "columns"_a, "renames"_a,
+        "request"_a);
 }
 
 }  // namespace contensou::python

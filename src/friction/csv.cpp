@@ -136,6 +136,11 @@ int CsvTable::column(const std::string& name) const {
 }
 
 ParseError CsvTable::cell_error(int line, int col, const std::string& message) const {
+  if (rows_numbered)
+    return ParseError(file, 0, 0,
+                      "row " + std::to_string(line) + " (index " + std::to_string(line - 1) +
+                          "): column '" + header[static_cast<std::size_t>(col)] + "' (" +
+                          std::to_string(col + 1) + "): " + message);
   return ParseError::in_cell(file, line, col + 1, header[static_cast<std::size_t>(col)], message);
 }
 

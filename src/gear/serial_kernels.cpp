@@ -19,7 +19,8 @@ View view(N_Vector v) {
 // z = a x + b y with nvector_serial.c's special cases (each rounds differently: c (x + y) is
 // not c x + c y), so that the sums are the library's to the last bit.
 void linear_sum(sunrealtype a, N_Vector x, sunrealtype b, N_Vector y, N_Vector z) {
-  const auto [xd, n] = view(x);
+  const auto [xd, length] = view(x);
+  const sunindextype n = length;  // a copy: clang 14 cannot capture a structured binding
   sunrealtype* yd = NV_DATA_S(y);
   sunrealtype* zd = NV_DATA_S(z);
   const auto axpy = [n](sunrealtype c, const sunrealtype* u, sunrealtype* w) {  // w += c u

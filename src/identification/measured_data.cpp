@@ -90,25 +90,24 @@ std::optional<double> si_value(const CsvTable& t, const CsvRow& row, const LabCo
 
 }  // namespace
 
-MeasuredData read_measured_csv(const std::string& path, const ColumnRenames& renames) {
-  const CsvTable t = read_csv(path);
+MeasuredData measured_data_from_table(const CsvTable& t, const ColumnRenames& renames) {
   if (header_looks_like_data(t))
-    throw ParseError(path, t.header_line, 0,
+    throw ParseError(t.file, t.header_line, 0,
                      "the first row holds numbers, not column names: the file needs a header row "
                      "(vx_mps,vy_mps,omega_radps and at least one of Fx_N,Fy_N,Mz_Nm)");
-  const LabHeader header{t.header, t.rows.empty() ? nullptr : &t.rows.front().cells, path,
+  const LabHeader header{t.header, t.rows.empty() ? nullptr : &t.rows.front().cells, t.file,
                          t.header_line, t.rows.empty() ? 0 : t.rows.front().line};
   const LabColumns cols = resolve_lab_columns(header, renames);
   require_columns(t, cols);
   MeasuredData data;
-  data.source = path;
+  data.source = t.file;
   data.column_notes = cols.notes();
   const LabColumn& fz = cols[MeasuredQuantity::Fz];
   for (std::size_t r = cols.units_row ? 1 : 0; r < t.rows.size(); ++r) {
     const CsvRow& row = t.rows[r];
     MeasuredPoint p;
     p.line = row.line;
-    double k[3];
+    double k[3] = {0.0, 0.0, 0.0};
     for (int i = 0; i < 3; ++i) {
       const LabColumn& c = cols.column[i];
       const std::optional<double> v = si_value(t, row, c);
@@ -124,10 +123,14 @@ MeasuredData read_measured_csv(const std::string& path, const ColumnRenames& ren
     data.points.push_back(p);
   }
   if (data.points.empty())
-    throw ParseError(path, t.header_line, 0,
+    throw ParseError(t.file, t.header_line, 0,
                      cols.units_row ? "no data rows after the header and its units row"
                                     : "no data rows after the header");
   return data;
+}
+
+MeasuredData read_measured_csv(const std::string& path, const ColumnRenames& renames) {
+  return measured_data_from_table(read_csv(path), renames);
 }
 
 std::optional<LoadFromData> normal_load_from_data(const MeasuredData& data) {

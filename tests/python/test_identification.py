@@ -117,7 +117,8 @@ def test_bad_input_is_a_value_error_with_the_message(tmp_path):
         c.identify(df.drop(columns=["omega_radps"]), radius=0.087)
     bad = df.copy()
     bad.loc[4, "vx_mps"] = np.inf
-    with pytest.raises(ValueError, match=r"row 5: column 'vx_mps': inf is not finite"):
+    with pytest.raises(ValueError,
+                       match=r"<DataFrame>: row 5 \(index 4\): column 'vx_mps' \(1\): non-finite"):
         c.identify(bad, radius=0.087)
     with pytest.raises(ValueError, match="no measured channel"):
         c.identify(df[["vx_mps", "vy_mps", "omega_radps"]], radius=0.087)
@@ -131,7 +132,66 @@ def test_bad_input_is_a_value_error_with_the_message(tmp_path):
         c.identify(str(broken), radius=0.087)
     words = df.astype({"Fx_N": object})
     words.loc[2, "Fx_N"] = "high"
-    with pytest.raises(ValueError, match="column 'Fx_N': not numbers"):
+    with pytest.raises(ValueError, match=r"row 3 \(index 2\): column 'Fx_N' \(4\): not a number: 'high'"):
         c.identify(words, radius=0.087)
     with pytest.raises(ValueError, match="loss"):
         c.identify(df, radius=0.087, loss="square")
+
+
+def test_units_in_names_and_renamed_columns_are_read_as_the_app_reads_them():
+    """A DataFrame in lab units (km/h, rpm, kN, a torque under another name) gives the SI
+    frame's parameters, and the report names every conversion."""
+    df = pd.read_csv(DATA, comment="#")
+    lab = pd.DataFrame({
+        "vx [km/h]": df["vx_mps"] * 3.6,
+        "vy_mps": df["vy_mps"],
+        "omega_rpm": df["omega_radps"] * 60.0 / (2.0 * np.pi),
+        "Fx [kN]": df["Fx_N"] / 1000.0,
+        "Fy_N": df["Fy_N"],
+        "Torque (N m)": df["Mz_Nm"],
+        "operator": ["A"] * len(df),  # text in a column nobody reads is fine
+    })
+    si = c.identify(df, radius=0.087, loop=False, **PROFILE)
+    r = c.identify(lab, radius=0.087, loop=False, columns={"Mz": "Torque (N m)"}, **PROFILE)
+    for name, p in si.parameters.items():
+        assert r.parameters[name].value == pytest.approx(p.value, rel=1e-7), name
+    notes = " | ".join(r.report["input"]["columns_converted"])
+    for expected in ("vx [km/h]", "omega_rpm", "Fx [kN]", "Torque (N m)"):
+        assert expected in notes
+    with pytest.raises(ValueError, match="Mz"):  # the torque column unmapped: no channel named
+        c.identify(lab.drop(columns=["Fx [kN]", "Fy_N"]), radius=0.087, loop=False)
+    with pytest.raises(ValueError, match=r"row 2 \(index 1\): column 'operator'|operator"):
+        c.identify(lab, radius=0.087, loop=False, columns="Mz=operator")
+
+
+def test_gross_errors_are_named_and_left_out_as_the_app_does(identify_app, tmp_path):
+    """Glitched rows (a sign flip, a spike) are found by Python as by the app: the same report
+    byte for byte, the values left out are NaN in ``measured``, and ``text`` is what the app
+    prints."""
+    df = pd.read_csv(DATA, comment="#")
+    bad = df.copy()
+    bad.loc[20, "Fy_N"] = -bad.loc[20, "Fy_N"] + 300.0
+    bad.loc[30, "Mz_Nm"] = bad.loc[30, "Mz_Nm"] + 40.0
+    path = tmp_path / "glitched.csv"
+    bad.to_csv(path, index=False, float_format="%.17g")
+    out = tmp_path / "r.json"
+    printed = subprocess.run([str(identify_app), str(path), "--radius", "0.087", "--no-loop",
+                              "--json", str(out)], check=True, capture_output=True, text=True).stdout
+    r = c.identify(str(path), radius=0.087, loop=False)
+    assert r.to_json() == out.read_text()
+    named = sorted((o["line"], o["channel"]) for o in r.outliers)
+    assert named == [(22, "Fy_N"), (32, "Mz_Nm")]  # header on line 1, row i on line i + 2
+    assert r.text in printed and "Fy_N" in r.text
+    assert np.isnan(r.measured[20, 1]) and np.isnan(r.measured[30, 2])
+    np.testing.assert_array_equal(r.rows, np.arange(len(df)))
+    # The same from the DataFrame (rows numbered from 1), and none without the search.
+    from_df = c.identify(bad, radius=0.087, loop=False)
+    assert sorted((o["line"], o["channel"]) for o in from_df.outliers) == [(21, "Fy_N"),
+                                                                          (31, "Mz_Nm")]
+    assert c.identify(bad, radius=0.087, loop=False, outliers=False).outliers == []
+
+
+def test_the_keys_are_documented_from_the_librarys_table():
+    doc = c.identify.__doc__ or ""
+    for key in ("radius", "normal_load", "profile", "pressure", "alpha", "outliers"):
+        assert f"``{key}``" in doc

@@ -25,6 +25,9 @@ struct CsvTable {
   std::vector<std::string> header;  // column names ("" for an unnamed column)
   std::vector<CsvRow> rows;
   char separator = ',';  // ',', ';' or '\t', from the header
+  // In-memory data (a DataFrame's columns as cells): a row's `line` is its 1-based row number,
+  // and errors say "row N (index N-1)" instead of a file line.
+  bool rows_numbered = false;
 
   // Index of a column by exact name, or -1. Throws ParseError if two columns have the name.
   int column(const std::string& name) const;
@@ -33,7 +36,8 @@ struct CsvTable {
   // "file:line: column 'name' (n): not a number: 'text'" (or "non-finite value").
   std::optional<double> number(const CsvRow& row, int column) const;
 
-  // An error about a cell: "file:line: column 'name' (n): message".
+  // An error about a cell: "file:line: column 'name' (n): message" (with rows_numbered:
+  // "source: row N (index N-1): column 'name' (n): message").
   ParseError cell_error(int line, int column, const std::string& message) const;
 
   // The header's column whose name is closest to `name` (same name in another case, at most

@@ -6,6 +6,7 @@
 #include <string>
 #include <vector>
 
+#include "contensou/friction/csv.hpp"
 #include "contensou/friction/kinematics.hpp"
 #include "contensou/identification/lab_columns.hpp"
 
@@ -42,6 +43,10 @@ struct MeasuredData {
 // cell, a missing required column or an empty kinematic cell, a unit this reader does not
 // convert, and a file without any channel.
 MeasuredData read_measured_csv(const std::string& path, const ColumnRenames& renames = {});
+
+// The same from a table already in memory (read_csv's, or a DataFrame's columns written as
+// cells, with `rows_numbered` set): the same columns, units, renames and refusals.
+MeasuredData measured_data_from_table(const CsvTable& table, const ColumnRenames& renames = {});
 
 // The normal load the data carry in their Fz column: the mean over the rows that have it, the
 // largest relative deviation from it and the number of rows; nullopt if no row has one.

@@ -1,0 +1,168 @@
+#include "contensou/identification/identify_request.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <filesystem>
+#include <stdexcept>
+
+#include "contensou/friction/contact_patch.hpp"
+
+namespace contensou {
+
+const std::vector<RequestKey>& identify_request_keys() {
+  static const std::vector<RequestKey> keys = {
+      {"radius", "patch radius R [m] (required)"},
+      {"normal_load",
+       "normal load N [N]: f = F0/N is reported (else N comes from the profile "
+       "with its pressure, or the mean of an Fz column)"},
+      {"profile",
+       "pressure profile: uniform, hertz, seed-tire or a CSV rho,pressure_Pa (fixes "
+       "the shape constants; a CSV, or a built-in one with its pressure, gives N)"},
+      {"pressure", "reference pressure p* [Pa] of a built-in profile"},
+      {"profile_smoothing",
+       "fit the profile CSV by a Chebyshev series in rho^2 of this many "
+       "terms (noisy film data) instead of interpolating it"},
+      {"profile_clip", "clip a profile CSV that dips below zero at zero (otherwise refused)"},
+      {"fix", "hold parameters fixed: NAME=VALUE (F0_N, a, M0_Nm, m, kx)"},
+      {"loss", "robust loss: none, huber or cauchy"},
+      {"loss_scale", "robust loss threshold, in noise scales"},
+      {"noise_model", "noise: additive (constant per channel) or relative"},
+      {"noise_scale", "given noise scales Fx, Fy, Mz [N, N, N m] (else estimated)"},
+      {"loop", "close the loop (else fit the fractional law only)"},
+      {"alpha",
+       "closed loop: family-wise level of the likelihood-ratio test per step, in "
+       "[1e-12, 0.5]"},
+      {"speed_inside_integrals",
+       "closed loop: slip-speed friction at the local slip speed "
+       "inside the exact integrals (else at an effective speed)"},
+      {"outliers", "find gross errors (glitched rows) and leave them out of the fit"},
+  };
+  return keys;
+}
+
+std::string key_name(std::string_view key, KeyStyle style) {
+  std::string name(key);
+  if (style == KeyStyle::python) return name;
+  std::replace(name.begin(), name.end(), '_', '-');
+  return "--" + name;
+}
+
+const char* key_help(std::string_view key) {
+  for (const RequestKey& k : identify_request_keys())
+    if (key == k.key) return k.help;
+  throw std::logic_error("no identification key '" + std::string(key) + "'");
+}
+
+namespace {
+
+// Keys that name a choice among words: the value must be one of them.
+void require_one_of(const std::string& name, const std::string& value,
+                    const std::vector<std::string>& words) {
+  if (std::find(words.begin(), words.end(), value) != words.end()) return;
+  std::string list;
+  for (const std::string& w : words) list += (list.empty() ? "" : ", ") + w;
+  throw InvalidArgument(name, value, "must be one of " + list);
+}
+
+// The checks that involve more than one key, and the ranges of single keys.
+void validate(const IdentifyRequest& r) {
+  const auto key = [&](std::string_view k) { return key_name(k, r.style); };
+  require_positive(key("radius").c_str(), r.radius_m);
+  if (r.normal_load_n) require_positive(key("normal_load").c_str(), *r.normal_load_n);
+  if (r.normal_load_n && !r.profile.empty())
+    throw std::invalid_argument("give " + key("normal_load") + " or " + key("profile") +
+                                ", not both (the profile gives N)");
+  if (r.pressure_pa && r.profile.empty())
+    throw std::invalid_argument(key("pressure") + " " + format_value(*r.pressure_pa) +
+                                " is the reference pressure of a built-in " + key("profile") +
+                                " (uniform, hertz, seed-tire); give one, or the load as " +
+                                key("normal_load"));
+  if (r.pressure_pa) require_positive(key("pressure").c_str(), *r.pressure_pa);
+  if (r.profile_smoothing < 0 || r.profile_smoothing > 64)
+    throw InvalidArgument(key("profile_smoothing"), std::to_string(r.profile_smoothing),
+                          "must lie in [0, 64]");
+  if (r.profile_smoothing > 0 && (r.profile.empty() || !std::filesystem::exists(r.profile)))
+    throw std::invalid_argument(key("profile_smoothing") + " needs " + key("profile") +
+                                " with a CSV file");
+  require_one_of(key("loss"), r.loss, {"none", "huber", "cauchy"});
+  require_positive(key("loss_scale").c_str(), r.loss_scale);
+  require_one_of(key("noise_model"), r.noise_model, {"additive", "relative"});
+  if (!r.noise_scale.empty() && r.noise_scale.size() != kChannels)
+    throw std::invalid_argument(key("noise_scale") + " needs three values: Fx, Fy, Mz");
+  for (double s : r.noise_scale) require_positive(key("noise_scale").c_str(), s);
+  if (!(r.alpha >= 1e-12 && r.alpha <= 0.5))
+    throw InvalidArgument(key("alpha"), format_value(r.alpha), "must lie in [1e-12, 0.5]");
+  for (const auto& [name, value] : r.fix)
+    if (!std::isfinite(value))
+      throw InvalidArgument(key("fix") + " " + name, format_value(value), "must be finite");
+}
+
+// The profile as named, and N from it when its pressure is known.
+std::optional<double> load_from_profile(const IdentifyRequest& r, ProfileChoice& profile) {
+  if (r.profile.empty()) return std::nullopt;
+  try {
+    profile = choose_profile(r.profile, r.profile_smoothing, r.profile_clip);
+  } catch (const ParseError&) {
+    throw;
+  } catch (const std::runtime_error& e) {
+    throw std::invalid_argument(e.what());  // a missing file or a refused table: bad input
+  }
+  const std::optional<double> ps =
+      profile.reference_pressure ? profile.reference_pressure : r.pressure_pa;
+  if (!ps) return std::nullopt;
+  ContactPatch patch;
+  patch.radius_m = r.radius_m;
+  patch.reference_pressure_pa = *ps;
+  patch.profile = profile.profile;
+  return normal_load(patch);
+}
+
+}  // namespace
+
+IdentifyOptions identify_options(const IdentifyRequest& r, ProfileChoice& profile) {
+  validate(r);
+  IdentifyOptions o;
+  IdentificationOptions& f = o.fit;
+  f.radius_m = r.radius_m;
+  f.normal_load_n = r.normal_load_n;
+  if (const std::optional<double> n = load_from_profile(r, profile)) f.normal_load_n = n;
+  if (!r.profile.empty()) f.profile = profile.profile;
+  f.fixed = r.fix;
+  f.failing_point = r.failing_point;
+  f.loss = r.loss == "huber"    ? RobustLoss::huber
+           : r.loss == "cauchy" ? RobustLoss::cauchy
+                                : RobustLoss::none;
+  f.loss_scale = r.loss_scale;
+  f.noise_model = r.noise_model == "relative" ? NoiseModel::relative : NoiseModel::additive;
+  if (!r.noise_scale.empty())
+    f.noise_scale =
+        std::array<double, kChannels>{r.noise_scale[0], r.noise_scale[1], r.noise_scale[2]};
+  f.stop = r.stop;
+  o.leave_out_outliers = r.outliers;
+  if (r.loop) {
+    o.loop = ClosedLoopOptions{};
+    o.loop->alpha = r.alpha;
+    o.loop->speed_inside_integrals = r.speed_inside_integrals;
+    o.loop->progress = r.progress;
+  }
+  return o;
+}
+
+IdentifyRun identify(const MeasuredData& data, const IdentifyRequest& request) {
+  ProfileChoice profile;
+  IdentifyOptions o = identify_options(request, profile);
+  std::string load_source;
+  if (!o.fit.normal_load_n)
+    if (const std::optional<LoadFromData> l = normal_load_from_data(data)) {
+      o.fit.normal_load_n = l->mean_n;  // f = F0 / N is then reported
+      load_source = l->description();
+    }
+  IdentifyRun run;
+  run.result = identify(data, o);
+  run.input = describe_run(data.source, data, request.radius_m, o.fit.normal_load_n, profile);
+  run.input.normal_load_source = load_source;
+  run.input.outliers = run.result.outliers;
+  return run;
+}
+
+}  // namespace contensou

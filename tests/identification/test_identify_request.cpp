@@ -1,0 +1,163 @@
+// The request shared by contensou-identify and Python's identify(): one table of keys, errors
+// naming the key as each front end writes it, and the normal load taken from where it is known.
+#include <gtest/gtest.h>
+
+#include "seed_tire_law.hpp"
+
+#include <cmath>
+#include <set>
+#include <string>
+#include <thread>
+
+#include "contensou/friction/contact_patch.hpp"
+#include "contensou/identification/identify_request.hpp"
+#include "contensou/identification/simulation.hpp"
+
+using namespace contensou;
+
+namespace {
+
+MeasuredData sweep(std::optional<double> fz) {
+  DiagramSpec s;
+  s.radius_m = 0.087;
+  s.points = 40;
+  s.noise = SimulatedNoise::additive_gaussian;
+  s.noise_level = 0.01;
+  s.seed = 7;
+  MeasuredData d = simulate_diagrams(test::seed_tire_law(), s);
+  d.source = "sweep";
+  for (std::size_t i = 0; i < d.points.size(); ++i) {
+    d.points[i].line = static_cast<int>(i) + 2;
+    // A load cell that reads N within +-1 %: the mean is what f = F0/N must use.
+    if (fz) d.points[i].normal_load = *fz * (1.0 + 0.01 * std::sin(static_cast<double>(i)));
+  }
+  return d;
+}
+
+std::string message_of(const IdentifyRequest& r) {
+  ProfileChoice profile;
+  try {
+    identify_options(r, profile);
+  } catch (const std::invalid_argument& e) {
+    return e.what();
+  }
+  return "";
+}
+
+}  // namespace
+
+TEST(IdentifyRequest, KeysAreNamedAsEachFrontEndWritesThem) {
+  EXPECT_EQ(key_name("normal_load", KeyStyle::command_line), "--normal-load");
+  EXPECT_EQ(key_name("normal_load", KeyStyle::python), "normal_load");
+  std::set<std::string> seen;
+  for (const RequestKey& k : identify_request_keys()) {
+    EXPECT_TRUE(seen.insert(k.key).second) << "key listed twice: " << k.key;
+    EXPECT_GT(std::string(k.help).size(), 10u) << k.key;
+    EXPECT_STREQ(key_help(k.key), k.help);
+  }
+  EXPECT_THROW(key_help("radius_m"), std::logic_error);
+}
+
+TEST(IdentifyRequest, BadValuesAreRefusedNamingTheKeyAndTheRange) {
+  IdentifyRequest r;
+  r.radius_m = 0.087;
+  EXPECT_EQ(message_of(r), "");
+  struct Case {
+    std::function<void(IdentifyRequest&)> set;
+    std::string python, command_line;
+  };
+  const std::vector<Case> cases = {
+      {[](IdentifyRequest& q) { q.radius_m = 0.0; }, "radius = 0: must be positive",
+       "--radius = 0: must be positive"},
+      {[](IdentifyRequest& q) { q.loss = "l1"; }, "loss = l1: must be one of none, huber, cauchy",
+       "--loss = l1"},
+      {[](IdentifyRequest& q) { q.alpha = 0.7; }, "alpha = 0.7: must lie in [1e-12, 0.5]",
+       "--alpha = 0.7"},
+      {[](IdentifyRequest& q) {
+         q.noise_scale = {1.0, 2.0};
+       },
+       "noise_scale needs three values", "--noise-scale needs three values"},
+      {[](IdentifyRequest& q) {
+         q.noise_scale = {1.0, -2.0, 1.0};
+       },
+       "noise_scale = -2", "--noise-scale = -2"},
+      {[](IdentifyRequest& q) { q.noise_model = "white"; }, "noise_model = white",
+       "--noise-model = white"},
+      {[](IdentifyRequest& q) { q.pressure_pa = 2e5; }, "pressure 2e+05 is the reference",
+       "--pressure 2e+05 is the reference"},
+      {[](IdentifyRequest& q) {
+         q.normal_load_n = 4000.0;
+         q.profile = "hertz";
+       },
+       "give normal_load or profile, not both", "give --normal-load or --profile, not both"},
+      {[](IdentifyRequest& q) { q.profile_smoothing = 4; }, "profile_smoothing needs profile",
+       "--profile-smoothing needs --profile"},
+      {[](IdentifyRequest& q) { q.fix["a"] = std::nan(""); }, "fix a = nan: must be finite",
+       "--fix a = nan"},
+      {[](IdentifyRequest& q) { q.profile = "/nowhere/profile.csv"; }, "/nowhere/profile.csv",
+       "/nowhere/profile.csv"},
+  };
+  for (const Case& c : cases) {
+    IdentifyRequest q = r;
+    c.set(q);
+    q.style = KeyStyle::python;
+    EXPECT_NE(message_of(q).find(c.python), std::string::npos) << message_of(q);
+    q.style = KeyStyle::command_line;
+    EXPECT_NE(message_of(q).find(c.command_line), std::string::npos) << message_of(q);
+  }
+}
+
+TEST(IdentifyRequest, NormalLoadComesFromTheProfileOrElseFromTheFzColumn) {
+  IdentifyRequest r;
+  r.radius_m = 0.087;
+  r.loop = false;
+  // From the data's Fz column: its mean, and the report says where it came from.
+  const IdentifyRun from_fz = identify(sweep(4500.0), r);
+  ASSERT_TRUE(from_fz.input.normal_load_n);
+  EXPECT_NEAR(*from_fz.input.normal_load_n, 4500.0, 0.01 * 4500.0);
+  EXPECT_NE(from_fz.input.normal_load_source.find("mean of the Fz column over 40 rows"),
+            std::string::npos)
+      << from_fz.input.normal_load_source;
+  // Given: used as is, no source line.
+  r.normal_load_n = 4000.0;
+  const IdentifyRun given = identify(sweep(4500.0), r);
+  EXPECT_EQ(*given.input.normal_load_n, 4000.0);
+  EXPECT_TRUE(given.input.normal_load_source.empty());
+  // From a built-in profile and its pressure: N = 2 pi R^2 p* A1 (theory.md section 1), the
+  // same as the contact patch computes.
+  r.normal_load_n.reset();
+  r.profile = "seed-tire";
+  r.pressure_pa = 2.1e5;
+  const IdentifyRun from_profile = identify(sweep(std::nullopt), r);
+  ContactPatch patch;
+  patch.radius_m = 0.087;
+  patch.reference_pressure_pa = 2.1e5;
+  patch.profile = seed_tire_profile();
+  EXPECT_NEAR(*from_profile.input.normal_load_n, normal_load(patch), 1e-9 * normal_load(patch));
+  // No load anywhere: none reported, and f is not either.
+  r.profile.clear();
+  r.pressure_pa.reset();
+  EXPECT_FALSE(identify(sweep(std::nullopt), r).input.normal_load_n);
+}
+
+// The same input gives the same bits, whatever else the machine does: four identical
+// identifications on four threads at once and one alone give byte-identical reports (with
+// several evaluation threads, Ceres' sums of the cost and gradient change order from run to
+// run and the last digits move).
+TEST(IdentifyRequest, TheSameInputGivesTheSameReportBitForBit) {
+  IdentifyRequest r;
+  r.radius_m = 0.087;
+  r.loop = false;
+  r.profile = "seed-tire";
+  const MeasuredData d = sweep(std::nullopt);
+  const auto report = [&] {
+    const IdentifyRun run = identify(d, r);
+    return fit_report_json(run.input, run.result.fit);
+  };
+  const std::string alone = report();
+  std::vector<std::string> together(4);
+  std::vector<std::thread> threads;
+  for (std::string& out : together) threads.emplace_back([&out, &report] { out = report(); });
+  for (std::thread& t : threads) t.join();
+  for (const std::string& out : together) EXPECT_EQ(out, alone);
+}
