@@ -1,5 +1,7 @@
 #include "contensou/identification/closed_loop.hpp"
 
+#include "contensou/identification/report_text.hpp"
+
 #include <Eigen/QR>
 #include <algorithm>
 #include <cmath>
@@ -391,6 +393,57 @@ std::string step_label(int step) {
 
 // The loop of the header: base fit; then per step score, rank, fit and test the candidates
 // (of those that pass, the lowest BIC is accepted; close alternatives are named); then prune.
+// Other starts for a step whose fit ended worse than the model it extends (which it contains:
+// the optimiser stopped short, e.g. at a start where the new parameters' gradient vanishes):
+// each new free parameter with a closed range moved a quarter of the way to its upper, then
+// its lower bound.
+std::vector<ModelSpec> other_starts(const ModelSpec& ext, const Candidate& c) {
+  std::vector<ModelSpec> out;
+  for (int p : c.parameters) {
+    const ParameterBounds b = parameter_bounds(p);
+    if (!ext.free[p] || !b.closed()) continue;
+    for (double bound : {b.upper, b.lower}) {
+      ModelSpec s = ext;
+      s.value[p] = ext.value[p] + 0.25 * (bound - ext.value[p]);
+      if (s.value[p] != ext.value[p]) out.push_back(s);
+    }
+  }
+  return out;
+}
+
+// The extension fitted and tested; refitted from other_starts (the best kept) while its fit
+// ends worse than the model it extends.
+struct StepFit {
+  LoopState ext;
+  LoopStep step;
+};
+StepFit fit_step(const MeasuredData& data, const LoopState& cur, const ModelSpec& ext_spec,
+                 const Candidate& c, double threshold, const NoiseSettings& noise,
+                 const ClosedLoopOptions& loop) {
+  StepFit best{fit_state(data, ext_spec, noise), {}};
+  throw_if_stopped(noise.stop);
+  best.step = test_extension(data, cur, best.ext, c, threshold, noise.model, loop);
+  int retries = 0;
+  for (const ModelSpec& start : other_starts(ext_spec, c)) {
+    if (!step_fit_failed(best.step)) break;
+    say(loop, label(c) +
+                  ": the fit ended worse than the model it extends; refitting from "
+                  "another start");
+    ++retries;
+    try {
+      StepFit again{fit_state(data, start, noise), {}};
+      again.step = test_extension(data, cur, again.ext, c, threshold, noise.model, loop);
+      if (again.step.error_after < best.step.error_after) best = std::move(again);
+    } catch (const Interrupted&) {
+      throw;
+    } catch (const std::runtime_error&) {
+      // This start failed too (the solver found no usable point): try the next one.
+    }
+  }
+  best.step.retries = retries;
+  return best;
+}
+
 ClosedLoopReport close_the_loop(const MeasuredData& data, const IdentificationOptions& options,
                                 const ClosedLoopOptions& loop) {
   ClosedLoopReport report;
@@ -436,9 +489,9 @@ ClosedLoopReport close_the_loop(const MeasuredData& data, const IdentificationOp
         continue;
       }
       say(loop, step_label(step) + "fitting " + label(c));
-      LoopState ext = fit_state(data, ext_spec, noise);
-      throw_if_stopped(noise.stop);
-      LoopStep trial = test_extension(data, st, ext, c, threshold, noise.model, loop);
+      StepFit fitted = fit_step(data, st, ext_spec, c, threshold, noise, loop);
+      LoopState& ext = fitted.ext;
+      LoopStep& trial = fitted.step;
       say(loop, step_label(step) + label(c) + " fitted: BIC " + std::to_string(trial.bic_before) +
                     " -> " + std::to_string(trial.bic_after));
       trial.scores = sorted;

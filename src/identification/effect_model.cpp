@@ -2,6 +2,8 @@
 
 #include "contensou/friction/error.hpp"
 
+#include <limits>
+
 namespace contensou {
 
 namespace {
@@ -38,6 +40,33 @@ int parameter_index_by_name(const std::string& name) {
   for (int i = 0; i < kModelParameters; ++i)
     if (name == kInfo[i].name) return i;
   return -1;
+}
+
+ParameterBounds parameter_bounds(int index) {
+  constexpr double inf = std::numeric_limits<double>::infinity();
+  switch (index) {
+    case kF0:
+    case kA:
+    case kM0:
+    case kMShape:
+      return {1e-12, inf};
+    case kKappa:
+      return {0.05, 20.0};
+    case kSpeedRef:
+      return {1e-3, inf};
+    case kSpeedDrop:
+      return {-0.9, 0.95};
+    case kProfileB1:
+    case kProfileB2:
+      return {-0.45, 0.45};
+    case kKx:
+    case kKy:
+      return {-0.95, 0.95};
+    case kShapeBlend:
+      return {0.0, 1.0};
+    default:
+      return {-inf, inf};
+  }
 }
 
 int offset_parameter(int channel) {

@@ -98,41 +98,10 @@ constexpr double kNoiseFloor = 1e-6;
 // Bounds that keep the model physical, on the packed active parameters.
 void set_bounds(ceres::Problem& problem, double* packed, const std::vector<int>& active) {
   for (std::size_t j = 0; j < active.size(); ++j) {
-    const int i = active[j], jj = static_cast<int>(j);
-    auto bound = [&](double lo, double hi) {
-      problem.SetParameterLowerBound(packed, jj, lo);
-      problem.SetParameterUpperBound(packed, jj, hi);
-    };
-    switch (i) {
-      case kF0:
-      case kA:
-      case kM0:
-      case kMShape:
-        problem.SetParameterLowerBound(packed, jj, 1e-12);
-        break;
-      case kKappa:
-        bound(0.05, 20.0);
-        break;
-      case kSpeedRef:
-        problem.SetParameterLowerBound(packed, jj, 1e-3);
-        break;
-      case kSpeedDrop:
-        bound(-0.9, 0.95);
-        break;
-      case kProfileB1:
-      case kProfileB2:
-        bound(-0.45, 0.45);
-        break;
-      case kKx:
-      case kKy:
-        bound(-0.95, 0.95);
-        break;
-      case kShapeBlend:
-        bound(0.0, 1.0);
-        break;
-      default:
-        break;
-    }
+    const ParameterBounds b = parameter_bounds(active[j]);
+    const int jj = static_cast<int>(j);
+    if (std::isfinite(b.lower)) problem.SetParameterLowerBound(packed, jj, b.lower);
+    if (std::isfinite(b.upper)) problem.SetParameterUpperBound(packed, jj, b.upper);
   }
 }
 

@@ -141,6 +141,7 @@ nlohmann::json loop_report(const ReportInput& info, const ClosedLoopReport& loop
                                                st.effect + " (" + st.verdict + ")"
                                          : st.verdict},
          {"fit_failed", step_fit_failed(st)},
+         {"retries", st.retries},
          {"ambiguous_with", st.ambiguous_with},
          {"separation", st.separation},
          {"parameters", params},

@@ -87,10 +87,13 @@ std::string steps_text(const ClosedLoopReport& loop) {
                   st.bic_after, st.error_before, st.error_after, verdict_word(st));
     s += line;
     if (step_fit_failed(st))
-      s += "      the fit with " + st.effect +
-           " ended worse than the model it extends: its optimiser failed, so this step says "
-           "nothing about " +
-           st.effect + "\n";
+      s += "      the fit with " + st.effect + " ended worse than the model it extends" +
+           (st.retries > 0 ? ", also from " + std::to_string(st.retries) + " other starts" : "") +
+           ": its optimiser failed, so this step says nothing about " + st.effect + "\n";
+    else if (st.retries > 0)
+      s += "      the first fit with " + st.effect +
+           " ended worse than the model it extends; this row is its fit from another start (" +
+           std::to_string(st.retries) + " tried)\n";
     if (st.accepted && !st.removed)
       for (const std::string& alt : st.ambiguous_with)
         s += "      ambiguous with " + alt + " (see its row; the lower BIC picks " + st.effect +
@@ -189,6 +192,29 @@ std::string loop_summary(const ClosedLoopReport& loop) {
   return s + ".";
 }
 
+// The radius against the data: the pure-spin torque over the sliding force and the radius,
+// M0 / (F0 R) = A^2 / A^1 (theory.md section 4), is at most 1 for any patch (every point's
+// arm is at most R) and 0.59 to 2/3 for Hertz and uniform pressure. Far outside, the radius
+// or the units of a column are wrong, and the fit is not to be believed.
+std::string radius_warning(const FractionalLaw<double>& law) {
+  if (!(law.F0 > 0.0 && law.M0 > 0.0 && law.radius > 0.0)) return "";
+  const double ratio = law.M0 / (law.F0 * law.radius);
+  const std::string numbers = "M0 = " + fmt("%.4g", law.M0) +
+                              " N m, F0 R = " + fmt("%.4g", law.F0 * law.radius) +
+                              " N m with R = " + fmt("%.4g", law.radius) + " m";
+  if (ratio > 1.05)
+    return "the radius is too small for the torque: " + numbers +
+           ", but no patch of radius R "
+           "gives more than F0 R (M0 / (F0 R) = " +
+           fmt("%.3g", ratio) + " > 1): is R in metres, and the torque in N m?";
+  if (ratio < 0.05)
+    return "the radius is too large for the torque: " + numbers +
+           ", M0 / (F0 R) = " + fmt("%.3g", ratio) +
+           " where a tire patch gives 0.3 to 0.7 (2/3 for uniform pressure): is R in metres, "
+           "and the torque in N m?";
+  return "";
+}
+
 std::vector<std::string> fit_warnings(const FitReport& fit) {
   std::vector<std::string> w;
   const int scales = fit.residuals - fit.free_parameters - fit.degrees_of_freedom;
@@ -204,6 +230,8 @@ std::vector<std::string> fit_warnings(const FitReport& fit) {
     if (!p.derived && !p.fixed && !p.determined)
       w.push_back(p.name + " is not determined by the data (no row is sensitive to it)");
   if (!fit.converged) w.push_back("the solver did not converge; the values are its last iterate");
+  const std::string radius = radius_warning(fit.law);
+  if (!radius.empty()) w.push_back(radius);
   return w;
 }
 

@@ -85,4 +85,42 @@ TEST(ReportText, AFailedStepIsFlaggedNotRejected) {
   EXPECT_TRUE(contains(j["steps"][0]["verdict"].get<std::string>(), "failed fit"));
   EXPECT_FALSE(j["steps"][1]["fit_failed"].get<bool>());
   EXPECT_EQ(j["summary"].get<std::string>(), loop_summary(loop));
+  // Retried from other starts: said in the text and counted in the JSON, whether the step
+  // still failed or a start recovered it.
+  loop.steps[0].retries = 4;
+  loop.steps[1].retries = 1;
+  const std::string retried = loop_report_text(ReportInput{}, loop);
+  EXPECT_TRUE(contains(retried, "ended worse than the model it extends, also from 4 other starts"))
+      << retried;
+  EXPECT_TRUE(contains(retried, "this row is its fit from another start (1 tried)")) << retried;
+  const nlohmann::json k = nlohmann::json::parse(loop_report_json(ReportInput{}, loop));
+  EXPECT_EQ(k["steps"][0]["retries"].get<int>(), 4);
+  EXPECT_EQ(k["steps"][1]["retries"].get<int>(), 1);
+}
+
+// A radius that does not fit the data's torque (a radius in mm, or a torque column in N mm
+// read as N m) is warned about: M0 / (F0 R) = A^2 / A^1 lies in (0, 1] for any patch.
+TEST(ReportText, ARadiusTheTorqueCannotHaveIsWarnedAbout) {
+  const auto warned = [](const FitReport& f, const std::string& part) {
+    for (const std::string& w : fit_warnings(f))
+      if (contains(w, part)) return true;
+    return false;
+  };
+  const FitReport right = fit_of(40);  // the seed tire: M0 / (F0 R) about 0.6
+  EXPECT_FALSE(warned(right, "radius"));
+  // The same data refitted as if R were 10 times smaller or 100 times larger.
+  for (const auto& [factor, part] :
+       {std::pair{0.1, "too small for the torque"}, std::pair{100.0, "too large for the torque"}}) {
+    DiagramSpec s;
+    s.radius_m = 0.087;
+    s.points = 40;
+    s.noise = SimulatedNoise::additive_gaussian;
+    s.noise_level = 0.01;
+    s.seed = 11;
+    IdentificationOptions o;
+    o.radius_m = 0.087 * factor;
+    const FitReport wrong = fit_fractional_law(simulate_diagrams(truth(), s), o);
+    EXPECT_TRUE(warned(wrong, part)) << factor;
+    EXPECT_TRUE(contains(fit_report_text(ReportInput{}, wrong), "is R in metres")) << factor;
+  }
 }

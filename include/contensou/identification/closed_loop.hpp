@@ -55,6 +55,9 @@ struct LoopStep {
   // score direction correlated above 0.9 and a significant LR), and for each, why and which
   // measurement would separate it from this one.
   std::vector<std::string> ambiguous_with;
+  // Fits from other starts after the first ended worse than the model it extends (0: none
+  // needed); the step reports the best of them.
+  int retries = 0;
   std::vector<std::string> separation;
   FitReport fit_after;  // the extended fit (kept for pictures)
   FitReport fit_before;

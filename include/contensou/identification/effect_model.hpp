@@ -13,6 +13,7 @@
 #pragma once
 
 #include <array>
+#include <cmath>
 #include <memory>
 #include <optional>
 #include <string>
@@ -58,7 +59,13 @@ struct ParameterInfo {
 const ParameterInfo& parameter_info(int index);
 int parameter_index_by_name(const std::string& name);  // -1 if unknown
 int offset_parameter(int channel);                     // kOffsetFx + channel
-int crosstalk_parameter(int channel, int source);      // g_{channel <- source}
+// The range that keeps a parameter physical (+-inf where it is open): what the fit enforces.
+struct ParameterBounds {
+  double lower, upper;
+  bool closed() const { return std::isfinite(lower) && std::isfinite(upper); }
+};
+ParameterBounds parameter_bounds(int index);
+int crosstalk_parameter(int channel, int source);  // g_{channel <- source}
 
 struct ModelSpec {
   double radius_m = 0.0;
