@@ -19,7 +19,8 @@ FractionalLaw<double> truth() {
   return test::seed_tire_law();
 }
 
-FitReport fit_of(int points) {
+// The seed tire's diagrams fitted with a radius (the data's own, 0.087 m, by default).
+FitReport fit_of(int points, double fit_radius_m = 0.087) {
   DiagramSpec s;
   s.radius_m = 0.087;
   s.points = points;
@@ -27,7 +28,7 @@ FitReport fit_of(int points) {
   s.noise_level = 0.01;
   s.seed = 11;
   IdentificationOptions o;
-  o.radius_m = 0.087;
+  o.radius_m = fit_radius_m;
   return fit_fractional_law(simulate_diagrams(truth(), s), o);
 }
 
@@ -111,15 +112,7 @@ TEST(ReportText, ARadiusTheTorqueCannotHaveIsWarnedAbout) {
   // The same data refitted as if R were 10 times smaller or 100 times larger.
   for (const auto& [factor, part] :
        {std::pair{0.1, "too small for the torque"}, std::pair{100.0, "too large for the torque"}}) {
-    DiagramSpec s;
-    s.radius_m = 0.087;
-    s.points = 40;
-    s.noise = SimulatedNoise::additive_gaussian;
-    s.noise_level = 0.01;
-    s.seed = 11;
-    IdentificationOptions o;
-    o.radius_m = 0.087 * factor;
-    const FitReport wrong = fit_fractional_law(simulate_diagrams(truth(), s), o);
+    const FitReport wrong = fit_of(40, 0.087 * factor);
     EXPECT_TRUE(warned(wrong, part)) << factor;
     EXPECT_TRUE(contains(fit_report_text(ReportInput{}, wrong), "is R in metres")) << factor;
   }
