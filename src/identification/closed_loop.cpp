@@ -444,6 +444,53 @@ StepFit fit_step(const MeasuredData& data, const LoopState& cur, const ModelSpec
   return best;
 }
 
+// A candidate fitted and tested in a step.
+struct Trial {
+  std::size_t candidate;
+  LoopState ext;
+  LoopStep step;
+};
+
+// Of the trials that pass the tests, the one with the lowest BIC (nullptr if none); any other
+// that passes within a BIC difference of 2, or whose score direction correlates above 0.9 with
+// the accepted one's and whose LR is significant, is named as an alternative the data do not
+// rule out, with the measurement that would separate the two.
+Trial* choose_among(std::vector<Trial>& trials, const std::vector<Candidate>& cands,
+                    const std::vector<Eigen::VectorXd>& directions, const MeasuredData& data,
+                    const ClosedLoopOptions& loop, int step) {
+  Trial* best = nullptr;
+  for (Trial& t : trials)
+    if (t.step.accepted && (!best || t.step.bic_after < best->step.bic_after)) best = &t;
+  for (Trial& t : trials) {
+    const Candidate& c = cands[t.candidate];
+    if (best && &t != best) {
+      const Candidate& b = cands[best->candidate];
+      const double dbic = t.step.bic_after - best->step.bic_after;
+      const double corr =
+          direction_correlation(directions[t.candidate], directions[best->candidate]);
+      const bool significant = t.step.lr_p_value < t.step.threshold;
+      if (t.step.accepted)
+        t.step.verdict += "; passes too, but " + label(b) + " has the lower BIC (by " +
+                          std::to_string(dbic) + ")";
+      if ((t.step.accepted && dbic < 2.0) || (significant && corr > 0.9)) {
+        LoopStep& chosen = best->step;
+        t.step.verdict += "; ambiguous with the accepted " + label(b);
+        chosen.ambiguous_with.push_back(label(c));
+        chosen.separation.push_back(label(b) + " and " + label(c) +
+                                    " explain the residual about "
+                                    "equally (BIC difference " +
+                                    std::to_string(dbic) + ", score correlation " +
+                                    std::to_string(corr) +
+                                    "): " + separating_measurement(b, c, data));
+      }
+      t.step.accepted = false;
+    }
+    say(loop, step_label(step) + label(c) + (t.step.accepted ? " accepted" : " rejected") + " (" +
+                  t.step.verdict + ")");
+  }
+  return best;
+}
+
 ClosedLoopReport close_the_loop(const MeasuredData& data, const IdentificationOptions& options,
                                 const ClosedLoopOptions& loop) {
   ClosedLoopReport report;
@@ -473,11 +520,6 @@ ClosedLoopReport close_the_loop(const MeasuredData& data, const IdentificationOp
     // the one with the lowest BIC is accepted; any other that passes within a BIC difference of
     // 2, or whose score direction correlates above 0.9 with the accepted one's and whose LR is
     // significant, is named as an alternative the data do not rule out.
-    struct Trial {
-      std::size_t candidate;
-      LoopState ext;
-      LoopStep step;
-    };
     std::vector<Trial> trials;
     for (std::size_t rank = 0; rank < order.size() && trials.size() < kMaxFitted; ++rank) {
       if (rank > 0 && sorted[rank].p_value >= threshold) break;
@@ -497,36 +539,7 @@ ClosedLoopReport close_the_loop(const MeasuredData& data, const IdentificationOp
       trial.scores = sorted;
       trials.push_back({order[rank], std::move(ext), std::move(trial)});
     }
-    Trial* best = nullptr;
-    for (Trial& t : trials)
-      if (t.step.accepted && (!best || t.step.bic_after < best->step.bic_after)) best = &t;
-    for (Trial& t : trials) {
-      const Candidate& c = cands[t.candidate];
-      if (best && &t != best) {
-        const Candidate& b = cands[best->candidate];
-        const double dbic = t.step.bic_after - best->step.bic_after;
-        const double corr =
-            direction_correlation(directions[t.candidate], directions[best->candidate]);
-        const bool significant = t.step.lr_p_value < t.step.threshold;
-        if (t.step.accepted)
-          t.step.verdict += "; passes too, but " + label(b) + " has the lower BIC (by " +
-                            std::to_string(dbic) + ")";
-        if ((t.step.accepted && dbic < 2.0) || (significant && corr > 0.9)) {
-          LoopStep& chosen = best->step;
-          t.step.verdict += "; ambiguous with the accepted " + label(b);
-          chosen.ambiguous_with.push_back(label(c));
-          chosen.separation.push_back(label(b) + " and " + label(c) +
-                                      " explain the residual about "
-                                      "equally (BIC difference " +
-                                      std::to_string(dbic) + ", score correlation " +
-                                      std::to_string(corr) +
-                                      "): " + separating_measurement(b, c, data));
-        }
-        t.step.accepted = false;
-      }
-      say(loop, step_label(step) + label(c) + (t.step.accepted ? " accepted" : " rejected") + " (" +
-                    t.step.verdict + ")");
-    }
+    Trial* best = choose_among(trials, cands, directions, data, loop, step);
     for (Trial& t : trials) report.steps.push_back(t.step);
     const bool accepted_any = best != nullptr;
     if (best) {
