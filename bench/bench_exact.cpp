@@ -303,7 +303,56 @@ void BM_LawBuildTableFalling(benchmark::State& state, double tolerance) {
   state.counters["KB"] = bytes / 1024.0;
 }
 
+// The build of a dense table's exact model (issue 22): make_exact_model for the kinked profile
+// p = 1 - rho^2 + 0.3 max(rho - 0.6, 0) sampled at n even points in rho, n = 10^3, 10^4, 10^5;
+// the table after the run gives the ratios (10 for an O(n) build, 13 for O(n log n)).
+ContactPatch dense_patch(int n) {
+  std::vector<double> rho, p;
+  for (int i = 0; i < n; ++i) {
+    const double r = static_cast<double>(i) / (n - 1);
+    rho.push_back(r);
+    p.push_back(1.0 - r * r + 0.3 * std::max(r - 0.6, 0.0));
+  }
+  ContactPatch c = seed_patch();
+  c.profile = tabulated_profile(rho, p);
+  c.profile.kx = 0.14;
+  return c;
+}
+
+void BM_DenseModelBuild(benchmark::State& state) {
+  const ContactPatch patch = dense_patch(static_cast<int>(state.range(0)));
+  double error = 0.0;
+  for (auto _ : state) {
+    const ExactModel<double> model = make_exact_model(patch);
+    error = model.representation_error;
+    benchmark::DoNotOptimize(model);
+  }
+  state.counters["representation_error"] = error;
+}
+
+template <class Runs>
+void print_dense_table(const Runs& runs) {
+  bool header = false;
+  double previous = 0.0;
+  for (int n : {1000, 10000, 100000}) {
+    const auto it = runs.find("build:dense_model/" + std::to_string(n));
+    if (it == runs.end()) continue;
+    if (!header) std::printf("\n| knots | model build [ms] | / 10x fewer knots |\n|---|---|---|\n");
+    header = true;
+    const double ms = it->second.GetAdjustedRealTime();
+    char ratio[32] = "";
+    if (previous > 0.0) std::snprintf(ratio, sizeof ratio, "%.1fx", ms / previous);
+    std::printf("| %d | %.1f | %s |\n", n, ms, ratio);
+    previous = ms;
+  }
+}
+
 void register_law_benchmarks() {
+  benchmark::RegisterBenchmark("build:dense_model", BM_DenseModelBuild)
+      ->Arg(1000)
+      ->Arg(10000)
+      ->Arg(100000)
+      ->Unit(benchmark::kMillisecond);
   for (double tol : {1e-8, 1e-6})
     benchmark::RegisterBenchmark(
         (std::string("build:table101+f(w)/tol:") + (tol > 1e-7 ? "1e-6" : "1e-8")).c_str(),
@@ -424,6 +473,7 @@ int main(int argc, char** argv) {
                 run.counters.at("estimate").value, ratio);
   }
   print_law_table(reporter.runs);
+  print_dense_table(reporter.runs);
   benchmark::Shutdown();
   return 0;
 }
