@@ -200,8 +200,8 @@ std::vector<double> sign_changes(const PressureProfile& profile) {
 // Why a table of more than kMaxProfilePoints points is refused, and what to do instead.
 std::string too_many_points_advice() {
   return "a tabulated profile takes at most " + std::to_string(kMaxProfilePoints) +
-         " points (its exact model needs about 1.4 KB a point to build): resample it, or fit "
-         "smoothed_profile";
+         " points (its exact model and law take about 1.7 KB a point to build): resample it, "
+         "or fit smoothed_profile";
 }
 
 }  // namespace
