@@ -303,7 +303,83 @@ void BM_LawBuildTableFalling(benchmark::State& state, double tolerance) {
   state.counters["KB"] = bytes / 1024.0;
 }
 
+// The build of a dense table's exact model and law (issue 22): make_exact_model for the kinked
+// profile p = 1 - rho^2 + 0.3 max(rho - 0.6, 0) sampled at n even points in rho, n = 10^3, 10^4,
+// 10^5, and make_exact_law of that model; the table after the run gives the ratios (10 for an
+// O(n) build, 13 for O(n log n); the law's samples, O(log n) each, weigh more at 10^3).
+ContactPatch dense_patch(int n) {
+  std::vector<double> rho, p;
+  for (int i = 0; i < n; ++i) {
+    const double r = static_cast<double>(i) / (n - 1);
+    rho.push_back(r);
+    p.push_back(1.0 - r * r + 0.3 * std::max(r - 0.6, 0.0));
+  }
+  ContactPatch c = seed_patch();
+  c.profile = tabulated_profile(rho, p);
+  c.profile.kx = 0.14;
+  return c;
+}
+
+void BM_DenseModelBuild(benchmark::State& state) {
+  const ContactPatch patch = dense_patch(static_cast<int>(state.range(0)));
+  double error = 0.0;
+  for (auto _ : state) {
+    const ExactModel<double> model = make_exact_model(patch);
+    error = model.representation_error;
+    benchmark::DoNotOptimize(model);
+  }
+  state.counters["representation_error"] = error;
+}
+
+// The exact law of the same tables (constant f, default tolerance, one core), the model built.
+void BM_DenseLawBuild(benchmark::State& state) {
+  const ExactModel<double> model = make_exact_model(dense_patch(static_cast<int>(state.range(0))));
+  ExactLawOptions one_core;
+  one_core.threads = 1;
+  double achieved = 0.0;
+  for (auto _ : state) {
+    const ExactLaw law = make_exact_law(model, one_core);
+    achieved = law.achieved;
+    benchmark::DoNotOptimize(law);
+  }
+  state.counters["achieved"] = achieved;
+}
+
+template <class Runs>
+void print_dense_table(const Runs& runs) {
+  auto ms = [&runs](const char* what, int n) {
+    const auto it = runs.find(std::string("build:dense_") + what + "/" + std::to_string(n));
+    return it == runs.end() ? 0.0 : it->second.GetAdjustedRealTime();
+  };
+  auto ratio = [](double now, double before, char* out) {
+    if (now > 0.0 && before > 0.0)
+      std::snprintf(out, 32, "%.1fx", now / before);
+    else
+      out[0] = 0;
+  };
+  if (ms("model", 1000) == 0.0 && ms("law", 1000) == 0.0) return;
+  std::printf(
+      "\n| knots | model build [ms] | / 10x fewer knots | law build [ms] | / 10x fewer knots "
+      "|\n|---|---|---|---|---|\n");
+  for (int n : {1000, 10000, 100000}) {
+    char rm[32], rl[32];
+    ratio(ms("model", n), n > 1000 ? ms("model", n / 10) : 0.0, rm);
+    ratio(ms("law", n), n > 1000 ? ms("law", n / 10) : 0.0, rl);
+    std::printf("| %d | %.1f | %s | %.1f | %s |\n", n, ms("model", n), rm, ms("law", n), rl);
+  }
+}
+
 void register_law_benchmarks() {
+  benchmark::RegisterBenchmark("build:dense_model", BM_DenseModelBuild)
+      ->Arg(1000)
+      ->Arg(10000)
+      ->Arg(100000)
+      ->Unit(benchmark::kMillisecond);
+  benchmark::RegisterBenchmark("build:dense_law", BM_DenseLawBuild)
+      ->Arg(1000)
+      ->Arg(10000)
+      ->Arg(100000)
+      ->Unit(benchmark::kMillisecond);
   for (double tol : {1e-8, 1e-6})
     benchmark::RegisterBenchmark(
         (std::string("build:table101+f(w)/tol:") + (tol > 1e-7 ? "1e-6" : "1e-8")).c_str(),
@@ -424,6 +500,7 @@ int main(int argc, char** argv) {
                 run.counters.at("estimate").value, ratio);
   }
   print_law_table(reporter.runs);
+  print_dense_table(reporter.runs);
   benchmark::Shutdown();
   return 0;
 }

@@ -38,6 +38,10 @@ void validate(const ContactPatch& patch) {
       throw InvalidArgument("profile", describe(patch.profile),
                             "a tabulated shape needs >= 2 knots with as many p and slope values "
                             "(build it with tabulated_profile)");
+    if (n > kMaxProfilePoints)
+      throw InvalidArgument(
+          "profile", describe(patch.profile),
+          "a tabulated shape takes at most " + std::to_string(kMaxProfilePoints) + " knots");
     for (std::size_t i = 0; i < n; ++i) {
       require_finite("tabulated rho", t->rho[i]);
       require_finite("tabulated p", t->p[i]);

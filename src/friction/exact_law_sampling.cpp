@@ -196,19 +196,135 @@ void add_ring_interval(const std::array<double, 4>& c, double t0, double a, doub
 
 }  // namespace
 
-SlipMoments table_ring_moments(const ExactModel<double>& unit, double e) {
-  SlipMoments out{};
-  const std::vector<double>& knot = unit.knot;
-  for (std::size_t k = 0; k < unit.piece.size(); ++k) {
-    const double a = std::sqrt(knot[k]), b = std::sqrt(knot[k + 1]);
-    if (!(b > a)) continue;
-    if (e > a && e < b) {
-      add_ring_interval(unit.piece[k], knot[k], a, e, e, out);
-      add_ring_interval(unit.piece[k], knot[k], e, b, e, out);
-    } else {
-      add_ring_interval(unit.piece[k], knot[k], a, b, e, out);
-    }
+namespace {
+
+// The moments of piece k: rho p(rho^2) T_m(u) is a polynomial of degree 7 + m <= 30 in rho, so
+// 16-point Gauss-Legendre is exact; its nodes are the u of T_m (T[i][m] = T_m(x_i)).
+RingNode piece_ring_moments(const ExactModel<double>& unit, std::size_t k,
+                            const GaussLegendreRule& g,
+                            const std::vector<std::array<double, kRingTerms>>& T) {
+  RingNode node{std::sqrt(unit.knot[k]), std::sqrt(unit.knot[k + 1]), {}};
+  const double half = 0.5 * (node.b - node.a), mid = 0.5 * (node.a + node.b);
+  const std::array<double, 4>& c = unit.piece[k];
+  for (std::size_t i = 0; i < g.nodes.size(); ++i) {
+    const double rho = mid + half * g.nodes[i], s = rho * rho - unit.knot[k];
+    const double w = half * g.weights[i] * rho * (c[0] + s * (c[1] + s * (c[2] + s * c[3])));
+    for (int m = 0; m < kRingTerms; ++m) node.mu[m] += w * T[i][m];
   }
+  return node;
+}
+
+// Adds a child's moments to its parent's. On the child, u_parent = alpha u + beta (alpha =
+// (b - a) / (B - A), beta = (a + b - A - B) / (B - A), |alpha| + |beta| <= 1) and
+// T_m(alpha u + beta) = sum_k E_mk T_k(u), the rows by T_(m+1) = 2 (alpha u + beta) T_m - T_(m-1)
+// with u T_0 = T_1, u T_k = (T_(k+1) + T_(k-1)) / 2; then mu_parent,m += sum_k E_mk mu_k.
+void add_ring_child(const RingNode& child, RingNode& parent) {
+  const double W = parent.b - parent.a;
+  if (!(W > 0.0)) return;
+  const double alpha = (child.b - child.a) / W;
+  const double beta = ((child.a - parent.a) + (child.b - parent.b)) / W;
+  std::array<double, kRingTerms + 2> prev{}, row{}, next{};
+  row[0] = 1.0;
+  for (int m = 0; m < kRingTerms; ++m) {
+    double sum = 0.0;
+    for (int k = 0; k <= m; ++k) sum += row[k] * child.mu[k];
+    parent.mu[m] += sum;
+    const double f = m == 0 ? 1.0 : 2.0;  // T_1 = alpha u + beta, then the recurrence
+    for (int k = 0; k <= m + 1; ++k) {
+      const double u_row = k == 0   ? 0.5 * row[1]
+                           : k == 1 ? row[0] + 0.5 * row[2]
+                                    : 0.5 * (row[k - 1] + row[k + 1]);
+      next[k] = f * (alpha * u_row + beta * row[k]) - prev[k];
+    }
+    prev = row;
+    row = next;
+  }
+}
+
+// Adds the integral over a tree node far from the centre's ring, where the ring functions are
+// analytic: interpolated at the n Chebyshev points z_j of the node, r_i = sum_m a_im T_m(u), so
+// that integral rho p r_i d rho = sum_m a_im mu_m = sum_j W_j r_i(rho_j) with the node's own
+// weights W_j = (1/n) sum_m (m ? 2 : 1) mu_m cos(pi m (j + 1/2) / n).
+void add_ring_node(const RingTree& tree, const RingNode& node, int n, double e, SlipMoments& out) {
+  const std::vector<double>& cs = tree.cosines[n];
+  const double half = 0.5 * (node.b - node.a), mid = 0.5 * (node.a + node.b);
+  for (int j = 0; j < n; ++j) {
+    double W = node.mu[0] * cs[j];
+    for (int m = 1; m < n; ++m) W += 2.0 * node.mu[m] * cs[m * n + j];
+    const double z = cs[n + j], rho = mid + half * z;
+    double r[6];
+    ring_about_origin(rho, e, (node.a - e) + half * (1.0 + z), r);
+    for (int i = 0; i < 6; ++i) out[i] += W / n * r[i];
+  }
+}
+
+// Adds a piece's rings, split at the centre's ring if it crosses it (add_ring_interval).
+void add_piece_rings(const ExactModel<double>& unit, std::size_t k, double e, SlipMoments& out) {
+  const double a = std::sqrt(unit.knot[k]), b = std::sqrt(unit.knot[k + 1]);
+  if (!(b > a)) return;
+  if (e > a && e < b) {
+    add_ring_interval(unit.piece[k], unit.knot[k], a, e, e, out);
+    add_ring_interval(unit.piece[k], unit.knot[k], e, b, e, out);
+  } else {
+    add_ring_interval(unit.piece[k], unit.knot[k], a, b, e, out);
+  }
+}
+
+// Adds the rings of node i of level s: by its moments where it lies 3 half widths from the
+// singularities at rho = e and -e (the interpolation then converges like B^-n, B = r +
+// sqrt(r^2 - 1), r the distance in half widths: n = 38 / ln B points leave e^-38 = 3e-17, as
+// the pieces' Gauss rules), else by its children, down to the pieces.
+void add_ring_subtree(const RingTree& tree, const ExactModel<double>& unit, std::size_t s,
+                      std::size_t i, double e, SlipMoments& out) {
+  if (s == 0) return add_piece_rings(unit, i, e, out);
+  const RingNode& node = tree.level[s][i];
+  const double half = 0.5 * (node.b - node.a), mid = 0.5 * (node.a + node.b);
+  const double r = std::min(std::abs(mid - e), mid + e) / half;
+  if (r >= 3.0) {
+    const double B = r + std::sqrt(r * r - 1.0);
+    const int n = std::clamp(static_cast<int>(std::ceil(38.0 / std::log(B))), 8, kRingTerms);
+    return add_ring_node(tree, node, n, e, out);
+  }
+  for (std::size_t c = 2 * i; c < std::min(2 * i + 2, tree.level[s - 1].size()); ++c)
+    add_ring_subtree(tree, unit, s - 1, c, e, out);
+}
+
+}  // namespace
+
+RingTree ring_tree(const ExactModel<double>& unit) {
+  RingTree tree;
+  const GaussLegendreRule g = gauss_legendre(16);
+  std::vector<std::array<double, kRingTerms>> T(g.nodes.size());
+  for (std::size_t i = 0; i < g.nodes.size(); ++i) {
+    T[i][0] = 1.0;
+    T[i][1] = g.nodes[i];
+    for (int m = 2; m < kRingTerms; ++m) T[i][m] = 2.0 * g.nodes[i] * T[i][m - 1] - T[i][m - 2];
+  }
+  tree.level.emplace_back();
+  for (std::size_t k = 0; k < unit.piece.size(); ++k)
+    tree.level[0].push_back(piece_ring_moments(unit, k, g, T));
+  while (tree.level.back().size() > 1) {
+    const std::vector<RingNode>& below = tree.level.back();
+    std::vector<RingNode> up;
+    for (std::size_t i = 0; i < below.size(); i += 2) {
+      RingNode node{below[i].a, (i + 1 < below.size() ? below[i + 1] : below[i]).b, {}};
+      add_ring_child(below[i], node);
+      if (i + 1 < below.size()) add_ring_child(below[i + 1], node);
+      up.push_back(node);
+    }
+    tree.level.push_back(std::move(up));
+  }
+  tree.cosines.resize(kRingTerms + 1);
+  for (int n = 2; n <= kRingTerms; ++n)
+    for (int m = 0; m < n; ++m)
+      for (int j = 0; j < n; ++j) tree.cosines[n].push_back(std::cos(kPi * m * (j + 0.5) / n));
+  return tree;
+}
+
+SlipMoments table_ring_moments(const RingTree& tree, const ExactModel<double>& unit, double e) {
+  SlipMoments out{};
+  if (!tree.level.empty() && !tree.level[0].empty())
+    add_ring_subtree(tree, unit, tree.level.size() - 1, 0, e, out);
   return out;
 }
 
@@ -221,7 +337,9 @@ SlipMoments table_ring_moments(const ExactModel<double>& unit, double e) {
 //   P5 kappa = 2, k = e = 45 deg:   Mz = -(3a - 3/2 (a + b)) - 1/2 (alpha - c)
 // At t = -1 the limits of exact_law.hpp (moments A^0, A^1, A^2 of the representation).
 ConstantSampler::ConstantSampler(const ExactModel<double>& model, double tolerance)
-    : unit_(unit_model(model)), tol_(tolerance) {
+    : unit_(unit_model(model)),
+      rings_(unit_.piece.empty() ? RingTree{} : ring_tree(unit_)),
+      tol_(tolerance) {
   const double A0 = profile_integral(unit_, [](double) { return 1.0; });
   const double A1 = profile_integral(unit_, [](double r) { return r; });
   const double A2 = profile_integral(unit_, [](double r) { return r * r; });
@@ -243,7 +361,8 @@ void ConstantSampler::operator()(double t, double* g) const {
   const double sigma = 0.5 * (1.0 + t), eta = 0.5 * (1.0 - t), h = std::sqrt(0.5);
   // A table: its rings about O in closed form (away from the limits).
   if (!unit_.piece.empty() && sigma > 0.0 && eta > 0.0) {
-    law_functions_from_moments(table_ring_moments(unit_, sigma / eta), sigma, unit_.load_area, g);
+    law_functions_from_moments(table_ring_moments(rings_, unit_, sigma / eta), sigma,
+                               unit_.load_area, g);
     return;
   }
   const Resultants<double> p1 = probe(1.0, 0.0, 0.0, {sigma, 0.0, eta});

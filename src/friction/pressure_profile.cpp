@@ -197,6 +197,13 @@ std::vector<double> sign_changes(const PressureProfile& profile) {
   return roots;
 }
 
+// Why a table of more than kMaxProfilePoints points is refused, and what to do instead.
+std::string too_many_points_advice() {
+  return "a tabulated profile takes at most " + std::to_string(kMaxProfilePoints) +
+         " points (its exact model and law take about 1.7 KB a point to build): resample it, "
+         "or fit smoothed_profile";
+}
+
 }  // namespace
 
 PressureProfile uniform_profile() {
@@ -223,6 +230,9 @@ PressureProfile tabulated_profile(std::vector<double> rho, std::vector<double> p
   if (rho.size() < 2)
     throw InvalidArgument("rho", "(" + std::to_string(rho.size()) + " points)",
                           "a tabulated profile needs at least 2 points");
+  if (rho.size() > kMaxProfilePoints)
+    throw InvalidArgument("rho", "(" + std::to_string(rho.size()) + " points)",
+                          too_many_points_advice());
   if (rho.size() != p.size())
     throw InvalidArgument("p", "(" + std::to_string(p.size()) + " values)",
                           "must have as many values as rho (" + std::to_string(rho.size()) + ")");
@@ -273,6 +283,9 @@ ProfileTable read_profile_table(const std::string& path) {
                      "missing column '" + missing + "' (need rho,pressure_Pa" +
                          (close.empty() ? "" : "; did you mean '" + close + "'?") + ")");
   }
+  if (table.rows.size() > kMaxProfilePoints)
+    throw ParseError(path, table.rows[kMaxProfilePoints].line, 0,
+                     std::to_string(table.rows.size()) + " rows: " + too_many_points_advice());
   ProfileTable out;
   for (const CsvRow& row : table.rows) {
     double v[2];

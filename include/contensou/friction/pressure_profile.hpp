@@ -5,6 +5,7 @@
 // (kx, ky) the dimensionless linear shift of the pressure centre (rolling, camber).
 #pragma once
 
+#include <cstddef>
 #include <string>
 #include <utility>
 #include <variant>
@@ -57,11 +58,18 @@ struct PressureProfile {
   bool keep_negative = false;  // if true (and not clipped), a negative part is used as given
 };
 
+// The most points a tabulated profile takes (tabulated_profile, read_profile_table,
+// validate(ContactPatch)): its exact model holds about 0.4 KB a knot, and building the model
+// and its exact law takes about 1.7 KB a knot (1.7 GB and some 35 s on one core at the limit);
+// a denser measurement is better resampled, or fitted (smoothed_profile). Beyond 2.7e8 knots
+// the outer rule's interval counts (int) would overflow.
+inline constexpr std::size_t kMaxProfilePoints = 1'000'000;
+
 PressureProfile uniform_profile();
 PressureProfile hertz_profile();
 PressureProfile cosine_series_profile(double w, std::vector<double> a);
-// Validates rho (strictly increasing, within [0, 1], ending at 1) and p (finite); a first
-// rho > 0 is extended flat to the centre.
+// Validates rho (strictly increasing, within [0, 1], ending at 1, 2 to kMaxProfilePoints
+// points) and p (finite); a first rho > 0 is extended flat to the centre.
 PressureProfile tabulated_profile(std::vector<double> rho, std::vector<double> p);
 
 // A least-squares Chebyshev series in t = rho^2 with `terms` terms through tabulated values
