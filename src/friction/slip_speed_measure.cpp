@@ -6,10 +6,6 @@
 #include <cmath>
 #include <numbers>
 
-#if defined(__SSE2__)
-#include <emmintrin.h>
-#endif
-
 #include "contensou/friction/adaptive_integration.hpp"
 #include "contensou/friction/quadrature.hpp"
 
@@ -98,101 +94,148 @@ struct TableRing {
   double t_min, t_max, span, root_span, p_c;
 };
 
-// Adds the nodes of piece k of the table (the cubic about knot k) on [a, b] of the ring's range
-// to `nodes`, minus the profile's value p_c at the middle of the range (half_ring_table).
+// The plain pieces of a table ring with the same number of nodes (half_ring_table), structure
+// of arrays padded to whole blocks of kLanes: each piece's v at its start (va) and half width
+// (dv), |r|^2 - t_min = base + sign v^2, its ends a, b, its knot tk and its cubic's coefficients
+// (c0 minus the profile's value p_c at the middle of the ring's range).
+constexpr int kLanes = 8;
+// The lane loops also for AVX2 + FMA and AVX-512, chosen at load time (the rest of the file keeps
+// the baseline instruction set).
+#if defined(__x86_64__) && defined(__GNUC__) && defined(__ELF__)
+#define CONTENSOU_LANE_CLONES [[gnu::target_clones("arch=x86-64-v4", "arch=x86-64-v3", "default")]]
+#else
+#define CONTENSOU_LANE_CLONES
+#endif
+struct PlainPieces {
+  enum Field { kVa, kDv, kBase, kSign, kA, kB, kKnot, kC0, kC1, kC2, kC3, kFields };
+  std::array<std::vector<double>, kFields> field;
+  std::size_t size = 0;
+  void push(const std::array<double, kFields>& v) {
+    if (field[0].size() < size + kLanes)
+      for (auto& f : field) f.resize(2 * size + 2 * kLanes);
+    for (int i = 0; i < kFields; ++i) field[i][size] = v[i];
+    ++size;
+  }
+  // Pads to whole blocks with pieces of no width (their nodes weigh 0).
+  void pad(double t_min) {
+    for (; size % kLanes != 0; ++size)
+      for (int i = 0; i < kFields; ++i)
+        field[i][size] = i == kA || i == kB || i == kKnot ? t_min : 0.0;
+  }
+};
+
+// The sums S_l = sum f lambda^l (l = 0..3) of ring_node_sums over the nodes of `pieces`, the
+// n-point rule g on each, added to S: v = va + dv (1 + x_i), |r|^2 = t_min + base + sign v^2,
+// f = 2 dv w_i (p - p_c) / sqrt(span - v^2) (the far end's square root), lambda = (|r|^2 - t_min)
+// / D. Branch-free across kLanes pieces at a time (the compiler vectorises the lanes).
+CONTENSOU_LANE_CLONES void plain_piece_sums(const PlainPieces& pieces, const GaussLegendreRule& g,
+                                            double t_min, double span, double inv_d, double S[4]) {
+  const int n = static_cast<int>(g.nodes.size());
+  const auto& F = pieces.field;
+  double acc[4][kLanes] = {};
+  for (std::size_t j = 0; j < pieces.size; j += kLanes) {
+    for (int i = 0; i < n; ++i) {
+      const double x = 1.0 + g.nodes[i], w = 2.0 * g.weights[i];
+      for (int l = 0; l < kLanes; ++l) {
+        const std::size_t q = j + l;
+        const double dv = F[PlainPieces::kDv][q], v = F[PlainPieces::kVa][q] + dv * x, v2 = v * v;
+        const double lo = F[PlainPieces::kBase][q] + F[PlainPieces::kSign][q] * v2;
+        const double far = span - v2, root = std::sqrt(far > 0.0 ? far : 1.0);
+        const double y =
+            std::min(std::max(t_min + lo, F[PlainPieces::kA][q]), F[PlainPieces::kB][q]) -
+            F[PlainPieces::kKnot][q];
+        const double p = F[PlainPieces::kC0][q] +
+                         y * (F[PlainPieces::kC1][q] +
+                              y * (F[PlainPieces::kC2][q] + y * F[PlainPieces::kC3][q]));
+        const double f = (far > 0.0 ? w : 0.0) * dv * p / root;  // 0 where far is 0
+        const double lambda = lo * inv_d, f1 = f * lambda, f2 = f1 * lambda;
+        acc[0][l] += f;
+        acc[1][l] += f1;
+        acc[2][l] += f2;
+        acc[3][l] += f2 * lambda;
+      }
+    }
+  }
+  for (int k = 0; k < 4; ++k) {
+    double sum = 0.0;
+    for (int l = 0; l < kLanes; ++l) sum += acc[k][l];
+    S[k] += sum;
+  }
+}
+
+// Piece k of the table (the cubic about knot k) on [a, b] of the ring's range (half_ring_table):
+// far from both ends of the range it goes to the plain pieces of its node count (v = sqrt(t -
+// t_min) on the lower half, sqrt(t_max - t) on the upper: dt / sqrt(t - t_min) = 2 dv, the near
+// square root gone, the far one smooth; root_a, root_b: the square roots of a and b from the near
+// end); near both, its nodes in the angle phi itself go to `nodes`: t = t_min + (t_max - t_min)
+// sin^2(phi / 2), dt / sqrt((t - t_min)(t_max - t)) = d phi, with the fine rule.
 void add_ring_piece(const ExactModel<double>& m, std::size_t k, double a, double b,
-                    const TableRing& ring, const RingRules& rules, RingNodes& nodes) {
-  // A piece far from both ends of the ring's range: v = sqrt(t - t_min) on the lower half,
-  // sqrt(t_max - t) on the upper half (dt / sqrt(t - t_min) = 2 dv: the near square root gone,
-  // the far one smooth). A piece near both: the angle phi itself, t = t_min + (t_max - t_min)
-  // sin^2(phi / 2), dt / sqrt((t - t_min)(t_max - t)) = d phi, with the fine rule.
+                    const double root_a[2], const double root_b[2], const TableRing& ring,
+                    const RingRules& rules, RingNodes& nodes, std::vector<PlainPieces>& plain) {
   const double t_min = ring.t_min, span = ring.span;
   const bool lower = (a - t_min) <= (ring.t_max - b);
   const double far = lower ? ring.t_max - b : a - t_min;
-  const bool angle = far < 4.0 * (b - a);
-  double va, vb;
-  if (angle) {  // phi at a and b: sin^2(phi / 2) = (t - t_min) / span
-    va = 2.0 * std::asin(std::sqrt(std::clamp((a - t_min) / span, 0.0, 1.0)));
-    vb = 2.0 * std::asin(std::sqrt(std::clamp((b - t_min) / span, 0.0, 1.0)));
-  } else {
-    va = lower ? std::sqrt(a - t_min) : std::sqrt(ring.t_max - b);
-    vb = lower ? std::sqrt(b - t_min) : std::sqrt(ring.t_max - a);
+  const std::array<double, 4>& c = m.piece[k];
+  const double tk = m.knot[k], c0 = c[0] - ring.p_c;
+  if (!(far < 4.0 * (b - a))) {
+    const double va = lower ? root_a[0] : root_b[1], vb = lower ? root_b[0] : root_a[1];
+    const int n = plain_piece_nodes(va, vb, ring.root_span, rules);
+    plain[n].push({va, 0.5 * (vb - va), lower ? 0.0 : span, lower ? 1.0 : -1.0, a, b, tk, c0, c[1],
+                   c[2], c[3]});
+    return;
   }
-  const GaussLegendreRule& g =
-      angle ? rules.fine : rules.gauss[plain_piece_nodes(va, vb, ring.root_span, rules)];
+  // phi at a and b: sin^2(phi / 2) = (t - t_min) / span
+  const double va = 2.0 * std::asin(std::sqrt(std::clamp((a - t_min) / span, 0.0, 1.0)));
+  const double vb = 2.0 * std::asin(std::sqrt(std::clamp((b - t_min) / span, 0.0, 1.0)));
+  const GaussLegendreRule& g = rules.fine;
   const int n = static_cast<int>(g.nodes.size());
   nodes.reserve(nodes.size + n + 4);
   double* f = nodes.f.data() + nodes.size;
   double* lo = nodes.lo.data() + nodes.size;
   double* fr = nodes.far.data() + nodes.size;
   const double dv = 0.5 * (vb - va);
-  if (angle) {
-    for (int i = 0; i < n; ++i) {  // dt / root = d phi
-      const double h = std::sin(0.5 * (va + dv * (1.0 + g.nodes[i])));
-      lo[i] = span * h * h;
-      fr[i] = 1.0;
-      f[i] = dv * g.weights[i];
-    }
-  } else {  // t = t_min + v^2 or t_max - v^2: dt / root = 2 v dv / (v sqrt(far end))
-    const double sign = lower ? 1.0 : -1.0, start = lower ? 0.0 : span;
-    for (int i = 0; i < n; ++i) {
-      const double v = va + dv * (1.0 + g.nodes[i]), v2 = v * v;
-      lo[i] = start + sign * v2;
-      fr[i] = v2 > 0.0 ? span - v2 : 0.0;  // hi on the lower half, lo on the upper
-      f[i] = 2.0 * dv * g.weights[i];
-    }
-  }
-  // Times the piece's cubic about its knot, minus p_c.
-  const std::array<double, 4>& c = m.piece[k];
-  const double tk = m.knot[k], c0 = c[0] - ring.p_c;
-  for (int i = 0; i < n; ++i) {
+  for (int i = 0; i < n; ++i) {  // dt / root = d phi, times the piece's cubic minus p_c
+    const double h = std::sin(0.5 * (va + dv * (1.0 + g.nodes[i])));
+    lo[i] = span * h * h;
+    fr[i] = 1.0;
     const double x = std::min(std::max(t_min + lo[i], a), b) - tk;
-    f[i] *= c0 + x * (c[1] + x * (c[2] + x * c[3]));
+    f[i] = dv * g.weights[i] * (c0 + x * (c[1] + x * (c[2] + x * c[3])));
   }
   nodes.size += n;
 }
 
 // The sums S_l = sum f lambda^l (l = 0..3) over the nodes, lambda = lo / D in [0, 2] (four at a
-// time), and from them the six ring weights (add_ring_point): with D = 2 eps s and span = 2 D,
-// cos(phi) = 1 - lambda, sin^2(phi) = lambda (2 - lambda), y = y0 + s lambda (y0 = eps - s), so
-// each weight is a cubic in lambda (theory.md section 2, the slip direction about r_c):
-//   c -> S0 - S1,  s sin^2 -> s (2 S1 - S2),  y c -> y0 S0 + (s - y0) S1 - s S2,
-//   s^2 sin^2 c -> s^2 (2 S1 - 3 S2 + S3),  s y sin^2 -> s (2 y0 S1 + (2 s - y0) S2 - s S3),
-//   y^2 c -> y0^2 S0 + y0 (2 s - y0) S1 + s (s - 2 y0) S2 - s^2 S3.
-SlipMoments ring_node_sums(RingNodes& nodes, double D, double eps, double s) {
+// time), added to S.
+void ring_node_sums(RingNodes& nodes, double D, double S[4]) {
   const std::size_t n = (nodes.size + 3) / 4 * 4;
   nodes.reserve(n);
   for (std::size_t i = nodes.size; i < n; ++i) nodes.f[i] = nodes.lo[i] = 0.0, nodes.far[i] = 1.0;
-  const double inv_d = 1.0 / D, y0 = eps - s;
+  const double inv_d = 1.0 / D;
   double acc[4][4] = {};
   for (std::size_t i = 0; i < n; i += 4) {
-    double f[4];
-#if defined(__SSE2__)
-    for (int l = 0; l < 4; l += 2) {  // f / sqrt(far), 0 where far is 0
-      const __m128d q = _mm_loadu_pd(nodes.far.data() + i + l);
-      const __m128d keep = _mm_cmpgt_pd(q, _mm_setzero_pd());  // no 0 / 0 on the others
-      const __m128d root =
-          _mm_sqrt_pd(_mm_or_pd(_mm_and_pd(keep, q), _mm_andnot_pd(keep, _mm_set1_pd(1.0))));
-      const __m128d r = _mm_div_pd(_mm_loadu_pd(nodes.f.data() + i + l), root);
-      _mm_storeu_pd(f + l, _mm_and_pd(r, keep));
-    }
-#else
     for (int l = 0; l < 4; ++l) {
       const double q = nodes.far[i + l];
-      f[l] = q > 0.0 ? nodes.f[i + l] / std::sqrt(q) : 0.0;
-    }
-#endif
-    for (int l = 0; l < 4; ++l) {
+      const double f = (q > 0.0 ? nodes.f[i + l] : 0.0) / std::sqrt(q > 0.0 ? q : 1.0);
       const double lambda = nodes.lo[i + l] * inv_d;
-      const double f1 = f[l] * lambda, f2 = f1 * lambda;
-      acc[0][l] += f[l];
+      const double f1 = f * lambda, f2 = f1 * lambda;
+      acc[0][l] += f;
       acc[1][l] += f1;
       acc[2][l] += f2;
       acc[3][l] += f2 * lambda;
     }
   }
-  double S[4];
-  for (int k = 0; k < 4; ++k) S[k] = (acc[k][0] + acc[k][1]) + (acc[k][2] + acc[k][3]);
+  for (int k = 0; k < 4; ++k) S[k] += (acc[k][0] + acc[k][1]) + (acc[k][2] + acc[k][3]);
+}
+
+// The six ring weights (add_ring_point) from the sums S_l = sum f lambda^l: with D = 2 eps s and
+// span = 2 D, cos(phi) = 1 - lambda, sin^2(phi) = lambda (2 - lambda), y = y0 + s lambda (y0 =
+// eps - s), so each weight is a cubic in lambda (theory.md section 2, the slip direction about
+// r_c):
+//   c -> S0 - S1,  s sin^2 -> s (2 S1 - S2),  y c -> y0 S0 + (s - y0) S1 - s S2,
+//   s^2 sin^2 c -> s^2 (2 S1 - 3 S2 + S3),  s y sin^2 -> s (2 y0 S1 + (2 s - y0) S2 - s S3),
+//   y^2 c -> y0^2 S0 + y0 (2 s - y0) S1 + s (s - 2 y0) S2 - s^2 S3.
+SlipMoments ring_moments(const double S[4], double eps, double s) {
+  const double y0 = eps - s;
   return {S[0] - S[1],
           s * (2.0 * S[1] - S[2]),
           y0 * S[0] + (s - y0) * S[1] - s * S[2],
@@ -225,22 +268,36 @@ SlipMoments half_ring_table(const ExactModel<double>& m, double s, double eps,
           : 2.0 * std::asin(std::sqrt(std::clamp((1.0 - ring.t_min) / ring.span, 0.0, 1.0)));
   const SlipMoments closed = constant_ring(ring.p_c, s, eps, phi_end);
   thread_local RingNodes nodes;
+  thread_local std::vector<PlainPieces> plain;
   nodes.size = 0;
+  plain.resize(rules.gauss.size());
+  for (PlainPieces& p : plain) p.size = 0;
   // The pieces between t_min, the knots inside the range and t_end; the first is the table's
-  // piece holding t_min.
+  // piece holding t_min. The square roots of each break from both ends of the range, once.
   std::size_t k =
       std::min<std::size_t>(std::max<std::ptrdiff_t>(first - m.knot.begin(), 1), m.piece.size()) -
       1;
   double a = ring.t_min;
+  double root_a[2] = {0.0, std::sqrt(std::max(0.0, ring.span))};
   for (auto it = first;; ++it) {
     const bool last = it == m.knot.end() || !(*it < t_end);
     const double b = last ? t_end : *it;
-    if (b > a) add_ring_piece(m, k, a, b, ring, rules, nodes);
+    const double root_b[2] = {std::sqrt(b - ring.t_min), std::sqrt(std::max(0.0, ring.t_max - b))};
+    if (b > a) add_ring_piece(m, k, a, b, root_a, root_b, ring, rules, nodes, plain);
     if (last) break;
     a = b;
+    root_a[0] = root_b[0];
+    root_a[1] = root_b[1];
     k = std::min(k + 1, m.piece.size() - 1);
   }
-  SlipMoments out = ring_node_sums(nodes, D, eps, s);
+  double S[4] = {};
+  for (std::size_t n = 0; n < plain.size(); ++n) {
+    if (plain[n].size == 0) continue;
+    plain[n].pad(ring.t_min);
+    plain_piece_sums(plain[n], rules.gauss[n], ring.t_min, ring.span, 1.0 / D, S);
+  }
+  ring_node_sums(nodes, D, S);
+  SlipMoments out = ring_moments(S, eps, s);
   for (int i = 0; i < 6; ++i) out[i] += closed[i];
   return out;
 }
