@@ -1,6 +1,6 @@
 // Time to fit the fractional law to a 120-value set (40 points x Fx, Fy, Mz), against the
 // same fit with the noise scales given (a single Ceres solve, no scale iteration) as the
-// in-process baseline.
+// in-process baseline; the closed loop on small sets and on 10^3 and 10^4 rows.
 #include <benchmark/benchmark.h>
 
 #include <algorithm>
@@ -117,6 +117,25 @@ void BM_ClosedLoopTableWithSpeedLaw(benchmark::State& state, bool speed_inside) 
   }
 }
 
+// The closed loop on large data (issue 22): what `contensou-identify simulate --points N` writes
+// (the seed tire from the exact integrals, kx = 0.14, 1 % additive noise, psi = 0.01 ... 100),
+// fitted as `contensou-identify DATA --radius 0.087` does (no profile: the parametric profile
+// is identified with the shape). Counters: rows, fits run, effects accepted. Timed once.
+void BM_ClosedLoopRows(benchmark::State& state) {
+  DiagramSpec s;
+  s.radius_m = 0.087;
+  s.points = static_cast<int>(state.range(0));
+  s.noise_level = 0.01;
+  const MeasuredData d = simulate_diagrams(make_exact_model(rolling_seed_tire()), s);
+  IdentificationOptions o;
+  o.radius_m = 0.087;
+  ClosedLoopReport r;
+  for (auto _ : state) r = close_the_loop(d, o);
+  state.counters["rows"] = static_cast<double>(d.points.size());
+  state.counters["fits"] = static_cast<double>(r.steps.size() + 1);
+  state.counters["effects"] = static_cast<double>(r.accepted_effects.size());
+}
+
 BENCHMARK_CAPTURE(BM_Fit, estimated_noise_scales, false)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_ClosedLoop)->Unit(benchmark::kMillisecond);
 BENCHMARK_CAPTURE(BM_ClosedLoopTableWithSpeedLaw, local_speed, true)
@@ -126,4 +145,5 @@ BENCHMARK_CAPTURE(BM_ClosedLoopTableWithSpeedLaw, effective_speed, false)
     ->Unit(benchmark::kSecond)
     ->Iterations(1);
 BENCHMARK_CAPTURE(BM_Fit, given_noise_scales_baseline, true)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_ClosedLoopRows)->Arg(1000)->Arg(10000)->Unit(benchmark::kSecond)->Iterations(1);
 BENCHMARK_MAIN();

@@ -4,6 +4,7 @@
 #include <glog/logging.h>
 
 #include <CLI/CLI.hpp>
+#include <chrono>
 #include <cstdio>
 #include <filesystem>
 #include <optional>
@@ -11,6 +12,7 @@
 
 #include "contensou/contensou.hpp"
 #include "contensou/identification/fit.hpp"
+#include "contensou/identification/identify.hpp"
 #include "contensou/identification/report.hpp"
 #include "contensou/identification/report_text.hpp"
 #include "contensou/identification/simulation.hpp"
@@ -49,13 +51,12 @@ struct FitArgs {
   std::optional<double> load, pressure;
   std::vector<std::string> fixes;
   std::vector<double> noise_scale;
-  bool no_loop = false, speed_inside = true, profile_clip = false;
+  bool no_loop = false, speed_inside = true, profile_clip = false, progress = false;
   int failing_point = -1, smoothing = 0;
 };
 
-// The library's options from the command line; the profile chosen and where N came from.
-IdentificationOptions identification_options(const FitArgs& a, ProfileChoice& profile,
-                                             std::string& load_source) {
+// The library's options from the command line, and the profile chosen.
+IdentificationOptions identification_options(const FitArgs& a, ProfileChoice& profile) {
   IdentificationOptions o;
   o.radius_m = a.radius;
   require_positive("--radius", a.radius);
@@ -74,7 +75,6 @@ IdentificationOptions identification_options(const FitArgs& a, ProfileChoice& pr
       patch.reference_pressure_pa = *ps;
       patch.profile = profile.profile;
       o.normal_load_n = normal_load(patch);
-      load_source = "from the profile's pressure";
     }
   }
   for (const std::string& f : a.fixes) o.fixed.insert(parse_fix(f));
@@ -92,52 +92,34 @@ IdentificationOptions identification_options(const FitArgs& a, ProfileChoice& pr
   return o;
 }
 
-int run_fit_only(const FitArgs& a, const MeasuredData& data, const IdentificationOptions& o,
-                 const app::RunInfo& info) {
-  const FitReport fit = fit_fractional_law(data, o);
-  std::printf("%s %s: fractional law (seed eqs. 5-7)\n%s", kName, kVersion,
-              fit_report_text(info, fit).c_str());
-  if (!a.plots_dir.empty() && app::write_plots(a.plots_dir, data, fit, a.radius))
-    std::printf("pictures: %s/fit_*.png\n", a.plots_dir.c_str());
-  if (!a.json_path.empty()) {
-    write_file_atomically(a.json_path, fit_report_json(info, fit) + "\n");
-    std::printf("report: %s\n", a.json_path.c_str());
-  }
-  return 0;
-}
-
-ClosedLoopReport close_the_loop_with_progress(const MeasuredData& data,
-                                              const IdentificationOptions& o,
-                                              ClosedLoopOptions lo) {
-  // Progress for people: one line, rewritten in place, on a terminal; in scripts and pipes
-  // stderr keeps errors only.
-  bool progress_shown = false;
-  if (isatty(fileno(stderr)))
-    lo.progress = [&progress_shown](const std::string& line) {
-      std::fprintf(stderr, "\r\033[K[closed loop] %s", line.c_str());
-      std::fflush(stderr);
-      progress_shown = true;
-    };
-  auto end_progress = [&progress_shown] {
-    if (progress_shown) std::fprintf(stderr, "\r\033[K");
-    progress_shown = false;
+// Progress for people (on a terminal, or with --progress): a line per stage of the loop on
+// stderr, each with the time since the loop began; in scripts and pipes stderr keeps errors
+// only.
+void show_progress(ClosedLoopOptions& lo, bool asked) {
+  if (!asked && !isatty(fileno(stderr))) return;
+  const auto start = std::chrono::steady_clock::now();
+  lo.progress = [start](const std::string& line) {
+    const double s =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    std::fprintf(stderr, "[closed loop %7.1f s] %s\n", s, line.c_str());
+    std::fflush(stderr);
   };
-  try {
-    ClosedLoopReport loop = close_the_loop(data, o, lo);
-    end_progress();
-    return loop;
-  } catch (...) {
-    end_progress();
-    throw;
-  }
 }
 
-int run_loop(const FitArgs& a, const MeasuredData& data, const IdentificationOptions& o,
-             const app::RunInfo& info) {
-  ClosedLoopOptions lo;
-  lo.alpha = a.alpha;
-  lo.speed_inside_integrals = a.speed_inside;
-  const ClosedLoopReport loop = close_the_loop_with_progress(data, o, lo);
+int print_and_write(const FitArgs& a, const Identification& run, const app::RunInfo& info) {
+  const MeasuredData& data = run.fitted;
+  if (!run.loop) {
+    std::printf("%s %s: fractional law (seed eqs. 5-7)\n%s", kName, kVersion,
+                fit_report_text(info, run.fit).c_str());
+    if (!a.plots_dir.empty() && app::write_plots(a.plots_dir, data, run.fit, a.radius))
+      std::printf("pictures: %s/fit_*.png\n", a.plots_dir.c_str());
+    if (!a.json_path.empty()) {
+      write_file_atomically(a.json_path, fit_report_json(info, run.fit) + "\n");
+      std::printf("report: %s\n", a.json_path.c_str());
+    }
+    return 0;
+  }
+  const ClosedLoopReport& loop = *run.loop;
   std::printf("%s %s\n%s", kName, kVersion, loop_report_text(info, loop).c_str());
   if (!a.plots_dir.empty()) {
     const bool p = app::write_plots(a.plots_dir, data, loop.final_fit, a.radius);
@@ -156,16 +138,26 @@ int run_loop(const FitArgs& a, const MeasuredData& data, const IdentificationOpt
 int run_fit(const FitArgs& a) {
   ProfileChoice profile;
   std::string load_source;
-  IdentificationOptions o = identification_options(a, profile, load_source);
+  IdentificationOptions o = identification_options(a, profile);
   const MeasuredData data = read_measured_csv(a.data_path, parse_column_renames(a.columns));
   if (!o.normal_load_n)
     if (const std::optional<LoadFromData> l = normal_load_from_data(data)) {
       o.normal_load_n = l->mean_n;  // f = F0 / N is then reported
       load_source = l->description();
     }
+  IdentifyOptions io;
+  io.fit = o;
+  if (!a.no_loop) {
+    io.loop = ClosedLoopOptions{};
+    io.loop->alpha = a.alpha;
+    io.loop->speed_inside_integrals = a.speed_inside;
+    show_progress(*io.loop, a.progress);
+  }
+  const Identification run = identify(data, io);
   app::RunInfo info = describe_run(a.data_path, data, a.radius, o.normal_load_n, profile);
   info.normal_load_source = load_source;
-  return a.no_loop ? run_fit_only(a, data, o, info) : run_loop(a, data, o, info);
+  info.outliers = run.outliers;
+  return print_and_write(a, run, info);
 }
 
 struct SimulateArgs {
@@ -295,6 +287,9 @@ int main(int argc, char** argv) {
       ->check(CLI::Range(1, 64));
   app.add_flag("--profile-clip", a.profile_clip,
                "clip a --profile CSV that dips below zero at zero (otherwise refused)");
+  app.add_flag("--progress", a.progress,
+               "closed loop: a line per stage on stderr with the time so far (the default on "
+               "a terminal)");
   app.add_flag("--verbose", verbose, "show the solver's own log (Ceres, glog) on stderr");
   // Testing only (hidden): the residual of this data point fails to evaluate.
   app.add_option("--test-failing-point", a.failing_point)->group("");

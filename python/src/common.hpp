@@ -5,14 +5,22 @@
 #include <nanobind/ndarray.h>
 
 #include <algorithm>
+#include <atomic>
+#include <chrono>
+#include <condition_variable>
 #include <cstddef>
 #include <exception>
 #include <initializer_list>
+#include <mutex>
+#include <optional>
 #include <stdexcept>
 #include <string>
 #include <thread>
+#include <type_traits>
 #include <utility>
 #include <vector>
+
+#include "contensou/friction/error.hpp"
 
 namespace contensou::python {
 
@@ -91,6 +99,67 @@ void parallel_for(std::size_t n, unsigned threads, Body&& body) {
   for (std::thread& th : pool) th.join();
   for (const std::exception_ptr& e : errors)
     if (e) std::rethrow_exception(e);
+}
+
+// Runs body(stop) -- a long C++ call -- with the GIL released on a helper thread, while the
+// calling thread polls Python's signal handlers every 50 ms (PyErr_CheckSignals, with the GIL,
+// where they run: Ctrl-C). When a handler raises (KeyboardInterrupt), `stop` starts returning
+// true (an atomic flag: cheap and safe from any of the library's threads), the library stops
+// at its next poll with Interrupted, and the handler's exception is raised here, whatever the
+// body did meanwhile. Call with the GIL held; returns what body returns.
+template <class Body>
+auto run_interruptible(Body&& body) -> decltype(body(StopRequest{})) {
+  using Result = decltype(body(StopRequest{}));
+  std::atomic<bool> stop_flag{false};
+  const StopRequest stop = [&stop_flag] { return stop_flag.load(std::memory_order_relaxed); };
+  std::optional<std::conditional_t<std::is_void_v<Result>, bool, Result>> result;
+  std::exception_ptr error;
+  bool done = false, raised = false;
+  std::mutex lock;
+  std::condition_variable finished;
+  {
+    nb::gil_scoped_release release;
+    std::thread worker([&] {
+      try {
+        if constexpr (std::is_void_v<Result>) {
+          body(stop);
+          result = true;
+        } else {
+          result.emplace(body(stop));
+        }
+      } catch (...) {
+        error = std::current_exception();
+      }
+      const std::lock_guard<std::mutex> guard(lock);
+      done = true;
+      finished.notify_one();
+    });
+    std::unique_lock<std::mutex> wait(lock);
+    while (!finished.wait_for(wait, std::chrono::milliseconds(50), [&] { return done; })) {
+      if (raised) continue;
+      wait.unlock();
+      {
+        nb::gil_scoped_acquire acquire;
+        raised = PyErr_CheckSignals() != 0;  // the handler's exception stays set
+      }
+      if (raised) stop_flag = true;
+      wait.lock();
+    }
+    wait.unlock();
+    worker.join();
+  }
+  if (raised) throw nb::python_error();
+  if (error) std::rethrow_exception(error);
+  if constexpr (!std::is_void_v<Result>) return std::move(*result);
+}
+
+// run_interruptible when `long_call`, else body() inline with the GIL released and no stop
+// request (a helper thread costs tens of microseconds: too much for a short loop).
+template <class Body>
+auto run_interruptible_if(bool long_call, Body&& body) -> decltype(body(StopRequest{})) {
+  if (long_call) return run_interruptible(std::forward<Body>(body));
+  nb::gil_scoped_release release;
+  return body(StopRequest{});
 }
 
 // Names the point of a bad input: "<the library's message> (point i of the flattened input)".

@@ -30,28 +30,31 @@ void exact_law_loop(const ExactLaw& law, InArray vx, InArray vy, InArray omega, 
   double* F = force.data();
   double* J = with_jacobian ? jacobian.data() : nullptr;
   const Strided x(vx), y(vy), w(omega);
-  nb::gil_scoped_release release;
-  parallel_for(n, threads, [&](std::size_t begin, std::size_t end) {
-    for (std::size_t i = begin; i < end; ++i) {
-      const Kinematics<double> k{x[i], y[i], w[i]};
-      try {
-        Resultants<double> r;
-        if (J) {
-          const ExactLawWithJacobian rj = exact_law_resultants_with_jacobian(law, k);
-          r = rj.resultants;
-          for (int a = 0; a < 3; ++a)
-            for (int b = 0; b < 3; ++b)
-              J[9 * i + 3 * static_cast<std::size_t>(a) + b] = rj.jacobian(a, b);
-        } else {
-          r = exact_law_resultants(law, k);
+  // Tens of nanoseconds a point: Ctrl-C is polled from a million points on, every 4096.
+  run_interruptible_if(n >= (1u << 20), [&](const StopRequest& stop) {
+    parallel_for(n, threads, [&](std::size_t begin, std::size_t end) {
+      for (std::size_t i = begin; i < end; ++i) {
+        if (i % 4096 == 0) throw_if_stopped(stop);
+        const Kinematics<double> k{x[i], y[i], w[i]};
+        try {
+          Resultants<double> r;
+          if (J) {
+            const ExactLawWithJacobian rj = exact_law_resultants_with_jacobian(law, k);
+            r = rj.resultants;
+            for (int a = 0; a < 3; ++a)
+              for (int b = 0; b < 3; ++b)
+                J[9 * i + 3 * static_cast<std::size_t>(a) + b] = rj.jacobian(a, b);
+          } else {
+            r = exact_law_resultants(law, k);
+          }
+          F[3 * i] = r.Fx;
+          F[3 * i + 1] = r.Fy;
+          F[3 * i + 2] = r.Mz;
+        } catch (const std::invalid_argument& e) {
+          rethrow_at_point(e, i);
         }
-        F[3 * i] = r.Fx;
-        F[3 * i + 1] = r.Fy;
-        F[3 * i + 2] = r.Mz;
-      } catch (const std::invalid_argument& e) {
-        rethrow_at_point(e, i);
       }
-    }
+    });
   });
 }
 
@@ -115,11 +118,11 @@ void bind_exact_law(nb::module_& m) {
             ExactLawOptions options;
             options.tolerance = tolerance;
             options.threads = threads;
-            ExactLaw law;
-            {
-              nb::gil_scoped_release release;
-              law = make_exact_law(model, options);
-            }
+            ExactLaw law = run_interruptible([&](const StopRequest& stop) {
+              ExactLawOptions o = options;
+              o.stop = stop;
+              return make_exact_law(model, o);
+            });
             new (self) ExactLaw(std::move(law));
           },
           "model"_a, "tolerance"_a, "threads"_a)

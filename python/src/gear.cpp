@@ -38,11 +38,11 @@ nb::dict simulate(const std::string& text, const std::string& model, bool record
   const ContactModel cm = contact_model_from_string(model);
   SolverOptions solver = c.solver;
   solver.record = record;
-  LandingRun r;
-  {
-    nb::gil_scoped_release release;
-    r = simulate_landing(make_gear_model(c.gear, cm), solver, c.criterion);
-  }
+  const LandingRun r = run_interruptible([&](const StopRequest& stop) {
+    SolverOptions with_stop = solver;
+    with_stop.stop = stop;
+    return simulate_landing(make_gear_model(c.gear, cm), with_stop, c.criterion);
+  });
   const std::size_t n = r.samples.size(), w = app::history_columns().size();
   std::vector<double> h;
   h.reserve(n * w);
@@ -88,23 +88,29 @@ Cell map_cell(const std::string& text, const std::string& model, const Axis& xa,
                                 std::to_string(y.points) + " map");
   const MapAxis x1{x.parameter, x.value(i), x.value(i), 1};
   const MapAxis y1{y.parameter, y.value(j), y.value(j), 1};
-  nb::gil_scoped_release release;
-  const GearModel base = make_gear_model(c.gear, contact_model_from_string(model));
-  const StabilityMap m = stability_map(base, x1, y1, c.solver, c.criterion, 1);
-  return cell_of(m.cells.at(0));
+  return run_interruptible([&](const StopRequest& stop) {
+    const GearModel base = make_gear_model(c.gear, contact_model_from_string(model));
+    SolverOptions solver = c.solver;
+    solver.stop = stop;
+    const StabilityMap m = stability_map(base, x1, y1, solver, c.criterion, 1);
+    return cell_of(m.cells.at(0));
+  });
 }
 
 // The whole map by the C++ stability_map on `threads` threads (row-major cells).
 std::vector<Cell> map_cpp(const std::string& text, const std::string& model, const Axis& xa,
                           const Axis& ya, unsigned threads) {
   const app::ShimmyConfig c = parse(text);
-  nb::gil_scoped_release release;
-  const GearModel base = make_gear_model(c.gear, contact_model_from_string(model));
-  const StabilityMap m =
-      stability_map(base, axis_of(xa), axis_of(ya), c.solver, c.criterion, threads);
-  std::vector<Cell> out;
-  for (const MapCell& cell : m.cells) out.push_back(cell_of(cell));
-  return out;
+  return run_interruptible([&](const StopRequest& stop) {
+    const GearModel base = make_gear_model(c.gear, contact_model_from_string(model));
+    SolverOptions solver = c.solver;
+    solver.stop = stop;
+    const StabilityMap m =
+        stability_map(base, axis_of(xa), axis_of(ya), solver, c.criterion, threads);
+    std::vector<Cell> out;
+    for (const MapCell& cell : m.cells) out.push_back(cell_of(cell));
+    return out;
+  });
 }
 
 }  // namespace

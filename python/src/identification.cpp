@@ -195,11 +195,11 @@ nb::dict identify(std::optional<std::string> path, std::string source, std::opti
     return to_numpy(std::move(k), {n, 3});
   }();
   if (!loop_on) {
-    FitReport fit;
-    {
-      nb::gil_scoped_release release;
-      fit = fit_fractional_law(data, o);
-    }
+    const FitReport fit = run_interruptible([&](const StopRequest& stop) {
+      IdentificationOptions with_stop = o;
+      with_stop.stop = stop;
+      return fit_fractional_law(data, with_stop);
+    });
     out["json"] = fit_report_json(info, fit);
     out["base_prediction"] = to_numpy(forces_of(fit.prediction), {n, 3});
     out["final_prediction"] = to_numpy(forces_of(fit.prediction), {n, 3});
@@ -209,11 +209,11 @@ nb::dict identify(std::optional<std::string> path, std::string source, std::opti
   ClosedLoopOptions lo;
   lo.alpha = alpha;
   lo.speed_inside_integrals = speed_inside;
-  ClosedLoopReport loop;
-  {
-    nb::gil_scoped_release release;
-    loop = close_the_loop(data, o, lo);
-  }
+  const ClosedLoopReport loop = run_interruptible([&](const StopRequest& stop) {
+    IdentificationOptions with_stop = o;
+    with_stop.stop = stop;
+    return close_the_loop(data, with_stop, lo);
+  });
   out["json"] = loop_report_json(info, loop);
   out["base_prediction"] = to_numpy(forces_of(loop.base.prediction), {n, 3});
   out["final_prediction"] = to_numpy(forces_of(loop.final_fit.prediction), {n, 3});

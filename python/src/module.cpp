@@ -21,6 +21,10 @@ NB_MODULE(_core, m) {
       PyErr_SetString(PyExc_ValueError, e.what());
     } catch (const contensou::InvalidArgument& e) {
       PyErr_SetString(PyExc_ValueError, e.what());
+    } catch (const contensou::Interrupted&) {
+      // A call stopped by Ctrl-C raises the signal handler's exception itself
+      // (run_interruptible); a stop from anywhere else is a KeyboardInterrupt too.
+      if (!PyErr_Occurred()) PyErr_SetNone(PyExc_KeyboardInterrupt);
     }
   });
   contensou::python::bind_friction(m);

@@ -202,7 +202,8 @@ double store_falling_blocks(const PiecewiseChebyshev& built, int J, double negli
 }
 
 FallingBuild build_falling(const ExactModel<double>& model, double delta, double tolerance,
-                           const PiecewiseChebyshevOptions& base, unsigned threads) {
+                           const PiecewiseChebyshevOptions& base, unsigned threads,
+                           const StopRequest& stop) {
   constexpr int NZ = kSlipDegreeZ, M = kLawFunctions * (NZ + 1);
   const ExactModel<double> unit = detail::unit_model(model);
   SlipSpeedMeasureOptions measure;
@@ -226,6 +227,7 @@ FallingBuild build_falling(const ExactModel<double>& model, double delta, double
   auto sample = [&](const std::vector<double>& ts, double* values) {
     std::vector<double> all(ts.size() * per_t);
     detail::parallel_for(ts.size(), threads, [&](std::size_t i) {
+      throw_if_stopped(stop);
       detail::falling_functions(unit, delta, measure, ts[i], zs, all.data() + i * per_t);
     });
     for (std::size_t i = 0; i < ts.size(); ++i) {
@@ -288,7 +290,8 @@ void add_falling_table(const ExactModel<double>& model, const ExactLawOptions& o
       std::clamp(left > 0.0 ? left / (fall * resultant_error_bound(err, model.kappa, k))
                             : 0.5 * per_function * fs / fall,
                  10.0 * kNoiseFloor, 1e-3);
-  const FallingBuild fb = build_falling(model, f.exponent, budget, of, options.threads);
+  const FallingBuild fb =
+      build_falling(model, f.exponent, budget, of, options.threads, options.stop);
   law.falling = fb.table;
   std::fill(err, err + kLawFunctions, fb.achieved);
   law.achieved =
@@ -340,8 +343,10 @@ ExactLaw make_exact_law(const ExactModel<double>& model, const ExactLawOptions& 
   const PiecewiseChebyshevBuild b = build_piecewise_chebyshev_batch(
       kLawFunctions,
       [&](const std::vector<double>& ts, double* g) {
-        detail::parallel_for(ts.size(), options.threads,
-                             [&](std::size_t i) { sampler(ts[i], g + i * kLawFunctions); });
+        detail::parallel_for(ts.size(), options.threads, [&](std::size_t i) {
+          throw_if_stopped(options.stop);
+          sampler(ts[i], g + i * kLawFunctions);
+        });
       },
       o);
   law.table = b.table;

@@ -322,6 +322,7 @@ LandingRun simulate_landing(const GearModel& model, const SolverOptions& options
       if (++steps_since_output > options.max_steps)
         check_step(CV_TOO_MUCH_WORK, "CVode (solver.max_steps between outputs)", reached,
                    model.config);
+      throw_if_stopped(options.stop);
       double returned = reached;
       const int flag = CVode(cv.mem, tout, cv.y, &returned, CV_ONE_STEP);
       check_step(flag, "CVode", returned, model.config);

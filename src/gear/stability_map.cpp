@@ -1,7 +1,9 @@
 #include "contensou/gear/stability_map.hpp"
 
+#include <atomic>
 #include <cmath>
 #include <exception>
+#include <mutex>
 #include <utility>
 
 #include "contensou/friction/error.hpp"
@@ -24,7 +26,13 @@ StabilityMap evaluate_map(const GearModel& base, const MapAxis& x, const MapAxis
   StabilityMap map{x, y, base.contact, false, StabilityPhase::braked_slide, {}};
   const int total = x.points * y.points;
   map.cells.resize(static_cast<std::size_t>(total));
+  // A cell stopped by the caller (Interrupted) is not an error of that cell: the map stops,
+  // no further cell starts, and the interruption is rethrown here.
+  std::atomic<bool> interrupted{false};
+  std::exception_ptr interruption;
+  std::mutex lock;
   detail::run_cells_in_parallel(total, threads, progress, [&](int k) {
+    if (interrupted.load()) return;
     MapCell& cell = map.cells[static_cast<std::size_t>(k)];
     cell.x = x.value(k % x.points);
     cell.y = y.value(k / x.points);
@@ -34,10 +42,15 @@ StabilityMap evaluate_map(const GearModel& base, const MapAxis& x, const MapAxis
     try {
       validate(model.config);
       cell_fn(model, cell);
+    } catch (const Interrupted&) {
+      const std::lock_guard<std::mutex> guard(lock);
+      if (!interruption) interruption = std::current_exception();
+      interrupted = true;
     } catch (const std::exception& e) {
       cell.error = e.what();
     }
   });
+  if (interruption) std::rethrow_exception(interruption);
   return map;
 }
 

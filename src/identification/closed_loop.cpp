@@ -205,7 +205,16 @@ void set_speed_inside(ModelSpec& s, const ClosedLoopOptions& loop) {
                      (s.free[kSpeedDrop] || s.value[kSpeedDrop] != 0.0);
 }
 
+// Builds the exact laws a spec evaluates, if not yet built, here rather than inside the solver's
+// first evaluation, so that the caller's stop request reaches the build (seconds for the
+// slip-speed table).
+void build_laws(const ModelSpec& s, const StopRequest& stop) {
+  throw_if_stopped(stop);
+  if (s.uses_exact() && s.exact_laws) s.exact_laws->laws(s.speed_in_exact, stop);
+}
+
 LoopState fit_state(const MeasuredData& data, ModelSpec spec, const NoiseSettings& noise) {
+  build_laws(spec, noise.stop);
   LoopState st;
   st.fit = fit_model(data, spec, noise, &st.theta);
   spec.value = st.theta;
@@ -218,11 +227,13 @@ LoopState fit_state(const MeasuredData& data, ModelSpec spec, const NoiseSetting
 // scored at each w_s of a scan (Bonferroni over the scan); *best_speed_ref gets the best w_s.
 std::vector<CandidateScore> score_candidates(const MeasuredData& data, const LoopState& st,
                                              const std::vector<Candidate>& cands,
-                                             NoiseModel noise_model, const ClosedLoopOptions& loop,
-                                             double* best_speed_ref,
+                                             const NoiseSettings& noise,
+                                             const ClosedLoopOptions& loop, double* best_speed_ref,
                                              std::vector<Eigen::VectorXd>* directions) {
   ModelSpec scoring = st.spec;
   if (!st.spec.uses_exact()) scoring.free[kShapeBlend] = true;
+  const NoiseModel noise_model = noise.model;
+  build_laws(scoring, noise.stop);
   Eigen::VectorXd r;
   Eigen::MatrixXd J;
   weighted_jacobian(data, scoring, st.theta, st.fit.noise_scale, noise_model, &r, &J);
@@ -236,6 +247,7 @@ std::vector<CandidateScore> score_candidates(const MeasuredData& data, const Loo
       sp.speed_in_exact = loop.speed_inside_integrals && st.spec.uses_exact();
       double best = 0.0;
       for (double w : grid) {
+        build_laws(sp, noise.stop);
         std::array<double, K> th = st.theta;
         th[kSpeedRef] = w;
         Eigen::VectorXd rs;
@@ -386,6 +398,7 @@ ClosedLoopReport close_the_loop(const MeasuredData& data, const IdentificationOp
   say(loop, "fitting the base law");
   LoopState st = fit_state(data, base_spec_for(data, options), noise);
   report.base = st.fit;
+  say(loop, "base law fitted: BIC " + std::to_string(st.fit.bic));
   for (int step = 1; step <= loop.max_steps; ++step) {
     const std::vector<Candidate> cands = catalogue(data, st.spec);
     if (cands.empty()) break;
@@ -393,7 +406,7 @@ ClosedLoopReport close_the_loop(const MeasuredData& data, const IdentificationOp
     double speed_ref = 0.0;
     std::vector<Eigen::VectorXd> directions;
     const std::vector<CandidateScore> scores =
-        score_candidates(data, st, cands, noise.model, loop, &speed_ref, &directions);
+        score_candidates(data, st, cands, noise, loop, &speed_ref, &directions);
     std::vector<std::size_t> order(cands.size());
     for (std::size_t i = 0; i < order.size(); ++i) order[i] = i;
     std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) {
@@ -424,7 +437,10 @@ ClosedLoopReport close_the_loop(const MeasuredData& data, const IdentificationOp
       }
       say(loop, step_label(step) + "fitting " + label(c));
       LoopState ext = fit_state(data, ext_spec, noise);
+      throw_if_stopped(noise.stop);
       LoopStep trial = test_extension(data, st, ext, c, threshold, noise.model, loop);
+      say(loop, step_label(step) + label(c) + " fitted: BIC " + std::to_string(trial.bic_before) +
+                    " -> " + std::to_string(trial.bic_after));
       trial.scores = sorted;
       trials.push_back({order[rank], std::move(ext), std::move(trial)});
     }

@@ -11,6 +11,7 @@
 #include <optional>
 #include <stdexcept>
 #include <string>
+#include <thread>
 
 #include "contensou/friction/error.hpp"
 #include "contensou/identification/effect_model.hpp"
@@ -52,6 +53,19 @@ struct PointResidual {
     return true;
   }
 };
+
+// Threads of Ceres' evaluations of the residuals and the Jacobian (the bulk of a fit's time on
+// large data): one per core.
+int evaluation_threads() {
+  return static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
+}
+
+// Ceres' evaluation of a whole problem, on evaluation_threads().
+ceres::Problem::EvaluateOptions evaluate_options() {
+  ceres::Problem::EvaluateOptions o;
+  o.num_threads = evaluation_threads();
+  return o;
+}
 
 // Derivatives in passes of 8 parameters (ceres::Jet<double, 8>).
 using PointCost = ceres::DynamicAutoDiffCostFunction<PointResidual, 8>;
@@ -244,6 +258,7 @@ NoiseSettings noise_settings_for(const IdentificationOptions& o) {
   n.loss_scale = o.loss_scale;
   n.iterations = o.noise_iterations;
   n.failing_point = o.failing_point;
+  n.stop = o.stop;
   return n;
 }
 
@@ -463,6 +478,18 @@ std::string failing_row(ceres::Problem& problem, const FitSetup& s) {
   return "";
 }
 
+// Ends a solve (SOLVER_ABORT) after the iteration in which the caller's stop request fired.
+class StopCallback : public ceres::IterationCallback {
+ public:
+  explicit StopCallback(const StopRequest& stop) : stop_(stop) {}
+  ceres::CallbackReturnType operator()(const ceres::IterationSummary&) override {
+    return stop_ && stop_() ? ceres::SOLVER_ABORT : ceres::SOLVER_CONTINUE;
+  }
+
+ private:
+  const StopRequest& stop_;
+};
+
 // Build the problem, solve, estimate the noise scales; repeated (warm-started) until the
 // scales settle, once when they are given and additive.
 Solution solve(const FitSetup& s) {
@@ -502,7 +529,12 @@ Solution solve(const FitSetup& s) {
     opt.gradient_tolerance = 1e-12;
     opt.parameter_tolerance = 1e-10;
     opt.logging_type = ceres::SILENT;
+    opt.num_threads = evaluation_threads();
+    StopCallback stop_callback(s.noise.stop);
+    if (s.noise.stop) opt.callbacks.push_back(&stop_callback);
+    throw_if_stopped(s.noise.stop);
     ceres::Solve(opt, sol.problem.get(), &sol.summary);
+    throw_if_stopped(s.noise.stop);  // the solve was aborted (or is over): not a result
     // Never go on (covariance, report) from a failed solve.
     if (!sol.summary.IsSolutionUsable())
       throw std::runtime_error("fit of the " + fit_name(s.spec) +
@@ -524,8 +556,7 @@ Eigen::MatrixXd jacobian_at_optimum(ceres::Problem& problem, const ModelSpec& sp
   ceres::CRSMatrix crs;
   std::vector<double> residuals;
   double cost = 0.0;
-  const bool evaluated =
-      problem.Evaluate(ceres::Problem::EvaluateOptions(), &cost, &residuals, nullptr, &crs);
+  const bool evaluated = problem.Evaluate(evaluate_options(), &cost, &residuals, nullptr, &crs);
   Eigen::MatrixXd J = Eigen::MatrixXd::Zero(crs.num_rows, crs.num_cols);
   for (int r = 0; r < crs.num_rows; ++r)
     for (int k = crs.rows[r]; k < crs.rows[r + 1]; ++k) J(r, crs.cols[k]) = crs.values[k];
@@ -767,7 +798,7 @@ void weighted_jacobian(const MeasuredData& data, const ModelSpec& spec,
   ceres::CRSMatrix crs;
   std::vector<double> res;
   double cost = 0.0;
-  problem.Evaluate(ceres::Problem::EvaluateOptions(), &cost, &res, nullptr, &crs);
+  problem.Evaluate(evaluate_options(), &cost, &res, nullptr, &crs);
   *r = Eigen::Map<Eigen::VectorXd>(res.data(), static_cast<Eigen::Index>(res.size()));
   *J = Eigen::MatrixXd::Zero(crs.num_rows, K);
   for (int row = 0; row < crs.num_rows; ++row)

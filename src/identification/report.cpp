@@ -78,6 +78,17 @@ nlohmann::json fit_report(const ReportInput& info, const FitReport& base) {
                  info.normal_load_n ? nlohmann::json(*info.normal_load_n) : nlohmann::json()}};
   if (!info.normal_load_source.empty()) r["input"]["normal_load_source"] = info.normal_load_source;
   if (!info.column_notes.empty()) r["input"]["columns_converted"] = info.column_notes;
+  nlohmann::json outliers = nlohmann::json::array();
+  for (const Outlier& o : info.outliers)
+    outliers.push_back({{"line", o.line > 0 ? nlohmann::json(o.line) : nlohmann::json()},
+                        {"point", o.point},
+                        {"channel", kChannelColumns[o.channel]},
+                        {"value", o.value},
+                        {"residual_sigma", o.residual_sigma}});
+  r["input"]["outliers"] = outliers;
+  r["input"]["outlier_rule"] =
+      "residual minus the median of its four neighbours in file order, beyond 8 local robust sigma "
+      "(1.4826 median|d| / 1.14): left out of the fit";
   if (!info.profile.empty()) {
     r["input"]["profile"] = info.profile;
     if (info.profile_rms_residual_pa) {

@@ -20,6 +20,12 @@ std::string input_text(const ReportInput& info) {
   if (info.normal_load_n) s += ", N = " + fmt("%g", *info.normal_load_n) + " N";
   if (!info.normal_load_source.empty()) s += " (" + info.normal_load_source + ")";
   for (const std::string& note : info.column_notes) s += "\ncolumn: " + note;
+  if (!info.outliers.empty()) {
+    s += "\noutliers: " + std::to_string(info.outliers.size()) +
+         " values left out of the fit as gross errors (residual more than 8 robust sigma from "
+         "its neighbours'):";
+    for (const Outlier& o : info.outliers) s += "\n  " + o.describe(info.file);
+  }
   if (!info.profile.empty()) {
     s += "\nprofile: " + info.profile;
     if (info.profile_rms_residual_pa)

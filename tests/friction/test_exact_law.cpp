@@ -507,3 +507,10 @@ TEST(ExactLaw, RejectsBadInputWithClearErrors) {
     }
   }
 }
+
+// Issue 22 (Bounds): a build stopped by its caller throws Interrupted.
+TEST(ExactLaw, AStopRequestStopsTheBuild) {
+  ExactLawOptions o;
+  o.stop = [] { return true; };
+  EXPECT_THROW(make_exact_law(make_exact_model(seed_tire_patch()), o), Interrupted);
+}

@@ -5,6 +5,7 @@
 
 #include <Eigen/Eigenvalues>
 #include <algorithm>
+#include <atomic>
 #include <cmath>
 #include <numbers>
 #include <vector>
@@ -456,4 +457,22 @@ TEST(LandingGear, StringTireSpinsUpFromRestLikeTheSlidingModels) {
   bool spin_up_event = false;
   for (const LandingEvent& e : string_tire.events) spin_up_event |= e.what == "spin-up";
   EXPECT_TRUE(spin_up_event);
+}
+
+// Issue 22 (Bounds): a caller's stop request ends a landing and a map with Interrupted, which a
+// map does not file as a cell's error.
+TEST(StabilityMap, AStopRequestStopsALandingAndTheMap) {
+  const GearModel m = make_gear_model(GearConfig{}, ContactModel::coupled);
+  SolverOptions stopped;
+  stopped.stop = [] { return true; };
+  EXPECT_THROW(simulate_landing(m, stopped), Interrupted);
+  const MapAxis x{"scenario.forward_speed_mps", 40.0, 70.0, 3};
+  const MapAxis y{"structure.torsional_damping_nms_per_rad", 0.0, 300.0, 2};
+  EXPECT_THROW(stability_map(m, x, y, stopped, {}, 2), Interrupted);
+  // Fired mid-way through a landing: the integration stops within a step of it.
+  std::atomic<long> polls{0};
+  SolverOptions midway;
+  midway.stop = [&polls] { return ++polls > 200; };
+  EXPECT_THROW(simulate_landing(m, midway), Interrupted);
+  EXPECT_EQ(polls.load(), 201);
 }

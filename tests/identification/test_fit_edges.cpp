@@ -8,7 +8,9 @@
 #include "jet_checks.hpp"
 
 #include <array>
+#include <atomic>
 #include <cmath>
+#include <memory>
 #include <string>
 
 #include "contensou/identification.hpp"
@@ -184,4 +186,63 @@ TEST(IdentificationEdges, ChannelOfExactZerosKeepsEveryIntervalHonest) {
   }
   EXPECT_LT(std::abs(r.parameter("kx")->value), 1e-6);
   EXPECT_TRUE(std::isfinite(r.error));
+}
+
+// --- A caller's stop request (issue 22, Bounds): Interrupted, from the start or mid-way ----
+
+namespace {
+
+MeasuredData seed_rows(int points) {
+  DiagramSpec s;
+  s.radius_m = 0.087;
+  s.points = points;
+  s.noise_level = 0.01;
+  ContactPatch p = seed_tire_patch();
+  p.profile.kx = 0.14;
+  return simulate_diagrams(make_exact_model(p), s);
+}
+
+// A stop request that fires on its `after`-th poll and stays on; counts the polls.
+struct CountingStop {
+  std::shared_ptr<std::atomic<int>> polls = std::make_shared<std::atomic<int>>(0);
+  int after = 0;
+  bool operator()() const { return ++*polls > after; }
+};
+
+}  // namespace
+
+TEST(Interrupt, AStopAlreadyRequestedStopsTheFitAndTheLoop) {
+  const MeasuredData d = seed_rows(40);
+  IdentificationOptions o;
+  o.radius_m = 0.087;
+  o.stop = [] { return true; };
+  EXPECT_THROW(fit_fractional_law(d, o), Interrupted);
+  EXPECT_THROW(close_the_loop(d, o), Interrupted);
+  o.stop = [] { return false; };  // never fires: the fit is the fit without a request
+  IdentificationOptions plain = o;
+  plain.stop = nullptr;
+  EXPECT_DOUBLE_EQ(fit_fractional_law(d, o).bic, fit_fractional_law(d, plain).bic);
+}
+
+TEST(Interrupt, AStopRequestedDuringAFitStopsIt) {
+  const MeasuredData d = seed_rows(40);
+  IdentificationOptions o;
+  o.radius_m = 0.087;
+  CountingStop never{};
+  never.after = 1 << 30;
+  o.stop = never;
+  fit_fractional_law(d, o);  // counts the polls of a whole fit (its iterations and rounds)
+  const int polls = never.polls->load();
+  ASSERT_GT(polls, 10);
+  CountingStop midway{};
+  midway.after = polls / 2;
+  o.stop = midway;
+  EXPECT_THROW(fit_fractional_law(d, o), Interrupted);
+  EXPECT_LE(midway.polls->load(), polls / 2 + 2);  // stopped at the poll that fired, or next
+}
+
+TEST(Interrupt, AStoppedExactLawBuildLeavesNothingAndBuildsAgain) {
+  const ExactLawCache cache(0.087, std::nullopt, 1e-6);
+  EXPECT_THROW(cache.laws(false, [] { return true; }), Interrupted);
+  EXPECT_EQ(cache.laws(false).size(), 3u);
 }

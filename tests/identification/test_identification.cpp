@@ -1,5 +1,7 @@
 #include <gtest/gtest.h>
 
+#include "seed_tire_law.hpp"
+
 #include <fstream>
 #include <random>
 
@@ -29,16 +31,7 @@ FractionalLaw<double> table3_truth() {
 // A realistic law for the seed tire (R = 0.087 m) with the cross-shift constants of uniform
 // pressure, which the identification assumes without a profile.
 FractionalLaw<double> tire_truth() {
-  FractionalLaw<double> law;
-  law.F0 = 1360;
-  law.M0 = 71.8;
-  law.a = 1.03;
-  law.m = 9.28;
-  law.kx = 0.14;
-  law.radius = 0.087;
-  law.c = 4.0;
-  law.Mk = 0.375 * law.M0;
-  law.a_k = 1.0;
+  FractionalLaw<double> law = test::seed_tire_law();
   law.regularization_speed = 1e-6;
   return law;
 }

@@ -3,6 +3,8 @@
 // and the same facts in the text and the JSON.
 #include <gtest/gtest.h>
 
+#include "seed_tire_law.hpp"
+
 #include <nlohmann/json.hpp>
 #include <string>
 
@@ -14,17 +16,7 @@ using namespace contensou;
 namespace {
 
 FractionalLaw<double> truth() {
-  FractionalLaw<double> law;
-  law.F0 = 1360;
-  law.M0 = 71.8;
-  law.a = 1.03;
-  law.m = 9.28;
-  law.kx = 0.14;
-  law.radius = 0.087;
-  law.c = 4.0;
-  law.Mk = 0.375 * law.M0;
-  law.a_k = 1.0;
-  return law;
+  return test::seed_tire_law();
 }
 
 FitReport fit_of(int points) {

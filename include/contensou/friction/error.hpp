@@ -3,6 +3,7 @@
 
 #include <charconv>
 #include <cmath>
+#include <functional>
 #include <limits>
 #include <stdexcept>
 #include <string>
@@ -48,6 +49,25 @@ class ParseError : public std::runtime_error {
   int line_;
   int column_;
 };
+
+// Thrown by a long operation that stopped because its caller asked it to (its StopRequest
+// returned true: Ctrl-C in Python, say). Nothing of the operation's result is kept.
+class Interrupted : public std::runtime_error {
+ public:
+  Interrupted() : std::runtime_error("interrupted: the caller asked the operation to stop") {}
+};
+
+// A caller's request to stop a long operation (a fit, the closed loop, a stability map, a
+// landing, an exact law's build): polled between the operation's units of work (a solver
+// iteration, an integrator step, a sample, a cell), possibly from several threads at once, so
+// it must be thread-safe and cheap (an atomic flag); once it has returned true it should keep
+// doing so. The operation then throws Interrupted. Unset: the operation runs to its end.
+using StopRequest = std::function<bool()>;
+
+// Throws Interrupted if `stop` is set and returns true.
+inline void throw_if_stopped(const StopRequest& stop) {
+  if (stop && stop()) throw Interrupted();
+}
 
 // Validation helpers shared by every module: each throws InvalidArgument naming the value.
 

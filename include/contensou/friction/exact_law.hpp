@@ -55,6 +55,7 @@ struct ExactLawOptions {
   int degree = 12;         // of the Chebyshev pieces in t (8, 10, 12, 14 or 16)
   int falling_degree = 8;  // the same for the falling part of a slip-speed law
   unsigned threads = 0;    // of the build (0: one a core); the law is the same for any number
+  StopRequest stop{};      // polled before every sample: Interrupted when it returns true
 };
 
 // The table functions (exact_law.hpp header), in this order.

@@ -8,6 +8,7 @@
 #include <string>
 #include <vector>
 
+#include "contensou/friction/error.hpp"
 #include "contensou/gear/landing_gear.hpp"
 #include "contensou/gear/oscillation.hpp"
 
@@ -32,6 +33,9 @@ struct SolverOptions {
   // from CVODE's own difference quotients (one right-hand side per state) when false.
   bool analytic_jacobian = true;
   Integrator method = Integrator::adams;
+  // Polled before every integrator step: the landing (and a map of them) throws Interrupted
+  // once it returns true (error.hpp).
+  StopRequest stop{};
 };
 
 struct LandingSample {

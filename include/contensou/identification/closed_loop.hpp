@@ -80,6 +80,8 @@ struct ClosedLoopReport {
   bool structure_remains = false;  // the final residual is still not white
 };
 
+// Throws what fit_model throws, and Interrupted when options.stop asks (polled between the
+// stages and inside every fit).
 ClosedLoopReport close_the_loop(const MeasuredData& data, const IdentificationOptions& options,
                                 const ClosedLoopOptions& loop = {});
 

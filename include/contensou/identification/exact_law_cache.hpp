@@ -23,8 +23,9 @@ class ExactLawCache {
   // one); tolerance: the laws' build tolerance relative to f N.
   ExactLawCache(double radius_m, std::optional<ExactModel<double>> profile, double tolerance);
   // The laws (one, or the three basis laws), for constant friction or with the slip-speed
-  // table, each built on the first call that asks for it (thread-safe).
-  const std::vector<ExactLaw>& laws(bool slip_speed) const;
+  // table, each built on the first call that asks for it (thread-safe). A build stopped by
+  // `stop` (Interrupted) leaves nothing behind: the next call builds again.
+  const std::vector<ExactLaw>& laws(bool slip_speed, const StopRequest& stop = {}) const;
   // The basis coefficients of the profile at (b1, b2): {1} or {1 - b1 - b2, b1, b2}.
   bool parametric() const { return !profile_; }
 

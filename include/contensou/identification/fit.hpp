@@ -19,6 +19,7 @@
 #include <string>
 #include <vector>
 
+#include "contensou/friction/error.hpp"
 #include "contensou/friction/fractional_law.hpp"
 #include "contensou/friction/pressure_profile.hpp"
 #include "contensou/identification/effect_model.hpp"
@@ -49,6 +50,9 @@ struct IdentificationOptions {
   int noise_iterations = 6;            // fit / scatter / refit rounds when s_c is estimated
   double regularization_speed = 1e-6;  // eps of the law [m/s]
   int failing_point = -1;              // testing only: see NoiseSettings::failing_point
+  // Polled between the solver's iterations and the closed loop's stages (and by the exact laws'
+  // builds): the fit or the loop throws Interrupted once it returns true (error.hpp).
+  StopRequest stop{};
 };
 
 struct ParameterEstimate {
@@ -99,7 +103,8 @@ struct FitReport {
 };
 
 // Fits the fractional law to the data. Throws InvalidArgument for a non-positive radius or
-// load, an unknown --fix name, and for fewer measured values than free parameters.
+// load, an unknown --fix name, and for fewer measured values than free parameters; Interrupted
+// when options.stop asks.
 FitReport fit_fractional_law(const MeasuredData& data, const IdentificationOptions& options);
 
 // How a fit treats the noise (shared by the base fit and the closed loop).
@@ -112,6 +117,9 @@ struct NoiseSettings {
   // Testing only: the residual of this point (index into the data) fails to evaluate, so that
   // the failed-solve path (an error naming the fit, no report) can be exercised. -1: none.
   int failing_point = -1;
+  // Polled after every solver iteration and between the rounds: Interrupted once it returns
+  // true (IdentificationOptions::stop).
+  StopRequest stop{};
 };
 
 // Fits a general model (effect_model.hpp): its free parameters, from spec.value as start.

@@ -10,6 +10,7 @@
 #include "contensou/friction/pressure_profile.hpp"
 #include "contensou/identification/closed_loop.hpp"
 #include "contensou/identification/fit.hpp"
+#include "contensou/identification/outliers.hpp"
 
 namespace contensou {
 
@@ -22,6 +23,7 @@ struct ReportInput {
   std::optional<double> normal_load_n;
   std::string normal_load_source;                 // where N came from ("" if given directly)
   std::vector<std::string> column_notes;          // columns read under other names or units
+  std::vector<Outlier> outliers;                  // gross errors left out of the fit
   std::string profile;                            // how the pressure profile was given ("" if none)
   std::optional<double> profile_rms_residual_pa;  // a smoothing fit's residual
   std::optional<double> profile_max_residual_pa;

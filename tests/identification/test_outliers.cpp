@@ -1,0 +1,110 @@
+// Gross errors: found in the residual, named by line and channel, and left out so that the
+// reported fit is that of the clean rows; clean data (also with a smooth misfit of the model)
+// name none.
+#include <gtest/gtest.h>
+
+#include "seed_tire_law.hpp"
+
+#include <cmath>
+#include <set>
+
+#include "contensou/friction/contact_patch.hpp"
+#include "contensou/identification/identify.hpp"
+#include "contensou/identification/simulation.hpp"
+
+using namespace contensou;
+
+namespace {
+
+FractionalLaw<double> truth() {
+  return test::seed_tire_law();
+}
+
+MeasuredData two_sweeps(std::uint64_t seed) {
+  MeasuredData d;
+  for (double direction : {0.0, 1.5707963}) {
+    DiagramSpec s;
+    s.radius_m = 0.087;
+    s.points = 50;
+    s.direction_rad = direction;
+    s.noise = SimulatedNoise::additive_gaussian;
+    s.noise_level = 0.01;
+    s.seed = seed + static_cast<std::uint64_t>(direction * 10);
+    for (MeasuredPoint p : simulate_diagrams(truth(), s).points) {
+      p.line = static_cast<int>(d.points.size()) + 2;  // as if read from a file with a header
+      d.points.push_back(p);
+    }
+  }
+  return d;
+}
+
+IdentifyOptions fit_only() {
+  IdentifyOptions o;
+  o.fit.radius_m = 0.087;
+  return o;
+}
+
+}  // namespace
+
+TEST(Outliers, CleanDataNameNone) {
+  for (std::uint64_t seed : {1u, 2u, 3u, 4u, 5u}) {
+    const MeasuredData d = two_sweeps(seed);
+    const Identification r = identify(d, fit_only());
+    EXPECT_TRUE(r.outliers.empty())
+        << "seed " << seed << ": " << r.outliers.front().describe("data");
+    EXPECT_EQ(r.fitted.points.size(), d.points.size());
+  }
+  // The exact integrals fitted by the fractional law: a smooth misfit 3.5 times the noise.
+  ContactPatch patch;
+  patch.radius_m = 0.087;
+  DiagramSpec s;
+  s.radius_m = 0.087;
+  s.points = 60;
+  s.noise_level = 0.01;
+  const MeasuredData exact = simulate_diagrams(make_exact_model(patch), s);
+  EXPECT_TRUE(identify(exact, fit_only()).outliers.empty());
+}
+
+TEST(Outliers, GlitchesAreNamedAndTheFitIsTheCleanOne) {
+  const MeasuredData clean = two_sweeps(7);
+  MeasuredData glitched = clean;
+  // A sign flip of a large lateral force, a 40-sigma spike in Mz, a dropped digit in Fx.
+  std::set<std::pair<int, int>> injected;
+  auto largest = [&](int c, int from) {
+    int best = from;
+    for (int i = from; i < from + 50; ++i)
+      if (std::abs(*clean.points[i].force[c]) > std::abs(*clean.points[best].force[c])) best = i;
+    return best;
+  };
+  const int flip = largest(1, 50), spike = 20, drop = largest(0, 0);
+  *glitched.points[flip].force[1] *= -1.0;
+  *glitched.points[spike].force[2] += 40.0 * 0.01 * 71.8;
+  *glitched.points[drop].force[0] /= 10.0;
+  injected = {{glitched.points[flip].line, 1},
+              {glitched.points[spike].line, 2},
+              {glitched.points[drop].line, 0}};
+
+  const Identification with = identify(glitched, fit_only());
+  std::set<std::pair<int, int>> named;
+  for (const Outlier& o : with.outliers) named.insert({o.line, o.channel});
+  EXPECT_EQ(named, injected);
+  // Left out: the parameters are the clean set's within its intervals.
+  const Identification reference = identify(clean, fit_only());
+  for (const ParameterEstimate& p : reference.fit.parameters) {
+    ASSERT_TRUE(p.ci95);
+    const ParameterEstimate* q = with.fit.parameter(p.name);
+    ASSERT_NE(q, nullptr);
+    EXPECT_GE(q->value, (*p.ci95)[0]) << p.name;
+    EXPECT_LE(q->value, (*p.ci95)[1]) << p.name;
+  }
+  // Without the rule the same glitches pull the fit out of the clean intervals.
+  IdentifyOptions keep = fit_only();
+  keep.leave_out_outliers = false;
+  const Identification pulled = identify(glitched, keep);
+  int outside = 0;
+  for (const ParameterEstimate& p : reference.fit.parameters) {
+    const double v = pulled.fit.parameter(p.name)->value;
+    outside += v < (*p.ci95)[0] || v > (*p.ci95)[1];
+  }
+  EXPECT_GT(outside, 0);
+}
