@@ -36,28 +36,41 @@ void sigma_weights(double t, int blocks, double* w) {
     for (int i = 0; i < kLawFunctions; ++i) w[b * kLawFunctions + i] = i == kLawSpin ? 1.0 : sigma;
 }
 
-// Coefficients of T_k(x), k = 0..n, from values at the Lobatto points x_k = cos(k pi / n)
+// cos(j k pi / NZ), j, k = 0..NZ, for the z Lobatto transform (lobatto_to_chebyshev), and the
+// points between the Lobatto points, cos((k + 1/2) pi / NZ), k < NZ (z_interpolation_error):
+// computed once a build (the transform runs for every function of every sample).
+struct ZBasis {
+  static constexpr int NZ = kSlipDegreeZ;
+  double cos_jk[NZ + 1][NZ + 1], between[NZ];
+  ZBasis() {
+    for (int j = 0; j <= NZ; ++j)
+      for (int k = 0; k <= NZ; ++k) cos_jk[j][k] = std::cos(std::numbers::pi * j * k / NZ);
+    for (int k = 0; k < NZ; ++k) between[k] = std::cos(std::numbers::pi * (k + 0.5) / NZ);
+  }
+};
+
+// Coefficients of T_k(x), k = 0..NZ, from values at the Lobatto points x_k = cos(k pi / NZ)
 // (values[k * stride]).
-void lobatto_to_chebyshev(int n, const double* values, int stride, double* c) {
+void lobatto_to_chebyshev(const ZBasis& z, const double* values, int stride, double* c) {
+  constexpr int n = ZBasis::NZ;
   for (int k = 0; k <= n; ++k) {
     double s = 0.0;
     for (int j = 0; j <= n; ++j)
-      s += (j == 0 || j == n ? 0.5 : 1.0) * values[j * stride] *
-           std::cos(std::numbers::pi * j * k / n);
+      s += (j == 0 || j == n ? 0.5 : 1.0) * values[j * stride] * z.cos_jk[j][k];
     c[k] = (k == 0 || k == n ? 1.0 : 2.0) * s / n;
   }
 }
 
 // Turns each (t-coefficient, piece) block of values at the z Lobatto points into Chebyshev
 // coefficients in z (the layout [k_z][function] within a block stays).
-void values_to_z_coefficients(PiecewiseChebyshev& table) {
+void values_to_z_coefficients(const ZBasis& z, PiecewiseChebyshev& table) {
   constexpr int NZ = kSlipDegreeZ, M = kLawFunctions * (NZ + 1);
   for (std::size_t block = 0; block + M <= table.coefficients.size(); block += M) {
     double* v = table.coefficients.data() + block;
     double out[M];
     for (int i = 0; i < kLawFunctions; ++i) {
       double c[NZ + 1];
-      lobatto_to_chebyshev(NZ, v + i, kLawFunctions, c);
+      lobatto_to_chebyshev(z, v + i, kLawFunctions, c);
       for (int k = 0; k <= NZ; ++k) out[k * kLawFunctions + i] = c[k];
     }
     std::copy(out, out + M, v);
@@ -66,12 +79,12 @@ void values_to_z_coefficients(PiecewiseChebyshev& table) {
 
 // The largest |value| of the z-interpolation error of one function at the NZ points between its
 // Lobatto points, from its values v[k * stride] at all 2 NZ + 1 points (Lobatto points first).
-double z_interpolation_error(const double* v, int stride) {
+double z_interpolation_error(const ZBasis& z, const double* v, int stride) {
   constexpr int NZ = kSlipDegreeZ;
   double c[NZ + 1], worst = 0.0;
-  lobatto_to_chebyshev(NZ, v, stride, c);
+  lobatto_to_chebyshev(z, v, stride, c);
   for (int k = 0; k < NZ; ++k) {
-    const double x = std::cos(std::numbers::pi * (k + 0.5) / NZ);
+    const double x = z.between[k];
     double s = c[0] + c[1] * x, tp = 1.0, tc = x;
     for (int m = 2; m <= NZ; ++m) {
       const double tn = 2.0 * x * tc - tp;
@@ -158,7 +171,7 @@ int falling_pieces(const ExactModel<double>& unit, double delta,
 // weighted by the largest sigma there, sigma_weights) shares the zero block. Returns the largest
 // bound so dropped.
 double store_falling_blocks(const PiecewiseChebyshev& built, int J, double negligible,
-                            SlipSpeedTable& out) {
+                            const ZBasis& z, SlipSpeedTable& out) {
   constexpr int M = kLawFunctions * (kSlipDegreeZ + 1);
   const int n = built.degree, P = built.pieces();
   const std::size_t size = static_cast<std::size_t>(M) * (n + 1);
@@ -182,7 +195,7 @@ double store_falling_blocks(const PiecewiseChebyshev& built, int J, double negli
                         (static_cast<std::ptrdiff_t>(k) * (n + 1) + row) * J * M + j * M;
         one.coefficients.insert(one.coefficients.end(), at, at + M);
       }
-      values_to_z_coefficients(one);
+      values_to_z_coefficients(z, one);
       double bound[kLawFunctions] = {};
       for (std::size_t i = 0; i < size; ++i)
         bound[i % kLawFunctions] += std::abs(one.coefficients[i]);
@@ -223,6 +236,7 @@ FallingBuild build_falling(const ExactModel<double>& model, double delta, double
       zs.push_back(detail::octave_point(j, std::cos(std::numbers::pi * (k + 0.5) / NZ)) - 1.0);
   }
   const std::size_t per_t = zs.size() * kLawFunctions;
+  const ZBasis basis;
   double z_error = 0.0, tail = 0.0;
   auto sample = [&](const std::vector<double>& ts, double* values) {
     std::vector<double> all(ts.size() * per_t);
@@ -238,7 +252,8 @@ FallingBuild build_falling(const ExactModel<double>& model, double delta, double
         const double* piece = v + j * (2 * NZ + 1) * kLawFunctions;
         std::copy(piece, piece + M, values + (i * J + j) * M);
         for (int c = 0; c < kLawFunctions; ++c) {
-          z_error = std::max(z_error, w[c] * z_interpolation_error(piece + c, kLawFunctions));
+          z_error =
+              std::max(z_error, w[c] * z_interpolation_error(basis, piece + c, kLawFunctions));
           if (j == J - 1) tail = std::max(tail, w[c] * std::abs(piece[c]));  // the top: x = 1
         }
       }
@@ -255,7 +270,7 @@ FallingBuild build_falling(const ExactModel<double>& model, double delta, double
   FallingBuild out;
   out.table.exponent = delta;
   out.table.tail = tail;
-  const double dropped = store_falling_blocks(b.table, J, 1e-3 * tolerance, out.table);
+  const double dropped = store_falling_blocks(b.table, J, 1e-3 * tolerance, basis, out.table);
   out.achieved = std::max({lobatto_lebesgue_constant(NZ) * b.achieved, z_error, tail}) + dropped;
   out.reached = b.reached && out.achieved <= 2.0 * tolerance;
   out.samples = b.samples;

@@ -2,16 +2,25 @@
 #include "exact_law_sampling.hpp"
 
 #include <algorithm>
+#include <array>
+#include <bit>
 #include <cmath>
+#include <cstdint>
 #include <numbers>
 #include <numeric>
 
 #include "contensou/friction/quadrature.hpp"
+#include "lane_loops.hpp"
 
 namespace contensou::detail {
 
 namespace {
 constexpr double kPi = std::numbers::pi;
+
+// x^d; x itself for d = 1 (the same value, without the call).
+double power(double x, double d) {
+  return d == 1.0 ? x : std::pow(x, d);
+}
 }  // namespace
 
 double profile_integral(const ExactModel<double>& m, const std::function<double(double)>& h,
@@ -398,8 +407,8 @@ namespace {
 void spin_limits(const ExactModel<double>& unit, double d, double z, double* g) {
   // Panels graded towards rho = 0 (the layer of G for large z, and rho^delta).
   const double layer = 1e-6 * std::min(1.0, std::pow(std::max(z, 1e-300), -1.0 / d));
-  auto G = [&](double r) { return std::exp(-z * std::pow(r, d)); };
-  auto slope = [&](double r) { return 1.0 - d * z * std::pow(r, d); };
+  auto G = [&](double r) { return std::exp(-z * power(r, d)); };
+  auto slope = [&](double r) { return 1.0 - d * z * power(r, d); };
   const double slide = profile_integral(
       unit, [&](double r) { return G(r) * slope(r); }, layer);
   const double spin = profile_integral(
@@ -416,6 +425,50 @@ void spin_limits(const ExactModel<double>& unit, double d, double z, double* g) 
   g[kLawShiftDiff] = kPi * d * z * diff / L;
 }
 
+// 1 / i!, i = 0..13.
+constexpr std::array<double, 14> kInverseFactorial = [] {
+  std::array<double, 14> c{1.0};
+  for (int i = 1; i < 14; ++i) c[i] = c[i - 1] / i;
+  return c;
+}();
+
+// exp(-x) for x in [0, 46], branch-free (it vectorises in a lane loop, std::exp does not):
+// exp(-x) = 2^k exp(r), k = round(-x / ln 2), r = -x - k ln 2 in [-ln 2 / 2, ln 2 / 2] (ln 2 in
+// two parts, Cody and Waite: k ln2_hi is exact), exp(r) by its Taylor series to r^13 (the rest
+// below 5e-18 relative), 2^k from the bits of k + 1.5 2^52 (its low bits hold k + 2^51).
+// Within one ulp of std::exp.
+CONTENSOU_LANE_INLINE double exp_minus(double x) {
+  constexpr double kLog2e = 1.4426950408889634, kShift = 0x1.8p52;
+  constexpr double kLn2Hi = 6.93147180369123816490e-01, kLn2Lo = 1.90821492927058770002e-10;
+  const double kd = kShift - x * kLog2e;
+  const std::uint64_t bits = std::bit_cast<std::uint64_t>(kd);
+  const double k = kd - kShift;
+  const double r = (-x - k * kLn2Hi) - k * kLn2Lo;
+  double p = kInverseFactorial[13];
+  for (int i = 12; i >= 0; --i) p = p * r + kInverseFactorial[i];
+  return p * std::bit_cast<double>((bits + 1023) << 52);
+}
+
+// sum_i w[c][i] exp(-z mu[i]) (c = 0..5, w[c][i] = w[c * stride + i]) over the first `blocks`
+// blocks of kLanes nodes, mu ascending, the nodes with z mu > 46 left out (exp(-46) = 1e-20):
+// lane l sums the nodes i = l mod kLanes.
+CONTENSOU_LANE_CLONES SlipMoments falling_sums(const double* mu, const double* w,
+                                               std::size_t stride, std::size_t blocks, double z) {
+  double acc[6][kLanes] = {};
+  for (std::size_t b = 0; b < blocks; ++b) {
+    for (int l = 0; l < kLanes; ++l) {
+      const std::size_t i = b * kLanes + l;
+      const double x = z * mu[i], e = exp_minus(std::min(x, 46.0));
+      const double g = x <= 46.0 ? e : 0.0;
+      for (int c = 0; c < 6; ++c) acc[c][l] += w[c * stride + i] * g;
+    }
+  }
+  SlipMoments sum{};
+  for (int c = 0; c < 6; ++c)
+    for (int l = 0; l < kLanes; ++l) sum[c] += acc[c][l];
+  return sum;
+}
+
 }  // namespace
 
 void falling_functions(const ExactModel<double>& unit, double delta,
@@ -426,22 +479,27 @@ void falling_functions(const ExactModel<double>& unit, double delta,
     return;
   }
   const SlipSpeedMeasure m = slip_speed_measure(unit, t, options);
-  // nu^delta in increasing order, so that the sums stop where exp(-z nu^delta) < 1e-20.
+  // mu = nu^delta in increasing order, so that the sums stop where exp(-z mu) < 1e-20; the
+  // weights by component (structure of arrays), padded to whole blocks with weights 0.
   std::vector<std::size_t> order(m.nu.size());
   std::iota(order.begin(), order.end(), 0);
   std::sort(order.begin(), order.end(), [&](auto i, auto j) { return m.nu[i] < m.nu[j]; });
-  std::vector<double> mu(order.size());
-  for (std::size_t i = 0; i < order.size(); ++i) mu[i] = std::pow(m.nu[order[i]], delta);
+  const std::size_t n = order.size(), stride = (n + kLanes - 1) / kLanes * kLanes;
+  std::vector<double> mu(stride, 0.0), w(6 * stride, 0.0);
+  for (std::size_t i = 0; i < n; ++i) {
+    mu[i] = power(m.nu[order[i]], delta);
+    for (int c = 0; c < 6; ++c) w[c * stride + i] = m.weight[order[i]][c];
+  }
   const double sigma = 0.5 * (1.0 + t);
   for (std::size_t k = 0; k < zs.size(); ++k) {
-    SlipMoments sum{};
-    for (std::size_t i = 0; i < order.size(); ++i) {
-      const double x = zs[k] * mu[i];
-      if (x > 46.0) break;
-      const double e = std::exp(-x);
-      const SlipMoments& w = m.weight[order[i]];
-      for (int c = 0; c < 6; ++c) sum[c] += w[c] * e;
-    }
+    // The nodes up to the first with z mu > 46 (one more against rounding; falling_sums drops it).
+    const double z = zs[k];
+    const std::size_t used =
+        z > 0.0 ? std::min<std::size_t>(
+                      n, std::upper_bound(mu.begin(), mu.begin() + n, 46.0 / z) - mu.begin() + 1)
+                : n;
+    const SlipMoments sum =
+        falling_sums(mu.data(), w.data(), stride, (used + kLanes - 1) / kLanes, z);
     law_functions_from_moments(sum, sigma, unit.load_area, out + 6 * k);
   }
 }

@@ -23,13 +23,14 @@ struct Piece {
 
 // Chebyshev coefficients from the values at the Lobatto points x_j = cos(j pi / n):
 //   c_k = (2 / n) sum''_j f_j cos(j k pi / n), the first and last terms halved, c_0 and c_n
-//   halved again.
-void lobatto_coefficients(int n, const double* values, int stride, double* c) {
+//   halved again; cos_jk[j (n + 1) + k] = cos(j k pi / n).
+void lobatto_coefficients(int n, const std::vector<double>& cos_jk, const double* values,
+                          int stride, double* c) {
   for (int k = 0; k <= n; ++k) {
     double s = 0.0;
     for (int j = 0; j <= n; ++j) {
       const double w = (j == 0 || j == n) ? 0.5 : 1.0;
-      s += w * values[j * stride] * std::cos(std::numbers::pi * j * k / n);
+      s += w * values[j * stride] * cos_jk[j * (n + 1) + k];
     }
     c[k] = (k == 0 || k == n ? 1.0 : 2.0) * s / n;
   }
@@ -50,6 +51,8 @@ class Builder {
   Builder(int m, const ChebyshevBatchSampler& sample, const PiecewiseChebyshevOptions& o)
       : m_(m), n_(o.degree), sample_(sample), scale_(o.scale), weight_(o.weight) {
     if (scale_.empty()) scale_.assign(m, 1.0);
+    for (int j = 0; j <= n_; ++j)
+      for (int k = 0; k <= n_; ++k) cos_jk_.push_back(std::cos(std::numbers::pi * j * k / n_));
   }
 
   // Fits [a, b] from its Lobatto points (the ends sampled once for both neighbours) and checks
@@ -77,7 +80,8 @@ class Builder {
     }
     Piece p{a, b, std::vector<double>((n_ + 1) * m_), 0.0, mid};
     for (int i = 0; i < m_; ++i)
-      lobatto_coefficients(n_, values.data() + i, m_, p.coefficients.data() + i * (n_ + 1));
+      lobatto_coefficients(n_, cos_jk_, values.data() + i, m_,
+                           p.coefficients.data() + i * (n_ + 1));
     std::vector<double> w(m_, 1.0);
     for (int j = 0; j < n_; ++j) {
       const double x = std::cos(std::numbers::pi * (j + 0.5) / n_);
@@ -102,6 +106,7 @@ class Builder {
   const ChebyshevBatchSampler& sample_;
   std::vector<double> scale_;
   std::function<void(double, double*)> weight_;
+  std::vector<double> cos_jk_;  // cos(j k pi / n), j, k = 0..n (lobatto_coefficients)
   std::map<double, std::vector<double>> cache_;
   int samples_ = 0;
 };

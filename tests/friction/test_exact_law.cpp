@@ -179,6 +179,43 @@ TEST(SlipSpeedMeasure, AgreesWithIntegrator) {
   }
 }
 
+// A table's slip-speed quadrature (its pieces between knot tangencies get as many nodes as their
+// nearest singular points ask for, their rings are integrated eight at a time) against the same
+// quadrature refined (16 nodes a panel and a piece, ring pieces to 1e-15), where the integrator
+// is too slow: f = exp(-q nu) for q from 0 to 1e4 (the falling table's range at delta = 1), the
+// 101-point table and a coarse 11-point one, centre inside, near the rim and outside.
+TEST(SlipSpeedMeasure, TableRuleAgreesWithRefinedRule) {
+  SlipSpeedMeasureOptions fine;
+  fine.nodes = fine.piece_nodes = 16;
+  fine.ring_nodes = 8;
+  fine.ring_tolerance = 1e-15;
+  SlipSpeedMeasureOptions build;  // as the f(w) table's build at the default tolerance
+  build.largest_q = fine.largest_q = 1e6;
+  build.ring_tolerance = 7e-12;
+  build.nodes = 10;
+  for (int knots : {101, 11}) {
+    ContactPatch p = seed_tire_patch();
+    p.profile = test_support::kinked_table_profile(knots);
+    ExactModel<double> unit = make_exact_model(p);
+    unit.load_area /= unit.radius * unit.radius;
+    unit.radius = unit.pressure = unit.friction = unit.friction_scale = 1.0;
+    for (double t : {-0.99, -0.9275, -0.43, -0.1, -1e-3, 0.0, 0.02, 0.3, 0.9}) {
+      const SlipSpeedMeasure a = slip_speed_measure(unit, t, build);
+      const SlipSpeedMeasure b = slip_speed_measure(unit, t, fine);
+      for (double q : {0.0, 30.0, 1e3, 1e4}) {
+        SlipMoments sa{}, sb{};
+        for (std::size_t k = 0; k < a.nu.size(); ++k)
+          for (int c = 0; c < 6; ++c) sa[c] += a.weight[k][c] * std::exp(-q * a.nu[k]);
+        for (std::size_t k = 0; k < b.nu.size(); ++k)
+          for (int c = 0; c < 6; ++c) sb[c] += b.weight[k][c] * std::exp(-q * b.nu[k]);
+        for (int c = 0; c < 6; ++c)
+          EXPECT_NEAR(sa[c], sb[c], 1e-11 * unit.load_area)
+              << knots << " knots, t " << t << " q " << q << " integral " << c;
+      }
+    }
+  }
+}
+
 // Contensou's closed forms (theory.md section 3), independent of the integrator: uniform
 // pressure, kappa = 1, sliding along 30 degrees at ratios across the rim.
 TEST(ExactLaw, UniformDiskMatchesContensouClosedForms) {

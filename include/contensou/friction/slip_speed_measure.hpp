@@ -35,11 +35,15 @@ struct SlipSpeedMeasure {
 struct SlipSpeedMeasureOptions {
   double largest_q = 1e4;  // the rule resolves G(q nu) = exp(-(q nu)^delta) up to this q
   // Of each ring integral, relative to the load; a table's ring is integrated piece by piece to
-  // 1e-2 of it relative to the piece (the default: about 1e-15).
+  // 1e-2 of it relative to the piece (the default: about 1e-15), and the rule of a piece of a
+  // panel between a table's knot tangencies aims at 1e2 of it relative to the piece.
   double ring_tolerance = 1e-13;
-  int nodes = 12;        // Gauss-Legendre nodes a panel in nu
-  int ring_nodes = 6;    // Gauss-Legendre nodes a knot piece of a table's ring
-  int piece_nodes = 10;  // ... a piece of a panel between a table's knot tangencies
+  int nodes = 12;      // Gauss-Legendre nodes a panel in nu
+  int ring_nodes = 6;  // Gauss-Legendre nodes a knot piece of a table's ring, at most
+  // ... a piece of a panel between a table's knot tangencies: this many where the piece's
+  // integrand is singular at both ends, fewer (3 at least) where the singular points nearest to
+  // it allow
+  int piece_nodes = 10;
 };
 
 // The rule at t in [-1, 1] (t = 1: pure sliding, one node at nu = 1). The model's radius,
