@@ -1,40 +1,34 @@
 #!/usr/bin/env bash
-# Builds the libFuzzer targets of tests/fuzz (clang 14, ASan+UBSan) in ./build-fuzz and runs
-# each for SECONDS (default 60), starting from its seed corpus in tests/fuzz/corpus/<target>
-# (read only: new inputs go to build-fuzz/run/). Exits non-zero on a finding and names the
+# Runs the libFuzzer targets of tests/fuzz (clang 14, ASan+UBSan; built in ./build-asan by
+# scripts/test.sh --sanitize, which this script calls first: a no-op when the build is current)
+# for SECONDS each (default 60), starting from the seed corpus in tests/fuzz/corpus/<target>
+# (read only: new inputs go to build-asan/fuzz-run/). Exits non-zero on a finding and names the
 # saved input; skips with exit 0 if clang++-14 or its fuzzer runtime is missing.
 #   scripts/fuzz.sh [SECONDS]
 set -euo pipefail
 cd "$(dirname "$0")/.."
 seconds=${1:-60}
 targets=(fuzz_measured_csv fuzz_profile_csv fuzz_shimmy_config)
-cxx=clang++-14 cc=clang-14
+bin=build-asan/tests/fuzz
 
-skip() {
-  echo "fuzz: skipped, $1 (scripts/setup.sh installs clang-14 and libclang-rt-14-dev)"
-  exit 0
-}
-command -v "$cxx" >/dev/null || skip "$cxx not found"
-probe=$(mktemp -d)
-trap 'rm -rf "$probe"' EXIT
-printf '%s\n' '#include <cstddef>' '#include <cstdint>' \
-  'extern "C" int LLVMFuzzerTestOneInput(const uint8_t*, size_t) { return 0; }' >"$probe/p.cpp"
-"$cxx" -fsanitize=fuzzer,address,undefined "$probe/p.cpp" -o "$probe/p" 2>/dev/null ||
-  skip "$cxx cannot link -fsanitize=fuzzer (no libFuzzer runtime)"
-
-CC=$cc CXX=$cxx cmake -S tests/fuzz -B build-fuzz -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo \
-  >/dev/null
-cmake --build build-fuzz --parallel
+scripts/test.sh --sanitize --build-only
+for t in "${targets[@]}"; do
+  [ -x "$bin/$t" ] || {
+    echo "fuzz: skipped, no $bin/$t: clang++-14 or its libFuzzer runtime is missing" \
+      "(scripts/setup.sh installs clang-14 and libclang-rt-14-dev)"
+    exit 0
+  }
+done
 
 export UBSAN_OPTIONS=print_stacktrace=1
 failed=()
 # All targets at once (libFuzzer is single-threaded): the wall time is SECONDS, not 3 x SECONDS.
 pids=()
 for t in "${targets[@]}"; do
-  run=build-fuzz/run/$t
+  run=build-asan/fuzz-run/$t
   rm -rf "$run"
   mkdir -p "$run/corpus" "$run/artifacts"
-  "./build-fuzz/$t" -max_total_time="$seconds" -max_len=4096 -timeout=10 -rss_limit_mb=2048 \
+  "$bin/$t" -max_total_time="$seconds" -max_len=4096 -timeout=10 -rss_limit_mb=2048 \
     -print_final_stats=1 -artifact_prefix="$run/artifacts/" \
     "$run/corpus" "tests/fuzz/corpus/$t" >"$run/log" 2>&1 &
   pids+=($!)
@@ -42,7 +36,7 @@ done
 echo "fuzz: ${#targets[@]} targets, ${seconds} s each, in parallel"
 for i in "${!targets[@]}"; do
   t=${targets[$i]}
-  run=build-fuzz/run/$t
+  run=build-asan/fuzz-run/$t
   rc=0
   wait "${pids[$i]}" || rc=$?
   echo "== $t"
@@ -54,7 +48,7 @@ for i in "${!targets[@]}"; do
     echo "fuzz: $t FAILED (exit $rc); log $run/log, last lines:"
     tail -n 40 "$run/log"
     for f in "$run"/artifacts/*; do
-      [ -e "$f" ] && echo "fuzz: crashing input $f (reproduce: ./build-fuzz/$t $f)"
+      [ -e "$f" ] && echo "fuzz: crashing input $f (reproduce: $bin/$t $f)"
     done
   fi
 done

@@ -3,7 +3,6 @@
 // tolerance, dissipation, mirror symmetry, the oscillation analysis and bad input.
 #include <gtest/gtest.h>
 
-#include <Eigen/Eigenvalues>
 #include <algorithm>
 #include <atomic>
 #include <cmath>
@@ -14,6 +13,7 @@
 #include "contensou/gear/landing_simulation.hpp"
 #include "contensou/gear/oscillation.hpp"
 #include "contensou/gear/stability_map.hpp"
+#include "eigenvalues.hpp"
 
 using namespace contensou;
 
@@ -113,7 +113,7 @@ Eigen::Matrix3d nose_gear_matrix(const GearModel& m) {
 }
 
 double max_real_eigenvalue(const Eigen::Matrix3d& A) {
-  return Eigen::EigenSolver<Eigen::Matrix3d>(A).eigenvalues().real().maxCoeff();
+  return contensou::testing::eigenvalues(A).real().maxCoeff();
 }
 
 GearConfig nose_gear(double V, double trail) {
@@ -380,7 +380,7 @@ TEST(LandingGear, GyroscopicCouplingGivesTheCoupledOscillatorFrequencies) {
   Eigen::Matrix4d A;
   for (int i = 0; i < 4; ++i)
     for (int j = 0; j < 4; ++j) A(i, j) = J(idx[i], idx[j]);
-  const Eigen::Vector4cd ev = Eigen::EigenSolver<Eigen::Matrix4d>(A).eigenvalues();
+  const Eigen::VectorXcd ev = contensou::testing::eigenvalues(A);
   const double gy = g.wheel_inertia_kgm2 * x[kSpin] / g.gyroscopic_length_m;
   const double I = g.torsional_inertia_kgm2, k1 = g.torsional_stiffness_nm_per_rad;
   const double M = g.lateral_mass_kg, k2 = g.lateral_stiffness_n_per_m;
