@@ -15,19 +15,33 @@ missing=()
 for p in "${packages[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
 done
+
+# The Python environment: python/requirements.txt pins the build requirements, the packages the
+# tests and the example use, and `mujoco`, whose wheels ship MuJoCo's headers and libmujoco.so;
+# CMake finds them there (cmake/FindMuJoCo.cmake) and builds plugins/mujoco.
+python_env() {
+  [ -x .venv/bin/python ] || python3 -m venv .venv
+  .venv/bin/python -m pip install --quiet --disable-pip-version-check -r python/requirements.txt
+}
+python_job=""
 if ((${#missing[@]})); then
+  # When this machine's Python can make a virtual environment without Debian's python3-venv, the
+  # Python packages download while apt installs the others.
+  if python3 -c 'import ensurepip, venv' 2>/dev/null; then
+    python_env &
+    python_job=$!
+  fi
   SUDO=""
   [ "$(id -u)" -ne 0 ] && SUDO="sudo"
   echo "setup: installing ${missing[*]}"
   $SUDO apt-get update -qq
   DEBIAN_FRONTEND=noninteractive $SUDO apt-get install -y -qq --no-install-recommends "${missing[@]}"
 fi
-
-# The Python environment first: python/requirements.txt pins the build requirements, the
-# packages the tests and the example use, and `mujoco`, whose wheels ship MuJoCo's headers and
-# libmujoco.so; CMake finds them there (cmake/FindMuJoCo.cmake) and builds plugins/mujoco.
-[ -x .venv/bin/python ] || python3 -m venv .venv
-.venv/bin/python -m pip install --quiet --disable-pip-version-check -r python/requirements.txt
+if [ -n "$python_job" ]; then
+  wait "$python_job" || { echo "setup: installing python/requirements.txt into .venv failed" >&2; exit 1; }
+else
+  python_env
+fi
 
 cmake -S . -B build -G Ninja -DCMAKE_BUILD_TYPE=Release \
   -DCONTENSOU_WERROR="${CONTENSOU_WERROR:-OFF}"
