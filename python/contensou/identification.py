@@ -12,7 +12,7 @@ from __future__ import annotations
 import json
 import os
 from dataclasses import dataclass, field
-from typing import Any, Mapping, Optional, Union
+from typing import Any, Dict, Mapping, Optional, Union
 
 import numpy as np
 
@@ -214,12 +214,17 @@ def _table_of(data: Any) -> tuple[list[str], list[Any]]:
     return [str(n) for n in names], [_cells(data, n) for n in names]
 
 
-def _renames(columns: Optional[Union[str, Mapping[str, str]]]) -> str:
-    if columns is None:
-        return ""
-    if isinstance(columns, str):
+def _renames(
+    columns: Optional[Union[str, Mapping[str, str]]]
+) -> Optional[Union[str, Dict[str, str]]]:
+    if columns is None or isinstance(columns, str):
         return columns
-    return ",".join(f"{q}={c}" for q, c in columns.items())
+    if not isinstance(columns, Mapping):
+        raise TypeError(
+            f"columns: expected a mapping {{quantity: column}} or 'vx=Speed,...', "
+            f"got {type(columns).__name__}"
+        )
+    return {str(q): str(c) for q, c in columns.items()}
 
 
 def identify(

@@ -61,7 +61,7 @@ MeasuredData data_from_columns(const std::string& source, const std::vector<std:
     t.rows[i].line = static_cast<int>(i + 1);
     for (std::vector<std::string>& c : cells) t.rows[i].cells.push_back(std::move(c[i]));
   }
-  return measured_data_from_table(t, renames);
+  return measured_data_from_table(t, renames, KeyStyle::python);
 }
 
 std::vector<double> forces_of(const std::vector<Resultants<double>>& r) {
@@ -136,12 +136,25 @@ void put_results(nb::dict& out, const IdentifyRun& run) {
   out["steps"] = steps;
 }
 
+// columns= as "vx=Speed,omega=Rate" or a mapping {quantity: header cell} (any characters in the
+// cell, commas too); errors name Python's keyword.
+ColumnRenames renames_of(const nb::object& renames) {
+  if (renames.is_none()) return {};
+  if (nb::isinstance<nb::str>(renames))
+    return parse_column_renames(nb::cast<std::string>(renames), KeyStyle::python);
+  ColumnRenames out;
+  for (const auto& [quantity, column] : nb::cast<nb::dict>(renames))
+    add_column_rename(out, nb::cast<std::string>(nb::str(quantity)),
+                      nb::cast<std::string>(nb::str(column)), KeyStyle::python);
+  return out;
+}
+
 // contensou.identify(): the data from a CSV path or named columns, the request as the app's.
 nb::dict identify(std::optional<std::string> path, std::string source,
                   const std::vector<std::string>& names, const nb::list& columns,
-                  const std::string& renames, IdentifyRequest request) {
-  const ColumnRenames column_renames = parse_column_renames(renames);
-  MeasuredData data = path ? read_measured_csv(*path, column_renames)
+                  const nb::object& renames, IdentifyRequest request) {
+  const ColumnRenames column_renames = renames_of(renames);
+  MeasuredData data = path ? read_measured_csv(*path, column_renames, KeyStyle::python)
                            : data_from_columns(source, names, columns, column_renames);
   if (!source.empty()) data.source = source;
   request.style = KeyStyle::python;

@@ -40,13 +40,6 @@ const std::vector<RequestKey>& identify_request_keys() {
   return keys;
 }
 
-std::string key_name(std::string_view key, KeyStyle style) {
-  std::string name(key);
-  if (style == KeyStyle::python) return name;
-  std::replace(name.begin(), name.end(), '_', '-');
-  return "--" + name;
-}
-
 const char* key_help(std::string_view key) {
   for (const RequestKey& k : identify_request_keys())
     if (key == k.key) return k.help;

@@ -198,7 +198,7 @@ int renamed_column(const LabHeader& in, const std::string& quantity, const std::
     if (split_header(in.header[i]).stem == trim(target)) {
       if (found >= 0)
         throw ParseError(in.file, in.header_line, 0,
-                         "--columns " + quantity + "=" + target + ": " + column_ref(in, found) +
+                         rename_option(quantity, target, in.style) + ": " + column_ref(in, found) +
                              " and " + column_ref(in, static_cast<int>(i)) +
                              " both match; give the whole header cell");
       found = static_cast<int>(i);
@@ -207,7 +207,7 @@ int renamed_column(const LabHeader& in, const std::string& quantity, const std::
   std::string names;
   for (const std::string& h : in.header) names += (names.empty() ? "'" : ", '") + trim(h) + "'";
   throw ParseError(in.file, in.header_line, 0,
-                   "--columns " + quantity + "=" + target + ": the header has no column '" +
+                   rename_option(quantity, target, in.style) + ": the header has no column '" +
                        target + "' (columns: " + names + ")");
 }
 
@@ -222,8 +222,8 @@ void assign(LabColumns& out, int q, int index, const LabHeader& in) {
     throw ParseError(in.file, in.header_line, 0,
                      "two columns for " + std::string(kQuantities[q].name) + ": " +
                          column_ref(in, c.index) + " and " + column_ref(in, index) +
-                         "; keep one, or choose one with --columns " + kQuantities[q].name +
-                         "=NAME");
+                         "; keep one, or choose one with " +
+                         rename_option(kQuantities[q].name, "NAME", in.style));
   c.index = index;
   c.header = header;
 }
@@ -297,7 +297,16 @@ std::vector<std::string> LabColumns::notes() const {
   return notes;
 }
 
-ColumnRenames parse_column_renames(const std::string& text) {
+void add_column_rename(ColumnRenames& renames, const std::string& quantity,
+                       const std::string& column, KeyStyle style) {
+  const std::string q = trim(quantity);
+  if (!quantity_of(q) || iequals(q, "time"))
+    throw std::invalid_argument(rename_option(q, column, style) + ": '" + q +
+                                "' is not a quantity (vx, vy, omega, Fx, Fy, Mz, Fz, t)");
+  renames.emplace_back(q, trim(column));
+}
+
+ColumnRenames parse_column_renames(const std::string& text, KeyStyle style) {
   ColumnRenames renames;
   std::size_t start = 0;
   while (start <= text.size()) {
@@ -307,13 +316,9 @@ ColumnRenames parse_column_renames(const std::string& text) {
     if (part.empty()) continue;
     const auto eq = part.find('=');
     if (eq == std::string::npos)
-      throw std::invalid_argument("--columns '" + part +
-                                  "': expected QUANTITY=COLUMN, e.g. vx=Speed");
-    const std::string quantity = trim(part.substr(0, eq));
-    if (!quantity_of(quantity) || iequals(quantity, "time"))
-      throw std::invalid_argument("--columns '" + part + "': '" + quantity +
-                                  "' is not a quantity (vx, vy, omega, Fx, Fy, Mz, Fz, t)");
-    renames.emplace_back(quantity, trim(part.substr(eq + 1)));
+      throw std::invalid_argument(std::string(style == KeyStyle::python ? "columns" : "--columns") +
+                                  " '" + part + "': expected QUANTITY=COLUMN, e.g. vx=Speed");
+    add_column_rename(renames, part.substr(0, eq), part.substr(eq + 1), style);
   }
   return renames;
 }

@@ -40,7 +40,7 @@ bool header_looks_like_data(const CsvTable& t) {
 
 // A column of the file that is not read but looks like a misspelt known column (or the same
 // quantity in another unit) while that column is absent: the data would be silently lost.
-void refuse_near_misses(const CsvTable& t, const LabColumns& cols) {
+void refuse_near_misses(const CsvTable& t, const LabColumns& cols, KeyStyle style) {
   std::vector<std::string> read = kKnownColumns;  // not suggested: the columns read anyway
   for (const LabColumn& c : cols.column)
     if (c.present()) read.push_back(t.header[static_cast<std::size_t>(c.index)]);
@@ -50,12 +50,13 @@ void refuse_near_misses(const CsvTable& t, const LabColumns& cols) {
     const std::string close = t.closest_column(k, read);
     if (close.empty()) continue;
     const int col = t.column(close);
-    throw ParseError(t.file, t.header_line, 0,
-                     "column '" + close + "' (" + std::to_string(col + 1) +
-                         ") is not a column this reader knows: did you mean '" + k +
-                         "'? (columns: vx_mps, vy_mps, omega_radps, Fx_N, Fy_N, Mz_Nm, Fz_N, t_s, "
-                         "or the same with a unit: 'vx [km/h]', omega_rpm; or map it: --columns " +
-                         quantity_name(static_cast<MeasuredQuantity>(q)) + "=NAME)");
+    throw ParseError(
+        t.file, t.header_line, 0,
+        "column '" + close + "' (" + std::to_string(col + 1) +
+            ") is not a column this reader knows: did you mean '" + k +
+            "'? (columns: vx_mps, vy_mps, omega_radps, Fx_N, Fy_N, Mz_Nm, Fz_N, t_s, "
+            "or the same with a unit: 'vx [km/h]', omega_rpm; or map it: " +
+            rename_option(quantity_name(static_cast<MeasuredQuantity>(q)), "NAME", style) + ")");
   }
 }
 
@@ -64,14 +65,14 @@ void refuse_near_misses(const CsvTable& t, const LabColumns& cols) {
 namespace {
 
 // A missing required column, a near miss, no channel: refused naming the header line.
-void require_columns(const CsvTable& t, const LabColumns& cols) {
+void require_columns(const CsvTable& t, const LabColumns& cols, KeyStyle style) {
   for (MeasuredQuantity q : {MeasuredQuantity::vx, MeasuredQuantity::vy, MeasuredQuantity::omega})
     if (!cols[q].present())
       throw ParseError(t.file, t.header_line, 0,
                        std::string("missing required column '") + si_column_name(q) + "'" +
-                           did_you_mean(t, si_column_name(q)) + " (or give its name: --columns " +
-                           quantity_name(q) + "=NAME)");
-  refuse_near_misses(t, cols);
+                           did_you_mean(t, si_column_name(q)) + " (or give its name: " +
+                           rename_option(quantity_name(q), "NAME", style) + ")");
+  refuse_near_misses(t, cols, style);
   if (!cols[MeasuredQuantity::Fx].present() && !cols[MeasuredQuantity::Fy].present() &&
       !cols[MeasuredQuantity::Mz].present())
     throw ParseError(t.file, t.header_line, 0, "no measured channel (need Fx_N, Fy_N or Mz_Nm)");
@@ -90,15 +91,16 @@ std::optional<double> si_value(const CsvTable& t, const CsvRow& row, const LabCo
 
 }  // namespace
 
-MeasuredData measured_data_from_table(const CsvTable& t, const ColumnRenames& renames) {
+MeasuredData measured_data_from_table(const CsvTable& t, const ColumnRenames& renames,
+                                      KeyStyle style) {
   if (header_looks_like_data(t))
     throw ParseError(t.file, t.header_line, 0,
                      "the first row holds numbers, not column names: the file needs a header row "
                      "(vx_mps,vy_mps,omega_radps and at least one of Fx_N,Fy_N,Mz_Nm)");
-  const LabHeader header{t.header, t.rows.empty() ? nullptr : &t.rows.front().cells, t.file,
-                         t.header_line, t.rows.empty() ? 0 : t.rows.front().line};
+  const LabHeader header{t.header,      t.rows.empty() ? nullptr : &t.rows.front().cells, t.file,
+                         t.header_line, t.rows.empty() ? 0 : t.rows.front().line,         style};
   const LabColumns cols = resolve_lab_columns(header, renames);
-  require_columns(t, cols);
+  require_columns(t, cols, style);
   MeasuredData data;
   data.source = t.file;
   data.column_notes = cols.notes();
@@ -129,8 +131,9 @@ MeasuredData measured_data_from_table(const CsvTable& t, const ColumnRenames& re
   return data;
 }
 
-MeasuredData read_measured_csv(const std::string& path, const ColumnRenames& renames) {
-  return measured_data_from_table(read_csv(path), renames);
+MeasuredData read_measured_csv(const std::string& path, const ColumnRenames& renames,
+                               KeyStyle style) {
+  return measured_data_from_table(read_csv(path), renames, style);
 }
 
 std::optional<LoadFromData> normal_load_from_data(const MeasuredData& data) {

@@ -21,9 +21,10 @@ std::string write(const std::string& name, const std::string& text) {
 }
 
 // The message of the ParseError reading `text` throws ("" if none).
-std::string error_of(const std::string& text, const ColumnRenames& renames = {}) {
+std::string error_of(const std::string& text, const ColumnRenames& renames = {},
+                     KeyStyle style = KeyStyle::command_line) {
   try {
-    read_measured_csv(write("lab_bad.csv", text), renames);
+    read_measured_csv(write("lab_bad.csv", text), renames, style);
   } catch (const ParseError& e) {
     return e.what();
   }
@@ -157,6 +158,33 @@ TEST(LabColumns, RenamesMapOtherNamesWithTheirUnits) {
       << none;
   EXPECT_THROW(parse_column_renames("speed=Speed"), std::invalid_argument);
   EXPECT_THROW(parse_column_renames("vx"), std::invalid_argument);
+}
+
+// The same refusals from Python name its keyword (columns={...}), never the app's --columns.
+TEST(LabColumns, MessagesNameTheRenameAsEachFrontEndWritesIt) {
+  const std::string text = "Speed,vy_mps,Rate,Fx_N\n1,0,3,4\n";
+  const std::string app = error_of(text, parse_column_renames("vx=Speed"));
+  EXPECT_NE(app.find("(or give its name: --columns omega=NAME)"), std::string::npos) << app;
+  const std::string py =
+      error_of(text, parse_column_renames("vx=Speed", KeyStyle::python), KeyStyle::python);
+  EXPECT_NE(py.find("(or give its name: columns={'omega': 'NAME'})"), std::string::npos) << py;
+  EXPECT_EQ(py.find("--columns"), std::string::npos) << py;
+  const std::string missing = error_of(text, {{"vx", "Velocity"}}, KeyStyle::python);
+  EXPECT_NE(missing.find("columns={'vx': 'Velocity'}: the header has no column 'Velocity'"),
+            std::string::npos)
+      << missing;
+  ColumnRenames renames;
+  try {
+    add_column_rename(renames, "speed", "Speed", KeyStyle::python);
+    ADD_FAILURE() << "an unknown quantity was accepted";
+  } catch (const std::invalid_argument& e) {
+    EXPECT_EQ(
+        std::string(e.what()).rfind("columns={'speed': 'Speed'}: 'speed' is not a quantity", 0), 0u)
+        << e.what();
+  }
+  add_column_rename(renames, " Mz ", "Torque, N=m", KeyStyle::python);  // any characters
+  ASSERT_EQ(renames.size(), 1u);
+  EXPECT_EQ(renames[0], (std::pair<std::string, std::string>{"Mz", "Torque, N=m"}));
 }
 
 TEST(LabColumns, TheLoadComesFromTheFzColumnInAnyUnit) {

@@ -122,7 +122,7 @@ def test_bad_input_is_a_value_error_with_the_message(tmp_path):
         c.identify(bad, radius=0.087)
     with pytest.raises(ValueError, match="no measured channel"):
         c.identify(df[["vx_mps", "vy_mps", "omega_radps"]], radius=0.087)
-    with pytest.raises(ValueError, match="--profile nowhere.csv: no such file"):
+    with pytest.raises(ValueError, match="^profile = nowhere.csv: no such file"):
         c.identify(df, radius=0.087, profile="nowhere.csv")
     with pytest.raises(ValueError, match="unknown"):
         c.identify(df, radius=0.087, fix={"zeta": 1.0}, loop=False)
@@ -162,6 +162,24 @@ def test_units_in_names_and_renamed_columns_are_read_as_the_app_reads_them():
         c.identify(lab.drop(columns=["Fx [kN]", "Fy_N"]), radius=0.087, loop=False)
     with pytest.raises(ValueError, match=r"row 2 \(index 1\): column 'operator'|operator"):
         c.identify(lab, radius=0.087, loop=False, columns="Mz=operator")
+
+
+def test_column_errors_name_the_keyword_as_python_writes_it():
+    """Messages about columns point at ``columns=``, never at the app's ``--columns``; a header
+    cell with a comma or an equals sign is mapped as written."""
+    df = pd.read_csv(DATA, comment="#")
+    with pytest.raises(ValueError, match=r"or give its name: columns=\{'omega': 'NAME'\}"):
+        c.identify(df.rename(columns={"omega_radps": "Rate"}), radius=0.087, loop=False)
+    with pytest.raises(ValueError, match=r"columns=\{'vx': 'Speed'\}: the header has no column"):
+        c.identify(df, radius=0.087, loop=False, columns={"vx": "Speed"})
+    with pytest.raises(ValueError, match=r"'speed' is not a quantity"):
+        c.identify(df, radius=0.087, loop=False, columns={"speed": "vx_mps"})
+    with pytest.raises(TypeError, match="columns: expected a mapping"):
+        c.identify(df, radius=0.087, loop=False, columns=["vx", "Speed"])
+    odd = df.rename(columns={"Mz_Nm": "Torque, N=m"})
+    r = c.identify(odd, radius=0.087, loop=False, columns={"Mz": "Torque, N=m"}, **PROFILE)
+    si = c.identify(df, radius=0.087, loop=False, **PROFILE)
+    assert r.parameters["M0_Nm"].value == pytest.approx(si.parameters["M0_Nm"].value, rel=1e-9)
 
 
 def test_gross_errors_are_named_and_left_out_as_the_app_does(identify_app, tmp_path):

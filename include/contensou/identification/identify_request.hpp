@@ -12,12 +12,10 @@
 
 #include "contensou/friction/error.hpp"
 #include "contensou/identification/identify.hpp"
+#include "contensou/identification/lab_columns.hpp"
 #include "contensou/identification/report.hpp"
 
 namespace contensou {
-
-// How messages name a key: as the app's option (--normal-load) or Python's keyword.
-enum class KeyStyle { command_line, python };
 
 struct IdentifyRequest {
   double radius_m = 0.0;                 // radius
@@ -48,8 +46,7 @@ struct RequestKey {
 };
 const std::vector<RequestKey>& identify_request_keys();
 
-// "normal_load" as the style writes it ("--normal-load" on the command line); the key's help.
-std::string key_name(std::string_view key, KeyStyle style);
+// The key's help (key_name, key_style.hpp: the key as the app or Python writes it).
 const char* key_help(std::string_view key);
 
 struct IdentifyRun {

@@ -11,6 +11,8 @@
 #include <utility>
 #include <vector>
 
+#include "contensou/identification/key_style.hpp"
+
 namespace contensou {
 
 enum class MeasuredQuantity { vx, vy, omega, Fx, Fy, Mz, Fz, t };
@@ -53,7 +55,13 @@ using ColumnRenames = std::vector<std::pair<std::string, std::string>>;
 
 // Parses "vx=Speed,omega=Wheel rate [rpm]" into renames; throws std::invalid_argument naming a
 // part without '=' or an unknown quantity (with the list of quantities).
-ColumnRenames parse_column_renames(const std::string& text);
+ColumnRenames parse_column_renames(const std::string& text,
+                                   KeyStyle style = KeyStyle::command_line);
+
+// Appends the rename quantity -> column (a header cell, any characters), or throws
+// std::invalid_argument naming an unknown quantity.
+void add_column_rename(ColumnRenames& renames, const std::string& quantity,
+                       const std::string& column, KeyStyle style = KeyStyle::command_line);
 
 struct LabHeader {
   const std::vector<std::string>& header;     // the header row's cells
@@ -61,6 +69,7 @@ struct LabHeader {
   std::string file;                           // for messages
   int header_line = 0;                        // 1-based
   int first_row_line = 0;                     // 1-based
+  KeyStyle style = KeyStyle::command_line;    // how messages name a rename
 };
 
 // Resolves the columns. Throws ParseError naming file, line and column for: a unit this reader

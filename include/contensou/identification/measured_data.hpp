@@ -42,11 +42,13 @@ struct MeasuredData {
 // converted to SI. Throws ParseError naming file, line and column for a malformed or non-finite
 // cell, a missing required column or an empty kinematic cell, a unit this reader does not
 // convert, and a file without any channel.
-MeasuredData read_measured_csv(const std::string& path, const ColumnRenames& renames = {});
+MeasuredData read_measured_csv(const std::string& path, const ColumnRenames& renames = {},
+                               KeyStyle style = KeyStyle::command_line);
 
 // The same from a table already in memory (read_csv's, or a DataFrame's columns written as
 // cells, with `rows_numbered` set): the same columns, units, renames and refusals.
-MeasuredData measured_data_from_table(const CsvTable& table, const ColumnRenames& renames = {});
+MeasuredData measured_data_from_table(const CsvTable& table, const ColumnRenames& renames = {},
+                                      KeyStyle style = KeyStyle::command_line);
 
 // The normal load the data carry in their Fz column: the mean over the rows that have it, the
 // largest relative deviation from it and the number of rows; nullopt if no row has one.

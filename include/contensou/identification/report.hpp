@@ -10,6 +10,7 @@
 #include "contensou/friction/pressure_profile.hpp"
 #include "contensou/identification/closed_loop.hpp"
 #include "contensou/identification/fit.hpp"
+#include "contensou/identification/key_style.hpp"
 #include "contensou/identification/outliers.hpp"
 
 namespace contensou {
@@ -48,7 +49,8 @@ struct ProfileChoice {
   std::string description;
   std::optional<double> rms_residual_pa, max_residual_pa;  // of a smoothing fit
 };
-ProfileChoice choose_profile(const std::string& spec, int smoothing = 0, bool clip = false);
+ProfileChoice choose_profile(const std::string& spec, int smoothing = 0, bool clip = false,
+                             KeyStyle style = KeyStyle::command_line);
 
 // The report's description of a run: the file (or source), the data's point and value counts,
 // the radius, the load and the profile as chosen.

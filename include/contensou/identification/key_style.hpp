@@ -1,0 +1,20 @@
+// How messages name an option of the identification: as the app's command line writes it
+// (--normal-load, --columns vx=Speed) or as Python's keyword (normal_load, columns={'vx':
+// 'Speed'}), so that an error points at what the user typed.
+#pragma once
+
+#include <string>
+#include <string_view>
+
+namespace contensou {
+
+enum class KeyStyle { command_line, python };
+
+// "normal_load" as the style writes it: "--normal-load" or "normal_load".
+std::string key_name(std::string_view key, KeyStyle style);
+
+// The rename of `quantity` to the header cell `column`: "--columns vx=Speed" or
+// "columns={'vx': 'Speed'}".
+std::string rename_option(const std::string& quantity, const std::string& column, KeyStyle style);
+
+}  // namespace contensou
