@@ -169,8 +169,10 @@ int run_simulate(SimulateArgs a) {
     << a.profile << ", R = " << a.radius << " m, p* = " << patch.reference_pressure_pa
     << " Pa (N = " << normal_load(patch) << " N), f = " << a.friction << ", kx = " << a.kx
     << ", ky = " << a.ky << ", kappa = " << a.kappa << "\nnoise " << a.noise << " level "
-    << a.spec.noise_level << ", seed " << a.spec.seed << ", psi in [" << a.spec.psi_min << ", "
-    << a.spec.psi_max << "], u = omega R = " << a.spec.spin_speed_mps << " m/s";
+    << a.spec.noise_level;
+  if (a.spec.noise == SimulatedNoise::load_cell) c << " growth " << a.spec.noise_growth;
+  c << ", seed " << a.spec.seed << ", psi in [" << a.spec.psi_min << ", " << a.spec.psi_max
+    << "], u = omega R = " << a.spec.spin_speed_mps << " m/s";
   write_measured_csv(a.out, d, c.str());
   std::printf("wrote %s: %zu points (N = %.1f N)\n", a.out.c_str(), d.points.size(),
               normal_load(patch));
@@ -250,8 +252,12 @@ CLI::App* add_simulate_options(CLI::App& app, SimulateArgs& sim) {
                    "several sweeps, one per sliding direction [rad], e.g. 0,1.5708")
       ->delimiter(',');
   simulate->add_option("--noise", sim.noise,
-                       "none|relative-uniform|relative-gaussian|additive-gaussian");
-  simulate->add_option("--noise-level", sim.spec.noise_level, "noise amplitude (relative)");
+                       "none|relative-uniform|relative-gaussian|additive-gaussian|load-cell");
+  simulate->add_option("--noise-level", sim.spec.noise_level,
+                       "noise amplitude (relative; of the channel's peak for additive-gaussian "
+                       "and the constant part a of load-cell)");
+  simulate->add_option("--noise-growth", sim.spec.noise_growth,
+                       "load-cell noise: sigma = level max|y| + growth |y|");
   simulate->add_option("--seed", sim.spec.seed, "random seed");
   simulate->add_option("--time-step", sim.spec.time_step_s, "t_s step between points [s]");
   simulate->add_option("--speed-drop", sim.speed_drop,

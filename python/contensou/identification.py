@@ -238,7 +238,7 @@ def identify(
     fix: Optional[Mapping[str, float]] = None,
     loss: str = "none",
     loss_scale: float = 2.0,
-    noise_model: str = "additive",
+    noise_model: str = "auto",
     noise_scale: Optional[tuple[float, float, float]] = None,
     alpha: float = 1e-3,
     speed_inside_integrals: bool = True,

@@ -5,6 +5,8 @@
 #include <Eigen/QR>
 #include <algorithm>
 #include <cmath>
+#include <limits>
+#include <tuple>
 
 #include "contensou/identification/statistics.hpp"
 
@@ -160,11 +162,11 @@ std::vector<double> speed_grid(const MeasuredData& d, double R) {
 // estimate on the training rows, delta = -(J_T' J_T)^-1 J_T' r_T, and the held-out residual is
 // r_H + J_H delta (the one-step approximation of refitting, accurate near the optimum).
 double cv_error(const MeasuredData& data, const ModelSpec& spec, const std::array<double, K>& theta,
-                const std::array<double, kChannels>& scale, NoiseModel noise_model, int folds) {
+                const NoiseScales& noise, int folds) {
   Eigen::VectorXd r;
   Eigen::MatrixXd Jall;
   std::vector<int> row_point;
-  weighted_jacobian(data, spec, theta, scale, noise_model, &r, &Jall, {}, &row_point);
+  weighted_jacobian(data, spec, theta, noise, &r, &Jall, {}, &row_point);
   const Eigen::MatrixXd J = free_columns(Jall, spec);
   double sum = 0.0;
   int n = 0;
@@ -234,11 +236,11 @@ std::vector<CandidateScore> score_candidates(const MeasuredData& data, const Loo
                                              std::vector<Eigen::VectorXd>* directions) {
   ModelSpec scoring = st.spec;
   if (!st.spec.uses_exact()) scoring.free[kShapeBlend] = true;
-  const NoiseModel noise_model = noise.model;
+  const NoiseScales scales = noise_scales_of(st.fit);
   build_laws(scoring, noise.stop);
   Eigen::VectorXd r;
   Eigen::MatrixXd J;
-  weighted_jacobian(data, scoring, st.theta, st.fit.noise_scale, noise_model, &r, &J);
+  weighted_jacobian(data, scoring, st.theta, scales, &r, &J);
   const std::vector<double> grid = speed_grid(data, st.spec.radius_m);
   *best_speed_ref = grid[grid.size() / 2];
   std::vector<CandidateScore> scores;
@@ -254,7 +256,7 @@ std::vector<CandidateScore> score_candidates(const MeasuredData& data, const Loo
         th[kSpeedRef] = w;
         Eigen::VectorXd rs;
         Eigen::MatrixXd Js;
-        weighted_jacobian(data, sp, th, st.fit.noise_scale, noise_model, &rs, &Js);
+        weighted_jacobian(data, sp, th, scales, &rs, &Js);
         const double lm = lm_statistic(rs, Js, st.spec, kSpeedDrop);
         if (lm > best) {
           best = lm;
@@ -298,8 +300,7 @@ ModelSpec extend(const ModelSpec& spec, const Candidate& c, double speed_ref,
 // Test step: the extension against the current model by (1) the likelihood-ratio test at
 // `threshold`, (2) BIC and (3) the cross-validated error; accepted when all three agree.
 LoopStep test_extension(const MeasuredData& data, const LoopState& cur, const LoopState& ext,
-                        const Candidate& c, double threshold, NoiseModel noise_model,
-                        const ClosedLoopOptions& loop) {
+                        const Candidate& c, double threshold, const ClosedLoopOptions& loop) {
   LoopStep trial;
   trial.effect = c.effect;
   trial.detail = c.detail;
@@ -310,10 +311,9 @@ LoopStep test_extension(const MeasuredData& data, const LoopState& cur, const Lo
   trial.threshold = threshold;
   trial.bic_before = cur.fit.bic;
   trial.bic_after = ext.fit.bic;
-  trial.cv_before =
-      cv_error(data, cur.spec, cur.theta, cur.fit.noise_scale, noise_model, loop.folds);
-  trial.cv_after =
-      cv_error(data, ext.spec, ext.theta, cur.fit.noise_scale, noise_model, loop.folds);
+  const NoiseScales scales = noise_scales_of(cur.fit);
+  trial.cv_before = cv_error(data, cur.spec, cur.theta, scales, loop.folds);
+  trial.cv_after = cv_error(data, ext.spec, ext.theta, scales, loop.folds);
   const bool lr_ok = trial.lr_p_value < trial.threshold;
   const bool bic_ok = trial.bic_after < trial.bic_before;
   const bool cv_ok = trial.cv_after < trial.cv_before;
@@ -385,6 +385,70 @@ void prune(const MeasuredData& data, const NoiseSettings& noise, const ClosedLoo
   }
 }
 
+// The noise scales of a fit as the noise step's parameters: a_c and b_c of each channel.
+std::vector<ParameterEstimate> noise_parameters(const FitReport& fit) {
+  std::vector<ParameterEstimate> out;
+  for (const ChannelDiagnostics& ch : fit.channels) {
+    const std::string unit = ch.channel == "Mz_Nm" ? "N m" : "N";
+    for (const auto& [name, value, u] :
+         {std::tuple{"noise_a_", ch.noise_scale, unit},
+          std::tuple{"noise_b_", ch.noise_slope, std::string("1")}}) {
+      ParameterEstimate e;
+      e.name = name + ch.channel;
+      e.unit = u;
+      e.value = value;
+      e.determined = false;  // no interval
+      out.push_back(e);
+    }
+  }
+  return out;
+}
+
+// The noise step (ClosedLoopOptions::choose_noise_model), after the effects: the model refitted
+// with a noise scale that grows with the value, sigma_ic = a_c + b_c |yhat_ic| (NoiseModel::affine,
+// fit.hpp), against one constant scale per channel, tested like an effect: the likelihood-ratio
+// test with one degree of freedom per measured channel (its slope b_c; the constant model is
+// b_c = 0, on the boundary of b_c >= 0, so chi-square with that many degrees of freedom is
+// conservative) at alpha, and BIC (two noise parameters per channel against one). Cross-
+// validation does not apply: the two models weight the residuals differently. Accepted, the
+// affine fit is the final one.
+void test_noise_growth(const MeasuredData& data, const NoiseSettings& noise,
+                       const ClosedLoopOptions& loop, LoopState& st, ClosedLoopReport& report) {
+  NoiseSettings affine = noise;
+  affine.model = NoiseModel::affine;
+  say(loop, "noise: refitting with a scale that grows with the value (a + b |y|)");
+  const LoopState grown = fit_state(data, st.spec, affine);
+  LoopStep step;
+  step.effect = kNoiseGrowthEffect;
+  step.detail = "a + b |y|";
+  step.lr_dof = static_cast<int>(st.fit.channels.size());
+  step.lr = std::max(0.0, st.fit.m2ll - grown.fit.m2ll);
+  step.lr_p_value = chi2_survival(step.lr, static_cast<double>(step.lr_dof));
+  step.threshold = loop.alpha;
+  step.bic_before = st.fit.bic;
+  step.bic_after = grown.fit.bic;
+  step.cv_before = step.cv_after = std::numeric_limits<double>::quiet_NaN();
+  step.error_before = st.fit.error;
+  step.error_after = grown.fit.error;
+  step.channels_before = st.fit.channels;
+  step.channels_after = grown.fit.channels;
+  step.fit_before = st.fit;
+  step.fit_after = grown.fit;
+  step.parameters = noise_parameters(grown.fit);
+  const bool lr_ok = step.lr_p_value < step.threshold;
+  const bool bic_ok = step.bic_after < step.bic_before;
+  step.accepted = lr_ok && bic_ok;
+  step.verdict = std::string(lr_ok ? "LR significant" : "LR not significant") +
+                 (bic_ok ? ", BIC improves" : ", BIC does not improve") +
+                 (step.accepted ? "; the noise grows with the value: the final fit weights each "
+                                  "value by 1 / (a + b |y|)"
+                                : "; one constant noise scale per channel is kept");
+  say(loop, std::string("noise: a scale growing with the value ") +
+                (step.accepted ? "accepted" : "rejected") + " (" + step.verdict + ")");
+  report.steps.push_back(step);
+  if (step.accepted) st = grown;
+}
+
 std::string step_label(int step) {
   return "step " + std::to_string(step) + ": ";
 }
@@ -420,9 +484,11 @@ struct StepFit {
 StepFit fit_step(const MeasuredData& data, const LoopState& cur, const ModelSpec& ext_spec,
                  const Candidate& c, double threshold, const NoiseSettings& noise,
                  const ClosedLoopOptions& loop) {
-  StepFit best{fit_state(data, ext_spec, noise), {}};
+  NoiseSettings first = noise;
+  if (loop.test_first_fit_iterations >= 0) first.solver_iterations = loop.test_first_fit_iterations;
+  StepFit best{fit_state(data, ext_spec, first), {}};
   throw_if_stopped(noise.stop);
-  best.step = test_extension(data, cur, best.ext, c, threshold, noise.model, loop);
+  best.step = test_extension(data, cur, best.ext, c, threshold, loop);
   int retries = 0;
   for (const ModelSpec& start : other_starts(ext_spec, c)) {
     if (!step_fit_failed(best.step)) break;
@@ -432,7 +498,7 @@ StepFit fit_step(const MeasuredData& data, const LoopState& cur, const ModelSpec
     ++retries;
     try {
       StepFit again{fit_state(data, start, noise), {}};
-      again.step = test_extension(data, cur, again.ext, c, threshold, noise.model, loop);
+      again.step = test_extension(data, cur, again.ext, c, threshold, loop);
       if (again.step.error_after < best.step.error_after) best = std::move(again);
     } catch (const Interrupted&) {
       throw;
@@ -549,6 +615,9 @@ ClosedLoopReport close_the_loop(const MeasuredData& data, const IdentificationOp
     if (!accepted_any) break;
   }
   prune(data, noise, loop, st, report);
+  if (loop.choose_noise_model && noise.model == NoiseModel::additive && !noise.given)
+    test_noise_growth(data, noise, loop, st, report);
+  report.noise_model = st.fit.noise_model;
   report.final_fit = st.fit;
   report.final_spec = st.spec;
   report.structure_remains = !st.fit.residual_white;

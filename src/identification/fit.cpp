@@ -95,6 +95,13 @@ std::array<double, kChannels> channel_magnitudes(const MeasuredData& d, double r
 // 1e-6 (relative). Below it the weights would come from rounding, not from noise.
 constexpr double kNoiseFloor = 1e-6;
 
+// Noise parameters estimated per measured channel: none when given, a_c and b_c for affine
+// noise, else s_c.
+int noise_parameters(const NoiseSettings& noise) {
+  if (noise.given) return 0;
+  return noise.model == NoiseModel::affine ? 2 : 1;
+}
+
 // Bounds that keep the model physical, on the packed active parameters.
 void set_bounds(ceres::Problem& problem, double* packed, const std::vector<int>& active) {
   for (std::size_t j = 0; j < active.size(); ++j) {
@@ -105,31 +112,50 @@ void set_bounds(ceres::Problem& problem, double* packed, const std::vector<int>&
   }
 }
 
-// Adds one residual block per point with measured values (weights from scale, and from the
-// prediction for relative noise); returns the number of residuals.
+// The noise scale of one value of channel c with prediction (or, in a first round, datum) yh:
+// s_c, s_c max(|yh|, floor_rel_c) or a_c + b_c |yh| (NoiseModel).
+double value_scale(const NoiseScales& n, int c, double yh, double floor_rel) {
+  switch (n.model) {
+    case NoiseModel::relative:
+      return n.scale[c] * std::max(std::abs(yh), floor_rel);
+    case NoiseModel::affine:
+      return n.scale[c] + n.slope[c] * std::abs(yh);
+    case NoiseModel::additive:
+      break;
+  }
+  return n.scale[c];
+}
+
+// How add_points weights the residuals: the noise scales, the relative noise's floor per
+// channel, the predictions the scales are taken at (empty: the data), the robust loss.
+struct Weighting {
+  NoiseScales noise;
+  std::array<double, kChannels> floor_rel{};
+  const std::vector<Resultants<double>>* prediction = nullptr;
+  RobustLoss loss = RobustLoss::none;
+  double loss_scale = 1.0;
+  int failing_point = -1;  // NoiseSettings::failing_point
+};
+
+// Adds one residual block per point with measured values (weights 1 / s_ic); returns the number
+// of residuals.
 int add_points(ceres::Problem& problem, const MeasuredData& data, const ModelSpec& spec,
                const std::vector<int>& active, const std::array<double, K>& theta_const,
-               double* packed, const std::array<double, kChannels>& scale, NoiseModel noise,
-               const std::array<double, kChannels>& floor_rel,
-               const std::vector<Resultants<double>>& prediction, const std::vector<char>& use,
-               RobustLoss loss_kind, double loss_scale, int failing_point = -1) {
+               double* packed, const Weighting& wt, const std::vector<char>& use) {
   int total = 0;
   for (std::size_t i = 0; i < data.points.size(); ++i) {
     if (!use.empty() && !use[i]) continue;
     const MeasuredPoint& pt = data.points[i];
-    auto* f =
-        new PointResidual{&spec, pt.kinematics, {},           {},
-                          {},    &active,       &theta_const, static_cast<int>(i) == failing_point};
+    auto* f = new PointResidual{
+        &spec, pt.kinematics, {},           {},
+        {},    &active,       &theta_const, static_cast<int>(i) == wt.failing_point};
     int m = 0;
     for (int c = 0; c < kChannels; ++c) {
       if (!pt.force[c]) continue;
       f->y[c] = *pt.force[c];
-      double sc = scale[c];
-      if (noise == NoiseModel::relative) {
-        const double yh = prediction.empty() ? *pt.force[c] : prediction[i].vector()(c);
-        sc *= std::max(std::abs(yh), floor_rel[c]);
-      }
-      f->w[c] = 1.0 / sc;
+      const bool predicted = wt.prediction && !wt.prediction->empty();
+      const double yh = predicted ? (*wt.prediction)[i].vector()(c) : *pt.force[c];
+      f->w[c] = 1.0 / value_scale(wt.noise, c, yh, wt.floor_rel[c]);
       f->slot[c] = m++;
     }
     if (m == 0) {
@@ -140,8 +166,8 @@ int add_points(ceres::Problem& problem, const MeasuredData& data, const ModelSpe
     cost->AddParameterBlock(static_cast<int>(active.size()));
     cost->SetNumResiduals(m);
     ceres::LossFunction* loss = nullptr;
-    if (loss_kind == RobustLoss::huber) loss = new ceres::HuberLoss(loss_scale);
-    if (loss_kind == RobustLoss::cauchy) loss = new ceres::CauchyLoss(loss_scale);
+    if (wt.loss == RobustLoss::huber) loss = new ceres::HuberLoss(wt.loss_scale);
+    if (wt.loss == RobustLoss::cauchy) loss = new ceres::CauchyLoss(wt.loss_scale);
     problem.AddResidualBlock(cost, loss, packed);
     total += m;
   }
@@ -231,6 +257,22 @@ NoiseSettings noise_settings_for(const IdentificationOptions& o) {
   n.failing_point = o.failing_point;
   n.stop = o.stop;
   return n;
+}
+
+const char* noise_model_name(NoiseModel model) {
+  switch (model) {
+    case NoiseModel::relative:
+      return "relative";
+    case NoiseModel::affine:
+      return "affine";
+    case NoiseModel::additive:
+      break;
+  }
+  return "additive";
+}
+
+NoiseScales noise_scales_of(const FitReport& fit) {
+  return {fit.noise_model, fit.noise_scale, fit.noise_slope};
 }
 
 const ParameterEstimate* FitReport::parameter(const std::string& name) const {
@@ -352,7 +394,10 @@ FitSetup prepare_fit(const MeasuredData& data, const ModelSpec& spec, const Nois
     throw InvalidArgument("fix", "F0_N, a, M0_Nm, m and kx",
                           "every parameter is fixed, nothing is left to fit: leave one free");
   int scales = 0;
-  for (int c = 0; c < kChannels; ++c) scales += s.counts[c] > 0 && !noise.given;
+  for (int c = 0; c < kChannels; ++c) scales += s.counts[c] > 0 ? noise_parameters(noise) : 0;
+  if (noise.given && noise.model == NoiseModel::affine)
+    throw InvalidArgument("noise scale", "given",
+                          "given noise scales are constant: use the additive or relative model");
   const int needed = s.p_free + scales + 1;
   if (s.n < needed)
     throw InvalidArgument("data", std::to_string(s.n) + " measured values",
@@ -373,11 +418,13 @@ struct Solution {
   std::vector<double> packed;  // the active parameters (Ceres' parameter block)
   std::array<double, K> theta{};
   std::array<double, kChannels> scale{};
+  std::array<double, kChannels> slope{};  // b_c of affine noise
   std::vector<Resultants<double>> prediction;
   ceres::Solver::Summary summary;
 };
 
-// Start noise scales: the given ones, or 5 % (of the channel's peak for additive noise).
+// Start noise scales: the given ones, or 5 % (of the channel's peak for additive and affine
+// noise; affine noise starts as additive, b_c = 0).
 std::array<double, kChannels> initial_noise_scales(const FitSetup& s) {
   std::array<double, kChannels> scale{};
   for (int c = 0; c < kChannels; ++c)
@@ -389,29 +436,85 @@ std::array<double, kChannels> initial_noise_scales(const FitSetup& s) {
   return scale;
 }
 
+// Affine noise of one channel from its residuals e_i and |yhat_i|: sigma_i = a + b |yhat_i|
+// by maximum likelihood of the Gaussian residuals (pseudo-likelihood of a variance function,
+// Carroll & Ruppert 1988, ch. 3). Written sigma_i = s w_i(t), w_i = (1 - t) + t |yhat_i| / peak
+// (s is sigma at the channel's peak), the scale has the closed form s^2(t) = sum (e_i / w_i)^2 /
+// dof, and t in [0, 0.99] minimises the profile -2 log L(t) = n log s^2(t) + 2 sum log w_i(t):
+// a grid of 34 points, then golden section in the best one's bracket. a = s (1 - t),
+// b = s t / peak; t = 0 is the additive model, t = 0.99 keeps a >= 1 % of sigma at the peak.
+std::array<double, 2> affine_noise(const std::vector<double>& e, const std::vector<double>& y,
+                                   double peak, double dof, double s_floor) {
+  const auto n = static_cast<double>(e.size());
+  const auto sum_sq = [&](double t, double* log_w) {
+    double ss = 0.0;
+    *log_w = 0.0;
+    for (std::size_t i = 0; i < e.size(); ++i) {
+      const double w = (1.0 - t) + t * y[i] / peak;
+      ss += e[i] * e[i] / (w * w);
+      *log_w += std::log(w);
+    }
+    return std::max(ss, 1e-300);
+  };
+  const auto m2ll = [&](double t) {
+    double log_w = 0.0;
+    const double ss = sum_sq(t, &log_w);
+    return n * std::log(ss) + 2.0 * log_w;
+  };
+  constexpr double t_max = 0.99;
+  constexpr int grid = 33;
+  int best = 0;
+  for (int k = 1; k <= grid; ++k)
+    if (m2ll(t_max * k / grid) < m2ll(t_max * best / grid)) best = k;
+  double lo = t_max * std::max(best - 1, 0) / grid, hi = t_max * std::min(best + 1, grid) / grid;
+  const double g = 0.5 * (std::sqrt(5.0) - 1.0);
+  for (int it = 0; it < 40; ++it) {
+    const double t1 = hi - g * (hi - lo), t2 = lo + g * (hi - lo);
+    if (m2ll(t1) < m2ll(t2))
+      hi = t2;
+    else
+      lo = t1;
+  }
+  double t = 0.5 * (lo + hi);
+  if (m2ll(t_max * best / grid) < m2ll(t)) t = t_max * best / grid;
+  double log_w = 0.0;
+  const double s = std::max(std::sqrt(sum_sq(t, &log_w) / std::max(dof, 1.0)), s_floor);
+  return {s * (1.0 - t), s * t / peak};
+}
+
 // Noise scales from the residual scatter of each channel, s_c^2 = sum e^2 / (n_c (1 - p / n))
-// (e relative to the prediction for relative noise); returns the largest relative change.
+// (e relative to the prediction for relative noise; affine_noise for affine noise); returns the
+// largest relative change (of sigma at the channel's peak for affine noise).
 double estimate_noise_scales(const FitSetup& s, const std::vector<Resultants<double>>& prediction,
-                             std::array<double, kChannels>& scale) {
+                             std::array<double, kChannels>& scale,
+                             std::array<double, kChannels>& slope) {
   double change = 0.0;
+  const bool relative = s.noise.model == NoiseModel::relative;
   for (int c = 0; c < kChannels; ++c) {
     if (s.counts[c] == 0 || s.noise.given) continue;
-    double ss = 0.0;
+    std::vector<double> e, y;
     for (std::size_t i = 0; i < s.data.points.size(); ++i) {
-      const auto& y = s.data.points[i].force[c];
-      if (!y || !s.used(i)) continue;
-      double e = *y - prediction[i].vector()(c);
-      if (s.noise.model == NoiseModel::relative)
-        e /= std::max(std::abs(prediction[i].vector()(c)), s.floor_rel[c]);
-      ss += e * e;
+      const auto& yi = s.data.points[i].force[c];
+      if (!yi || !s.used(i)) continue;
+      const double yh = prediction[i].vector()(c);
+      e.push_back((*yi - yh) / (relative ? std::max(std::abs(yh), s.floor_rel[c]) : 1.0));
+      y.push_back(std::abs(yh));
     }
     const double dof_c = s.counts[c] * (1.0 - static_cast<double>(s.p_free) / s.n);
-    const double s_floor = kNoiseFloor * (s.noise.model == NoiseModel::relative ? 1.0 : s.peak[c]);
-    const double s_new = std::max(std::sqrt(ss / std::max(dof_c, 1.0)), s_floor);
-    {
-      change = std::max(change, std::abs(s_new - scale[c]) / scale[c]);
-      scale[c] = s_new;
+    const double s_floor = kNoiseFloor * (relative ? 1.0 : s.peak[c]);
+    std::array<double, 2> ab{0.0, 0.0};
+    if (s.noise.model == NoiseModel::affine) {
+      ab = affine_noise(e, y, s.peak[c], dof_c, s_floor);
+    } else {
+      double ss = 0.0;
+      for (double ei : e) ss += ei * ei;
+      ab[0] = std::max(std::sqrt(ss / std::max(dof_c, 1.0)), s_floor);
     }
+    const double at_peak = scale[c] + slope[c] * s.peak[c];
+    change = std::max(
+        change, (std::abs(ab[0] - scale[c]) + std::abs(ab[1] - slope[c]) * s.peak[c]) / at_peak);
+    scale[c] = ab[0];
+    slope[c] = ab[1];
   }
   return change;
 }
@@ -489,13 +592,17 @@ Solution solve(const FitSetup& s) {
   const int rounds = fixed_scales ? 1 : std::max(1, s.noise.iterations);
   for (int round = 0; round < rounds; ++round) {
     sol.problem = std::make_unique<ceres::Problem>();
-    add_points(*sol.problem, s.data, s.spec, s.active, s.theta_const, sol.packed.data(), sol.scale,
-               s.noise.model, s.floor_rel, sol.prediction, s.use, s.noise.loss, s.noise.loss_scale,
-               s.noise.failing_point);
+    const Weighting wt{{s.noise.model, sol.scale, sol.slope},
+                       s.floor_rel,
+                       &sol.prediction,
+                       s.noise.loss,
+                       s.noise.loss_scale,
+                       s.noise.failing_point};
+    add_points(*sol.problem, s.data, s.spec, s.active, s.theta_const, sol.packed.data(), wt, s.use);
     set_bounds(*sol.problem, sol.packed.data(), s.active);
     ceres::Solver::Options opt;
     opt.linear_solver_type = ceres::DENSE_QR;
-    opt.max_num_iterations = 200;
+    opt.max_num_iterations = s.noise.solver_iterations;
     opt.function_tolerance = 1e-12;
     opt.gradient_tolerance = 1e-12;
     opt.parameter_tolerance = 1e-10;
@@ -513,7 +620,7 @@ Solution solve(const FitSetup& s) {
     for (std::size_t j = 0; j < s.active.size(); ++j) sol.theta[s.active[j]] = sol.packed[j];
     sol.prediction = evaluate_all(s.spec, sol.theta.data(), s.data);
     if (fixed_scales) break;
-    const double change = estimate_noise_scales(s, sol.prediction, sol.scale);
+    const double change = estimate_noise_scales(s, sol.prediction, sol.scale, sol.slope);
     if (round > 0 && change < 1e-3) break;
   }
   return sol;
@@ -675,8 +782,13 @@ void report_quality(const FitSetup& s, const Solution& sol, FitReport& report) {
       sub_pred.push_back(sol.prediction[i]);
     }
   report.prediction = sol.prediction;
+  report.noise_model = s.noise.model;
   report.noise_scale = sol.scale;
+  report.noise_slope = sol.slope;
   report.channels = residual_diagnostics(subset, sub_pred, s.spec.radius_m, sol.scale);
+  for (ChannelDiagnostics& d : report.channels)
+    for (int c = 0; c < kChannels; ++c)
+      if (d.channel == kChannelColumns[c]) d.noise_slope = sol.slope[c];
   report.residual_white = std::all_of(report.channels.begin(), report.channels.end(),
                                       [](const ChannelDiagnostics& d) { return d.white; });
   double log_det = 0.0, err2 = 0.0;
@@ -684,9 +796,8 @@ void report_quality(const FitSetup& s, const Solution& sol, FitReport& report) {
     if (!s.used(i)) continue;
     for (int c = 0; c < kChannels; ++c) {
       if (!s.data.points[i].force[c]) continue;
-      double sc = sol.scale[c];
-      if (s.noise.model == NoiseModel::relative)
-        sc *= std::max(std::abs(sol.prediction[i].vector()(c)), s.floor_rel[c]);
+      const double sc =
+          value_scale(noise_scales_of(report), c, sol.prediction[i].vector()(c), s.floor_rel[c]);
       log_det += std::log(2.0 * std::numbers::pi * sc * sc);
     }
   }
@@ -697,7 +808,7 @@ void report_quality(const FitSetup& s, const Solution& sol, FitReport& report) {
     err2 += rel * rel;
   }
   report.error = std::sqrt(err2 / std::max(measured, 1));
-  const int k_params = report.free_parameters + (s.noise.given ? 0 : measured);
+  const int k_params = report.free_parameters + measured * noise_parameters(s.noise);
   report.m2ll = log_det + report.chi2;
   report.aic = report.m2ll + 2.0 * k_params;
   report.bic = report.m2ll + k_params * std::log(static_cast<double>(report.residuals));
@@ -708,7 +819,7 @@ void report_quality(const FitSetup& s, const Solution& sol, FitReport& report) {
 int measured_values_needed(const MeasuredData& data, const ModelSpec& spec,
                            const NoiseSettings& noise) {
   int needed = static_cast<int>(std::count(spec.free.begin(), spec.free.end(), true)) + 1;
-  for (int c = 0; c < kChannels; ++c) needed += data.count(c) > 0 && !noise.given;
+  for (int c = 0; c < kChannels; ++c) needed += data.count(c) > 0 ? noise_parameters(noise) : 0;
   return needed;
 }
 
@@ -725,8 +836,9 @@ FitReport fit_model(const MeasuredData& data, const ModelSpec& spec, const Noise
   for (int i : setup.active)
     if (!undetermined[i]) est.push_back(i);
   report.free_parameters = static_cast<int>(est.size());
-  int estimated_scales = 0;  // each estimated noise scale uses up a degree of freedom too
-  for (int c = 0; c < kChannels; ++c) estimated_scales += setup.counts[c] > 0 && !noise.given;
+  int estimated_scales = 0;  // each estimated noise parameter uses up a degree of freedom too
+  for (int c = 0; c < kChannels; ++c)
+    estimated_scales += setup.counts[c] > 0 ? noise_parameters(noise) : 0;
   report.degrees_of_freedom = report.residuals - report.free_parameters - estimated_scales;
   const std::optional<Eigen::MatrixXd> cov = parameter_covariance(J, setup.active, est, report);
   report_parameters(spec, sol.theta, undetermined, est, cov, report);
@@ -737,8 +849,7 @@ FitReport fit_model(const MeasuredData& data, const ModelSpec& spec, const Noise
 }
 
 void weighted_jacobian(const MeasuredData& data, const ModelSpec& spec,
-                       const std::array<double, K>& theta_in,
-                       const std::array<double, kChannels>& scale, NoiseModel noise,
+                       const std::array<double, K>& theta_in, const NoiseScales& noise,
                        Eigen::VectorXd* r, Eigen::MatrixXd* J, const std::vector<char>& use,
                        std::vector<int>* row_point) {
   std::array<double, K> theta = theta_in;
@@ -756,8 +867,8 @@ void weighted_jacobian(const MeasuredData& data, const ModelSpec& spec,
   std::vector<double> packed(active.size());
   for (std::size_t j = 0; j < active.size(); ++j) packed[j] = theta[active[j]];
   ceres::Problem problem;
-  add_points(problem, data, spec, active, theta, packed.data(), scale, noise, floor_rel, pred, use,
-             RobustLoss::none, 1.0);
+  const Weighting wt{noise, floor_rel, &pred, RobustLoss::none, 1.0, -1};
+  add_points(problem, data, spec, active, theta, packed.data(), wt, use);
   if (row_point) {
     row_point->clear();
     for (std::size_t i = 0; i < data.points.size(); ++i) {

@@ -26,7 +26,10 @@ const std::vector<RequestKey>& identify_request_keys() {
       {"fix", "hold parameters fixed: NAME=VALUE (F0_N, a, M0_Nm, m, kx)"},
       {"loss", "robust loss: none, huber or cauchy"},
       {"loss_scale", "robust loss threshold, in noise scales"},
-      {"noise_model", "noise: additive (constant per channel) or relative"},
+      {"noise_model",
+       "noise: auto (one constant scale per channel, or a + b|y| per channel when the closed "
+       "loop's test prefers it; without the loop, constant), additive (constant per channel), "
+       "relative, or affine (a + b|y| per channel, as load cells)"},
       {"noise_scale", "given noise scales Fx, Fy, Mz [N, N, N m] (else estimated)"},
       {"loop", "close the loop (else fit the fractional law only)"},
       {"alpha",
@@ -79,7 +82,10 @@ void validate(const IdentifyRequest& r) {
                                 " with a CSV file");
   require_one_of(key("loss"), r.loss, {"none", "huber", "cauchy"});
   require_positive(key("loss_scale").c_str(), r.loss_scale);
-  require_one_of(key("noise_model"), r.noise_model, {"additive", "relative"});
+  require_one_of(key("noise_model"), r.noise_model, {"auto", "additive", "relative", "affine"});
+  if (r.noise_model == "affine" && !r.noise_scale.empty())
+    throw std::invalid_argument(key("noise_scale") + " gives constant scales: use " +
+                                key("noise_model") + " additive or relative with it");
   if (!r.noise_scale.empty() && r.noise_scale.size() != kChannels)
     throw std::invalid_argument(key("noise_scale") + " needs three values: Fx, Fy, Mz");
   for (double s : r.noise_scale) require_positive(key("noise_scale").c_str(), s);
@@ -126,7 +132,9 @@ IdentifyOptions identify_options(const IdentifyRequest& r, ProfileChoice& profil
            : r.loss == "cauchy" ? RobustLoss::cauchy
                                 : RobustLoss::none;
   f.loss_scale = r.loss_scale;
-  f.noise_model = r.noise_model == "relative" ? NoiseModel::relative : NoiseModel::additive;
+  f.noise_model = r.noise_model == "relative" ? NoiseModel::relative
+                  : r.noise_model == "affine" ? NoiseModel::affine
+                                              : NoiseModel::additive;
   if (!r.noise_scale.empty())
     f.noise_scale =
         std::array<double, kChannels>{r.noise_scale[0], r.noise_scale[1], r.noise_scale[2]};
@@ -137,6 +145,7 @@ IdentifyOptions identify_options(const IdentifyRequest& r, ProfileChoice& profil
     o.loop->alpha = r.alpha;
     o.loop->speed_inside_integrals = r.speed_inside_integrals;
     o.loop->progress = r.progress;
+    o.loop->choose_noise_model = r.noise_model == "auto" && r.noise_scale.empty();
   }
   return o;
 }

@@ -45,7 +45,13 @@ nlohmann::json model_json(const std::string& name, const std::vector<std::string
                     {"white", c.white}});
   }
   m["rms"] = rms;
+  m["noise_model"] = noise_model_name(fit.noise_model);
   m["noise_scale"] = noise;
+  if (fit.noise_model == NoiseModel::affine) {
+    nlohmann::json slope = nlohmann::json::object();
+    for (const ChannelDiagnostics& c : fit.channels) slope[c.channel] = c.noise_slope;
+    m["noise_slope"] = slope;  // sigma = noise_scale + noise_slope |y|
+  }
   m["diagnostics"] = diag;
   m["residual_white"] = fit.residual_white;
   m["aic"] = fit.aic;
@@ -168,6 +174,7 @@ nlohmann::json loop_report(const ReportInput& info, const ClosedLoopReport& loop
   r["final"] = model_json(loop.final_spec.uses_exact() ? "exact" : "fractional",
                           loop.accepted_effects, loop.final_fit);
   r["error_after"] = loop.final_fit.error;
+  r["noise_model"] = noise_model_name(loop.noise_model);
   r["structure_remains"] = loop.structure_remains;
   r["summary"] = loop_summary(loop);
   r["warnings"] = fit_warnings(loop.final_fit);

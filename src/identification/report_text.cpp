@@ -64,6 +64,12 @@ std::string channels_text(const FitReport& fit) {
                   c.white ? "yes" : "no");
     s += line;
   }
+  if (fit.noise_model == NoiseModel::affine) {
+    s += "noise grows with the value: sigma = a + b |y|, a in the noise scale column, b =";
+    for (const ChannelDiagnostics& c : fit.channels)
+      s += " " + fmt("%.4g", c.noise_slope) + " (" + c.channel + ")";
+    s += "\n";
+  }
   return s;
 }
 
@@ -112,6 +118,8 @@ std::string legend_text() {
          "        accepted    LR p-value below the threshold, and BIC and CV both lower\n"
          "        FAILED FIT  the extended fit ended worse than the model it extends (its "
          "optimiser failed)\n"
+         "        noise_growth  a noise scale growing with the value, a + b |y| per channel, "
+         "against a constant one: LR (one degree of freedom per channel) at alpha, and BIC\n"
          "        error       rms over the channels of (channel rms / channel's largest "
          "|value|)\n"
          "        white       the runs and lag-1 tests find no structure left in the residual "
@@ -133,6 +141,8 @@ std::string accepted_text(const ClosedLoopReport& loop) {
       notes.insert(notes.end(), st.separation.begin(), st.separation.end());
     }
   if (loop.accepted_effects.empty()) s += " none";
+  if (loop.noise_model == NoiseModel::affine)
+    s += "\nnoise: grows with the value (a + b |y| per channel); the final fit is weighted by it";
   for (const std::string& n : notes) s += "\nAMBIGUOUS: " + n;
   s += "\nerror before " + fmt("%.4f", loop.base.error) + ", after " +
        fmt("%.4f", loop.final_fit.error) + "\n";
@@ -152,15 +162,18 @@ std::string in_words(const std::string& effect) {
       {"anisotropy", "friction differs along and across the patch"},
       {"pressure_shift_y", "the pressure centre is shifted sideways"},
       {"channel_offset", "a channel reads a constant offset (load-cell zero drift)"},
-      {"channel_crosstalk", "one load-cell channel picks up another (crosstalk)"}};
+      {"channel_crosstalk", "one load-cell channel picks up another (crosstalk)"},
+      {kNoiseGrowthEffect,
+       "the noise grows with the value (sigma = a + b |y| per channel, as a load cell's)"}};
   const auto it = words.find(effect);
   return it == words.end() ? effect : it->second;
 }
 
-std::string join(const std::vector<std::string>& parts, const std::string& last) {
+std::string join(const std::vector<std::string>& parts, const std::string& middle,
+                 const std::string& last) {
   std::string s;
   for (std::size_t i = 0; i < parts.size(); ++i)
-    s += (i == 0 ? "" : i + 1 == parts.size() ? last : "; ") + parts[i];
+    s += (i == 0 ? "" : i + 1 == parts.size() ? last : middle) + parts[i];
   return s;
 }
 
@@ -177,9 +190,9 @@ std::string loop_summary(const ClosedLoopReport& loop) {
       not_needed.push_back(st.effect);
   }
   std::string s = shown.empty() ? "the data need nothing beyond the fractional law"
-                                : "the data show that " + join(shown, "; and ");
-  if (!not_needed.empty()) s += ". Tried and not needed: " + join(not_needed, ", ");
-  if (!failed.empty()) s += ". Not decided (the fit failed): " + join(failed, ", ");
+                                : "the data show that " + join(shown, "; ", "; and ");
+  if (!not_needed.empty()) s += ". Tried and not needed: " + join(not_needed, ", ", ", ");
+  if (!failed.empty()) s += ". Not decided (the fit failed): " + join(failed, ", ", ", ");
   const std::vector<std::string> warnings = fit_warnings(loop.final_fit);
   s += ". The fit is limited by ";
   if (loop.structure_remains)
@@ -236,6 +249,8 @@ std::vector<std::string> fit_warnings(const FitReport& fit) {
 }
 
 bool step_fit_failed(const LoopStep& st) {
+  // The noise step reweights the values: its unweighted error may rise.
+  if (st.effect == kNoiseGrowthEffect) return false;
   // The extended model contains the one before it, so at its optimum the error cannot be
   // larger; a relative 1e-6 allows for the solvers' tolerances.
   return st.error_after > st.error_before * (1.0 + 1e-6) + 1e-12;

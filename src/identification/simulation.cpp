@@ -32,7 +32,9 @@ MeasuredData diagram_kinematics(const DiagramSpec& s) {
 
 void add_noise(MeasuredData& d, const DiagramSpec& s) {
   require_non_negative("noise level", s.noise_level);
-  if (s.noise == SimulatedNoise::none || s.noise_level == 0.0) return;
+  require_non_negative("noise growth", s.noise_growth);
+  const bool growth = s.noise == SimulatedNoise::load_cell && s.noise_growth > 0.0;
+  if (s.noise == SimulatedNoise::none || (s.noise_level == 0.0 && !growth)) return;
   std::mt19937_64 rng(s.seed);
   std::uniform_real_distribution<double> uniform(-1.0, 1.0);
   std::normal_distribution<double> normal(0.0, 1.0);
@@ -53,6 +55,9 @@ void add_noise(MeasuredData& d, const DiagramSpec& s) {
           break;
         case SimulatedNoise::additive_gaussian:
           y += s.noise_level * peak[c] * normal(rng);
+          break;
+        case SimulatedNoise::load_cell:
+          y += (s.noise_level * peak[c] + s.noise_growth * std::abs(y)) * normal(rng);
           break;
         case SimulatedNoise::none:
           break;
@@ -99,8 +104,10 @@ SimulatedNoise parse_noise(const std::string& name) {
   if (name == "relative-uniform") return SimulatedNoise::relative_uniform;
   if (name == "relative-gaussian") return SimulatedNoise::relative_gaussian;
   if (name == "additive-gaussian") return SimulatedNoise::additive_gaussian;
-  throw InvalidArgument("noise", name,
-                        "use none, relative-uniform, relative-gaussian or additive-gaussian");
+  if (name == "load-cell") return SimulatedNoise::load_cell;
+  throw InvalidArgument(
+      "noise", name,
+      "use none, relative-uniform, relative-gaussian, additive-gaussian or load-cell");
 }
 
 std::string noise_name(SimulatedNoise n) {
@@ -113,6 +120,8 @@ std::string noise_name(SimulatedNoise n) {
       return "relative-gaussian";
     case SimulatedNoise::additive_gaussian:
       return "additive-gaussian";
+    case SimulatedNoise::load_cell:
+      return "load-cell";
   }
   return "?";
 }

@@ -43,5 +43,21 @@ sys.exit(0 if ok else 1)" "$dir/ambiguous.json" &&
 else
   echo "FAIL ambiguous: anisotropy neither accepted nor named"; fails=$((fails + 1))
 fi
-echo "$((6 - fails)) passed, $fails failed"
+# Load-cell noise (sigma = 0.2 % of the peak + 2 % of |y|, simulate --noise load-cell): the loop
+# keeps its effects and weights the final fit by the growing scale (noise_model affine).
+"$app" simulate --out "$dir/load_cell.csv" --radius 0.087 --profile seed-tire --pressure 2.1e5 \
+  --friction 0.3 --kx 0.14 --points 20 --seed 7 --time-step 0.5 --directions 0,1.5707963 \
+  --noise load-cell --noise-level 0.002 --noise-growth 0.02 > /dev/null
+if "$app" "$dir/load_cell.csv" --radius 0.087 --profile seed-tire --pressure 2.1e5 \
+  --json "$dir/load_cell.json" > /dev/null 2> "$dir/load_cell.err" &&
+  python3 -c "
+import json, sys
+r = json.load(open(sys.argv[1]))
+sys.exit(0 if r['noise_model'] == 'affine' and r['accepted_effects'] == ['shape'] else 1)" \
+    "$dir/load_cell.json"; then
+  echo "ok   load_cell: shape, noise a + b|y|"
+else
+  echo "FAIL load_cell: the growing noise scale not chosen, or other effects"; fails=$((fails + 1))
+fi
+echo "$((7 - fails)) passed, $fails failed"
 [ "$fails" -eq 0 ]

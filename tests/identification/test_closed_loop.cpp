@@ -1,10 +1,12 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cstdio>
 #include <numbers>
 #include <set>
 
 #include "contensou/identification/closed_loop.hpp"
+#include "contensou/identification/report_text.hpp"
 #include "contensou/identification/simulation.hpp"
 
 using namespace contensou;
@@ -217,4 +219,42 @@ TEST(ClosedLoop, NamesTheAlternativeWhenTwoEffectsExplainTheResidualEqually) {
   }
   EXPECT_TRUE(named) << "anisotropy neither accepted nor named as an alternative";
   EXPECT_FALSE(r.structure_remains);
+}
+
+// The loop's retry from other starts: every candidate's first fit stops at its start (a testing
+// hook gives it no solver iterations). Without a profile the shape step fits the exact integrals
+// with an identified profile, and its start (uniform pressure at the law's F0 and kx) fits worse
+// than the law it replaces: the loop refits it from other starts (the profile coefficients moved
+// towards their bounds), keeps the best, says so, and decides as without the hook.
+TEST(ClosedLoop, AFirstFitThatStopsAtItsStartIsRetried) {
+  const Data d = two_sweeps(make_exact_model(seed_case().patch), RigEffects{}, 7);
+  IdentificationOptions o = options();
+  o.profile.reset();
+  ClosedLoopOptions lo;
+  lo.max_steps = 1;
+  const ClosedLoopReport plain = close_the_loop(d.measured, o, lo);
+  lo.test_first_fit_iterations = 0;
+  const ClosedLoopReport stalled = close_the_loop(d.measured, o, lo);
+  const auto shape_step = [](const ClosedLoopReport& r) -> const LoopStep* {
+    for (const LoopStep& st : r.steps)
+      if (st.effect == "shape") return &st;
+    return nullptr;
+  };
+  const LoopStep* retried = shape_step(stalled);
+  const LoopStep* first = shape_step(plain);
+  ASSERT_NE(retried, nullptr);
+  ASSERT_NE(first, nullptr);
+  EXPECT_EQ(first->retries, 0);
+  EXPECT_GT(retried->retries, 0);
+  EXPECT_FALSE(step_fit_failed(*retried));  // a start recovered it
+  EXPECT_EQ(retried->accepted, first->accepted);
+  EXPECT_EQ(as_set(stalled.accepted_effects), as_set(plain.accepted_effects));
+  EXPECT_NEAR(retried->error_after, first->error_after, 1e-3 * first->error_after);
+  std::printf("shape: error %.4f -> %.4f after %d retries (%.4f without the hook)\n",
+              retried->error_before, retried->error_after, retried->retries, first->error_after);
+  const std::string text = loop_report_text(ReportInput{}, stalled);
+  EXPECT_NE(text.find("the first fit with shape ended worse than the model it extends; this row "
+                      "is its fit from another start"),
+            std::string::npos)
+      << text;
 }

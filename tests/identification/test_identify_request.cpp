@@ -83,6 +83,12 @@ TEST(IdentifyRequest, BadValuesAreRefusedNamingTheKeyAndTheRange) {
        "noise_scale = -2", "--noise-scale = -2"},
       {[](IdentifyRequest& q) { q.noise_model = "white"; }, "noise_model = white",
        "--noise-model = white"},
+      {[](IdentifyRequest& q) {
+         q.noise_model = "affine";
+         q.noise_scale = {1.0, 1.0, 1.0};
+       },
+       "noise_scale gives constant scales: use noise_model additive or relative",
+       "--noise-scale gives constant scales: use --noise-model additive or relative"},
       {[](IdentifyRequest& q) { q.pressure_pa = 2e5; }, "pressure 2e+05 is the reference",
        "--pressure 2e+05 is the reference"},
       {[](IdentifyRequest& q) {
@@ -160,4 +166,31 @@ TEST(IdentifyRequest, TheSameInputGivesTheSameReportBitForBit) {
   for (std::string& out : together) threads.emplace_back([&out, &report] { out = report(); });
   for (std::thread& t : threads) t.join();
   for (const std::string& out : together) EXPECT_EQ(out, alone);
+}
+
+// noise_model: auto (the default) asks the closed loop to choose between one constant scale
+// per channel and a + b|y|; the other words fix the model (and no test is made).
+TEST(IdentifyRequest, TheNoiseModelKeyChoosesTheModelOrLetsTheLoopChoose) {
+  IdentifyRequest r;
+  r.radius_m = 0.087;
+  EXPECT_EQ(r.noise_model, "auto");
+  const auto options = [](const IdentifyRequest& q) {
+    ProfileChoice profile;
+    return identify_options(q, profile);
+  };
+  IdentifyOptions o = options(r);
+  EXPECT_EQ(o.fit.noise_model, NoiseModel::additive);
+  ASSERT_TRUE(o.loop);
+  EXPECT_TRUE(o.loop->choose_noise_model);
+  r.noise_scale = {1.0, 1.0, 1.0};  // given constant scales: nothing to choose
+  EXPECT_FALSE(options(r).loop->choose_noise_model);
+  r.noise_scale.clear();
+  for (const auto& [word, model] :
+       {std::pair{"additive", NoiseModel::additive}, std::pair{"relative", NoiseModel::relative},
+        std::pair{"affine", NoiseModel::affine}}) {
+    r.noise_model = word;
+    o = options(r);
+    EXPECT_EQ(o.fit.noise_model, model) << word;
+    EXPECT_FALSE(o.loop->choose_noise_model) << word;
+  }
 }

@@ -213,3 +213,22 @@ def test_the_keys_are_documented_from_the_librarys_table():
     doc = c.identify.__doc__ or ""
     for key in ("radius", "normal_load", "profile", "pressure", "alpha", "outliers"):
         assert f"``{key}``" in doc
+
+
+def test_noise_models_are_the_apps(loop_result, identify_app, tmp_path):
+    # auto, the default: the loop tests a noise scale growing with the value and, on this white
+    # constant noise, keeps one constant scale per channel.
+    steps = {s.effect: s for s in loop_result.steps}
+    assert "noise_growth" in steps and not steps["noise_growth"].accepted
+    assert steps["noise_growth"].report["lr_dof"] == 3
+    assert loop_result.report["noise_model"] == "additive"
+    # affine (sigma = a + b |y| per channel), asked for: as the app's --noise-model affine.
+    affine = c.identify(DATA, radius=0.087, loop=False, noise_model="affine", source=SOURCE,
+                        **PROFILE)
+    assert affine.to_json() == app_report(identify_app, tmp_path, "--profile", "seed-tire",
+                                          "--pressure", "2.1e5", "--no-loop", "--noise-model",
+                                          "affine")
+    assert affine.report["base"]["noise_model"] == "affine"
+    assert set(affine.report["base"]["noise_slope"]) == {"Fx_N", "Fy_N", "Mz_Nm"}
+    with pytest.raises(ValueError, match="noise_scale gives constant scales"):
+        c.identify(DATA, radius=0.087, noise_model="affine", noise_scale=(1.0, 1.0, 1.0))

@@ -21,6 +21,10 @@
 // reported as ambiguous alternatives with the measurement that would separate them. Repeats until
 // no candidate passes; then a backward pass removes accepted effects that later ones made
 // redundant. steps lists every fitted candidate.
+// Then, when asked (ClosedLoopOptions::choose_noise_model), the noise: a scale that grows with
+// the value, sigma = a + b |y| per channel (NoiseModel::affine), against one constant scale per
+// channel, by the likelihood-ratio test at alpha and BIC; reported as a step (effect
+// kNoiseGrowthEffect) and, accepted, the final fit weights the values by it.
 #pragma once
 
 #include <functional>
@@ -30,6 +34,9 @@
 #include "contensou/identification/fit.hpp"
 
 namespace contensou {
+
+// The effect name of the noise step.
+inline constexpr const char* kNoiseGrowthEffect = "noise_growth";
 
 struct CandidateScore {
   std::string effect;      // catalogue name
@@ -71,6 +78,13 @@ struct ClosedLoopOptions {
   // integrals (default: the exact law's table of the falling part, exact_law.hpp), or at the
   // effective speed w = (v^2 + (2u/3)^2)^(1/2) outside them.
   bool speed_inside_integrals = true;
+  // After the effects, test a noise scale that grows with the value against the constant one
+  // (when the noise model is additive and its scales are estimated). The app's and Python's
+  // default (noise_model "auto").
+  bool choose_noise_model = false;
+  // Testing only: Ceres' iterations in each candidate's first fit (-1: as every fit), so that a
+  // first fit stops at its start and the retry from other starts (LoopStep::retries) runs.
+  int test_first_fit_iterations = -1;
   std::function<void(const std::string&)> progress;  // called with a line per stage
 };
 
@@ -80,7 +94,8 @@ struct ClosedLoopReport {
   ModelSpec final_spec;
   std::vector<LoopStep> steps;
   std::vector<std::string> accepted_effects;
-  bool structure_remains = false;  // the final residual is still not white
+  NoiseModel noise_model = NoiseModel::additive;  // of the final fit (affine: noise step accepted)
+  bool structure_remains = false;                 // the final residual is still not white
 };
 
 // Throws what fit_model throws, and Interrupted when options.stop asks (polled between the

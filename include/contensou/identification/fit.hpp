@@ -3,8 +3,9 @@
 //
 // The law (fractional_law.hpp) is fitted by weighted nonlinear least squares:
 //   min sum_i sum_c rho( ((y_ic - yhat_c(x_i; theta)) / s_ic)^2 ),  theta = (F0, a, M0, m, kx),
-// s_ic the noise scale of channel c (constant, or proportional to |yhat| for relative noise),
-// estimated from the data (fit, per-channel scatter, refit) unless given. The covariance of
+// s_ic the noise scale of channel c (constant; proportional to |yhat| for relative noise; or
+// a_c + b_c |yhat| for load-cell noise, NoiseModel::affine), estimated from the data (fit,
+// per-channel scatter, refit) unless given. The covariance of
 // theta is s^2 (J^T J)^-1 at the optimum (Ceres Covariance), s^2 = chi^2 / (n - p), and the 95 %
 // intervals use Student's t with n - p degrees of freedom. A parameter the data cannot
 // determine (its Jacobian column is zero or in the null space) is held at its start value
@@ -30,7 +31,13 @@ namespace contensou {
 enum class NoiseModel {
   additive,  // s_ic = s_c
   relative,  // s_ic = s_c max(|yhat_ic|, 5 % of the channel's largest |y|)
+  // s_ic = a_c + b_c |yhat_ic| (a load cell: a floor plus a share of the load), a_c = s_c and
+  // b_c estimated together by maximum likelihood of the residuals (fit.cpp, affine_noise);
+  // b_c = 0 is the additive model, a_c -> 0 nearly the relative one.
+  affine,
 };
+const char* noise_model_name(NoiseModel model);  // "additive", "relative", "affine"
+
 enum class RobustLoss { none, huber, cauchy };
 
 // Names (as used by --fix and the JSON report) and units of the fitted parameters.
@@ -71,7 +78,8 @@ struct ChannelDiagnostics {
   std::string channel;
   int points = 0;
   double rms = 0.0;          // unweighted [N or N m]
-  double noise_scale = 0.0;  // s_c
+  double noise_scale = 0.0;  // s_c (a_c of affine noise)
+  double noise_slope = 0.0;  // b_c of affine noise (0 otherwise)
   double runs_p_value = 1.0;
   double lag1 = 0.0;
   double durbin_watson = 2.0;
@@ -85,7 +93,9 @@ struct FitReport {
   std::vector<ChannelDiagnostics> channels;    // measured channels only
   FractionalLaw<double> law;                   // the fitted law (base model)
   std::vector<Resultants<double>> prediction;  // model at each data point
-  std::array<double, kChannels> noise_scale{};
+  NoiseModel noise_model = NoiseModel::additive;
+  std::array<double, kChannels> noise_scale{};  // s_c (a_c of affine noise)
+  std::array<double, kChannels> noise_slope{};  // b_c of affine noise (0 otherwise)
   double m2ll = 0.0;  // -2 log likelihood (Gaussian, with the noise scales)
   int residuals = 0;
   int free_parameters = 0;
@@ -114,6 +124,7 @@ struct NoiseSettings {
   RobustLoss loss = RobustLoss::none;
   double loss_scale = 2.0;
   int iterations = 6;
+  int solver_iterations = 200;  // Ceres' iterations per round (the loop's retry test lowers it)
   // Testing only: the residual of this point (index into the data) fails to evaluate, so that
   // the failed-solve path (an error naming the fit, no report) can be exercised. -1: none.
   int failing_point = -1;
@@ -131,16 +142,24 @@ FitReport fit_model(const MeasuredData& data, const ModelSpec& spec, const Noise
                     std::array<double, kModelParameters>* estimate = nullptr,
                     const std::vector<char>& use = {});
 
-// Measured values a fit of `spec` needs at least: free parameters + estimated noise scales + 1
-// (one degree of freedom left for the intervals). fit_model refuses fewer.
+// Measured values a fit of `spec` needs at least: free parameters + estimated noise parameters
+// (one per channel, two for affine noise) + 1 (one degree of freedom left for the intervals).
+// fit_model refuses fewer.
 int measured_values_needed(const MeasuredData& data, const ModelSpec& spec,
                            const NoiseSettings& noise);
 
+// The noise scales of a fit: its model and the per-channel constants.
+struct NoiseScales {
+  NoiseModel model = NoiseModel::additive;
+  std::array<double, kChannels> scale{};  // s_c (a_c of affine noise)
+  std::array<double, kChannels> slope{};  // b_c of affine noise
+};
+NoiseScales noise_scales_of(const FitReport& fit);
+
 // Weighted residuals r and their Jacobian J with respect to all kModelParameters parameters
-// at theta (weights 1/s_c, times 1/max(|yhat|, 5 % of the peak) for relative noise).
+// at theta (weights 1/s_ic, NoiseModel, with yhat the model at theta).
 void weighted_jacobian(const MeasuredData& data, const ModelSpec& spec,
-                       const std::array<double, kModelParameters>& theta,
-                       const std::array<double, kChannels>& scale, NoiseModel noise,
+                       const std::array<double, kModelParameters>& theta, const NoiseScales& noise,
                        Eigen::VectorXd* r, Eigen::MatrixXd* J, const std::vector<char>& use = {},
                        std::vector<int>* row_point = nullptr);
 

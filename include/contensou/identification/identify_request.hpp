@@ -18,22 +18,22 @@
 namespace contensou {
 
 struct IdentifyRequest {
-  double radius_m = 0.0;                 // radius
-  std::optional<double> normal_load_n;   // normal_load
-  std::string profile;                   // profile ("" = none)
-  std::optional<double> pressure_pa;     // pressure
-  int profile_smoothing = 0;             // profile_smoothing (0 = interpolate)
-  bool profile_clip = false;             // profile_clip
-  std::map<std::string, double> fix;     // fix
-  std::string loss = "none";             // loss
-  double loss_scale = 2.0;               // loss_scale
-  std::string noise_model = "additive";  // noise_model
-  std::vector<double> noise_scale;       // noise_scale (empty = estimated)
-  bool loop = true;                      // loop
-  double alpha = 1e-3;                   // alpha
-  bool speed_inside_integrals = true;    // speed_inside_integrals
-  bool outliers = true;                  // outliers: find gross errors and leave them out
-  int failing_point = -1;                // testing only (IdentificationOptions::failing_point)
+  double radius_m = 0.0;                // radius
+  std::optional<double> normal_load_n;  // normal_load
+  std::string profile;                  // profile ("" = none)
+  std::optional<double> pressure_pa;    // pressure
+  int profile_smoothing = 0;            // profile_smoothing (0 = interpolate)
+  bool profile_clip = false;            // profile_clip
+  std::map<std::string, double> fix;    // fix
+  std::string loss = "none";            // loss
+  double loss_scale = 2.0;              // loss_scale
+  std::string noise_model = "auto";     // noise_model
+  std::vector<double> noise_scale;      // noise_scale (empty = estimated)
+  bool loop = true;                     // loop
+  double alpha = 1e-3;                  // alpha
+  bool speed_inside_integrals = true;   // speed_inside_integrals
+  bool outliers = true;                 // outliers: find gross errors and leave them out
+  int failing_point = -1;               // testing only (IdentificationOptions::failing_point)
   std::function<void(const std::string&)> progress;  // a line per stage of the loop
   StopRequest stop{};
   KeyStyle style = KeyStyle::python;  // how errors name the keys

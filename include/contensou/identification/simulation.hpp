@@ -16,6 +16,9 @@ enum class SimulatedNoise {
   relative_uniform,   // y (1 + level U(-1, 1)): the seed's "random distribution with amplitude"
   relative_gaussian,  // y (1 + level N(0, 1))
   additive_gaussian,  // y + level max|y_c| N(0, 1), per channel c
+  // A load cell's: y + (level max|y_c| + growth |y|) N(0, 1), per channel c (DiagramSpec's
+  // noise_growth), the noise NoiseModel::affine fits.
+  load_cell,
 };
 
 // Effects of the test rig applied to the simulated channels (for testing the closed loop):
@@ -42,6 +45,7 @@ struct DiagramSpec {
   double direction_rad = 0.0;
   SimulatedNoise noise = SimulatedNoise::additive_gaussian;
   double noise_level = 0.01;
+  double noise_growth = 0.0;  // load_cell: the share b of |y| in sigma = a + b |y|
   std::uint64_t seed = 1;
   double time_step_s = 0.0;  // 0: no t_s column
   RigEffects rig;
