@@ -15,6 +15,7 @@
 #include "contensou/friction/error.hpp"
 #include "contensou/identification/effect_model.hpp"
 #include "contensou/identification/statistics.hpp"
+#include "point_batch.hpp"
 
 namespace contensou {
 namespace {
@@ -57,7 +58,8 @@ struct PointResidual {
 // adds up the cost and the gradient per thread over chunks of residual blocks that the threads
 // claim as they finish, so the sums' order, their last bits and so the fit's last digits change
 // from run to run (seen: the app and Python differing in the 14th digit of chi2 under load).
-// The same input gives the same bits.
+// The same input gives the same bits; the blocks themselves are evaluated in parallel by
+// point_batch.hpp, deterministically.
 int evaluation_threads() {
   return 1;
 }
@@ -143,6 +145,12 @@ int add_points(ceres::Problem& problem, const MeasuredData& data, const ModelSpe
                const std::vector<int>& active, const std::array<double, K>& theta_const,
                double* packed, const Weighting& wt, const std::vector<char>& use) {
   int total = 0;
+  const std::size_t used = use.empty()
+                               ? data.points.size()
+                               : static_cast<std::size_t>(std::count_if(
+                                     use.begin(), use.end(), [](char u) { return u != 0; }));
+  auto batch = std::make_shared<detail::PointBatch>(static_cast<int>(active.size()),
+                                                    detail::batch_threads(used));
   for (std::size_t i = 0; i < data.points.size(); ++i) {
     if (!use.empty() && !use[i]) continue;
     const MeasuredPoint& pt = data.points[i];
@@ -168,7 +176,7 @@ int add_points(ceres::Problem& problem, const MeasuredData& data, const ModelSpe
     ceres::LossFunction* loss = nullptr;
     if (wt.loss == RobustLoss::huber) loss = new ceres::HuberLoss(wt.loss_scale);
     if (wt.loss == RobustLoss::cauchy) loss = new ceres::CauchyLoss(wt.loss_scale);
-    problem.AddResidualBlock(cost, loss, packed);
+    problem.AddResidualBlock(batch->add(batch, cost), loss, packed);
     total += m;
   }
   return total;
