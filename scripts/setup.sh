@@ -8,7 +8,7 @@ set -euo pipefail
 cd "$(dirname "$0")/.."
 
 packages=(build-essential cmake ninja-build pkg-config
-  libeigen3-dev libceres-dev libsundials-dev libgtest-dev libgmock-dev libbenchmark-dev
+  libeigen3-dev libceres-dev libboost-dev libsundials-dev libgtest-dev libgmock-dev libbenchmark-dev
   libcubature-dev libcli11-dev nlohmann-json3-dev gnuplot-nox clang-format
   clang-14 libclang-rt-14-dev libomp-14-dev python3-venv python3-dev)
 missing=()

@@ -15,6 +15,7 @@
 #include "axis_label.hpp"
 #include "boundary_overlay.hpp"
 #include "config.hpp"
+#include "config_keys.hpp"
 #include "contensou/friction/error.hpp"
 #include "gnuplot.hpp"
 #include "history_plots.hpp"
@@ -596,7 +597,7 @@ nlohmann::json run_scenarios(const ShimmyConfig& config, const std::vector<std::
 // The command line (one struct, filled by add_options).
 struct Options {
   std::string config_path, out = "out/shimmy", gear = "default", tire_path;
-  bool maps = false, print_config = false;
+  bool maps = false, print_config = false, print_keys = false;
   int map_size = 0, draws = 300;
   unsigned threads = 0, seed = 1;
   std::vector<std::string> overrides, scenarios;
@@ -635,6 +636,9 @@ void add_options(CLI::App& app, Options& o) {
       ->multi_option_policy(CLI::MultiOptionPolicy::TakeAll);
   app.add_flag("--print-config", o.print_config,
                "print the configuration (after --config and --set) as JSON and exit");
+  app.add_flag("--print-keys", o.print_keys,
+               "print every configuration key with its type, unit, valid values, default and "
+               "meaning (the table of docs/shimmy.md, Markdown) and exit");
   app.add_option("--tire", o.tire_path,
                  "a contensou-identify report (--json): its fitted law is the tire, and a Monte "
                  "Carlo over its covariance gives the growth rate's 95 % band and P(shimmy)")
@@ -674,6 +678,10 @@ std::vector<std::string> scenarios_to_run(const Options& o) {
 }
 
 int run(const Options& o) {
+  if (o.print_keys) {
+    std::cout << config_keys_markdown();
+    return 0;
+  }
   ShimmyConfig config;
   config.gear_name = o.gear;
   config.gear = gear_config_by_name(o.gear);

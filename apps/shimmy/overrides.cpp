@@ -1,5 +1,7 @@
 #include "overrides.hpp"
 
+#include "config_keys.hpp"
+
 #include <algorithm>
 #include <numeric>
 #include <stdexcept>
@@ -23,20 +25,12 @@ std::size_t edit_distance(const std::string& a, const std::string& b) {
   return row[b.size()];
 }
 
-// Every leaf key of `j` as a dotted path (lists count as leaves).
-void leaf_keys(const nlohmann::json& j, const std::string& prefix, std::vector<std::string>& out) {
-  for (auto it = j.begin(); it != j.end(); ++it) {
-    const std::string key = prefix.empty() ? it.key() : prefix + "." + it.key();
-    if (it->is_object())
-      leaf_keys(*it, key, out);
-    else
-      out.push_back(key);
-  }
-}
-
-std::string closest_key(const nlohmann::json& j, const std::string& key) {
+// The known key closest to `key` (edit distance below half its length plus two), in the key
+// table's names sorted (the order of --print-config); "" if none is that close.
+std::string closest_key(const std::string& key) {
   std::vector<std::string> keys;
-  leaf_keys(j, "", keys);
+  for (const ConfigKey& k : config_keys()) keys.emplace_back(k.name);
+  std::sort(keys.begin(), keys.end());
   std::string best;
   std::size_t best_distance = key.size() / 2 + 2;
   for (const std::string& k : keys)
@@ -55,7 +49,7 @@ nlohmann::json& leaf_at(nlohmann::json& root, const std::string& key, const std:
     const std::size_t dot = key.find('.', start);
     const std::string part = key.substr(start, dot == std::string::npos ? dot : dot - start);
     if (!node->is_object() || !node->contains(part)) {
-      const std::string close = closest_key(root, key);
+      const std::string close = closest_key(key);
       throw std::runtime_error(what + ": unknown key '" + key + "'" +
                                (close.empty() ? "" : " (did you mean '" + close + "'?)") +
                                "; --print-config lists every key");

@@ -5,6 +5,7 @@
 #pragma once
 
 #include "contensou/friction.hpp"
+#include "contensou/gear/gear_parameters.hpp"
 #include "contensou/gear/landing_gear.hpp"
 #include "contensou/gear/landing_simulation.hpp"
 #include "contensou/gear/linear_stability.hpp"

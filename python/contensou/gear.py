@@ -106,6 +106,18 @@ class LandingConfig:
         """The numeric gear parameters (the names a map axis takes)."""
         return list(_core._gear_parameter_names())
 
+    @staticmethod
+    def keys() -> list[dict[str, Any]]:
+        """Every configuration key, from the app's key table (``contensou-shimmy --print-keys``,
+        docs/shimmy.md): ``name``, ``type``, ``unit``, ``values`` (the valid values in words),
+        ``default`` and ``help``."""
+        out = []
+        for k in _core._config_keys():
+            k = dict(k)
+            k["default"] = json.loads(k["default"])
+            out.append(k)
+        return out
+
     def _node(self, dotted: str) -> Any:
         node: Any = self._data
         for part in dotted.split("."):

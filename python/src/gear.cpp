@@ -1,7 +1,8 @@
-// Gear: a thin layer over the shimmy app's JSON configuration (apps/shimmy/config.cpp, compiled
-// into this module) and the gear module's public functions: simulate_landing and stability_map.
-// Configurations cross the boundary as JSON text, so that this file knows no gear parameter by
-// name and the Python side can ship a cell of a map to a Dask worker as plain data.
+// Gear: a thin layer over the shimmy app's JSON configuration (apps/shimmy/config.cpp and its key
+// table config_keys.cpp, compiled into this module) and the gear module's public functions:
+// simulate_landing and stability_map. Configurations cross the boundary as JSON text, so that this
+// file knows no gear parameter by name and the Python side can ship a cell of a map to a Dask
+// worker as plain data.
 #include <nanobind/stl/string.h>
 #include <nanobind/stl/tuple.h>
 #include <nanobind/stl/vector.h>
@@ -10,6 +11,7 @@
 
 #include "common.hpp"
 #include "config.hpp"
+#include "config_keys.hpp"
 #include "contensou/friction/error.hpp"
 #include "contensou/gear.hpp"
 
@@ -133,6 +135,25 @@ void bind_gear(nb::module_& m) {
       "ValueError naming `name`, line, column and the bad key or value) and writes it back with "
       "every key");
   m.def("_gear_parameter_names", &gear_parameter_names);
+  m.def(
+      "_config_keys",
+      [] {
+        app::ShimmyConfig defaults;
+        nb::list keys;
+        for (const app::ConfigKey& k : app::config_keys()) {
+          nb::dict d;
+          d["name"] = std::string(k.name);
+          d["type"] = std::string(k.type);
+          d["unit"] = std::string(k.unit);
+          d["values"] = app::valid_values(k);
+          d["default"] = app::write_key(k, defaults).dump();
+          d["help"] = std::string(k.help);
+          keys.append(d);
+        }
+        return keys;
+      },
+      "the configuration's keys (contensou-shimmy --print-keys): name, type, unit, valid values, "
+      "default (JSON text) and help");
   m.def("_simulate_landing", &simulate, "config"_a, "model"_a, "record"_a);
   m.def("_map_cell", &map_cell, "config"_a, "model"_a, "x"_a, "y"_a, "i"_a, "j"_a);
   m.def("_stability_map_cpp", &map_cpp, "config"_a, "model"_a, "x"_a, "y"_a, "threads"_a);

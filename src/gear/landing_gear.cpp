@@ -35,118 +35,6 @@ ContactModel contact_model_from_string(const std::string& name) {
                         "must be coupled, decoupled or von_schlippe (alias nonholonomic)");
 }
 
-void validate(const GearConfig& c) {
-  const GearStructure& g = c.structure;
-  require_positive("structure.lateral_mass_kg", g.lateral_mass_kg);
-  require_positive("structure.lateral_stiffness_n_per_m", g.lateral_stiffness_n_per_m);
-  require_positive("structure.torsional_inertia_kgm2", g.torsional_inertia_kgm2);
-  require_positive("structure.torsional_stiffness_nm_per_rad", g.torsional_stiffness_nm_per_rad);
-  require_finite("structure.lateral_damping_ns_per_m", g.lateral_damping_ns_per_m);
-  require_finite("structure.torsional_damping_nms_per_rad", g.torsional_damping_nms_per_rad);
-  require_finite("structure.trail_m", g.trail_m);
-  require_finite("structure.offset_m", g.offset_m);
-  require_positive("structure.wheel_radius_m", g.wheel_radius_m);
-  require_positive("structure.wheel_inertia_kgm2", g.wheel_inertia_kgm2);
-  if (!(g.fore_aft_stiffness_n_per_m >= 0.0 && g.fore_aft_stiffness_n_per_m < 1e12))
-    throw InvalidArgument("structure.fore_aft_stiffness_n_per_m",
-                          format_value(g.fore_aft_stiffness_n_per_m),
-                          "must be >= 0 and finite (0: no fore-aft bending)");
-  require_positive("structure.fore_aft_mass_kg", g.fore_aft_mass_kg);
-  require_finite("structure.fore_aft_damping_ns_per_m", g.fore_aft_damping_ns_per_m);
-  if (!(g.wheel_spacing_m >= 0.0 && g.wheel_spacing_m < 100.0))
-    throw InvalidArgument("structure.wheel_spacing_m", format_value(g.wheel_spacing_m),
-                          "must be >= 0 and finite (0: one wheel)");
-  if (!(g.freeplay_rad >= 0.0 && g.freeplay_rad < 1.0))
-    throw InvalidArgument("structure.freeplay_rad", format_value(g.freeplay_rad),
-                          "must lie in [0, 1) rad (0: no freeplay)");
-  if (!(g.gyroscopic_length_m >= 0.0 && g.gyroscopic_length_m < 1e6))
-    throw InvalidArgument("structure.gyroscopic_length_m", format_value(g.gyroscopic_length_m),
-                          "must be >= 0 and finite (0: no gyroscopic coupling)");
-  if (!(g.carcass_lateral_stiffness_n_per_m >= 0.0 && g.carcass_lateral_stiffness_n_per_m < 1e15))
-    throw InvalidArgument("structure.carcass_lateral_stiffness_n_per_m",
-                          format_value(g.carcass_lateral_stiffness_n_per_m),
-                          "must be >= 0 and finite (0 with the torsional one: rigid carcass)");
-  if (!(g.carcass_torsional_stiffness_nm_per_rad >= 0.0 &&
-        g.carcass_torsional_stiffness_nm_per_rad < 1e15))
-    throw InvalidArgument("structure.carcass_torsional_stiffness_nm_per_rad",
-                          format_value(g.carcass_torsional_stiffness_nm_per_rad),
-                          "must be >= 0 and finite (0 with the lateral one: rigid carcass)");
-  if (g.carcass_compliance()) {
-    if (!(g.carcass_lateral_stiffness_n_per_m > 0.0))
-      throw InvalidArgument(
-          "structure.carcass_lateral_stiffness_n_per_m",
-          format_value(g.carcass_lateral_stiffness_n_per_m),
-          "must be positive when structure.carcass_torsional_stiffness_nm_per_rad "
-          "is (both 0: rigid carcass)");
-    if (!(g.carcass_torsional_stiffness_nm_per_rad > 0.0))
-      throw InvalidArgument("structure.carcass_torsional_stiffness_nm_per_rad",
-                            format_value(g.carcass_torsional_stiffness_nm_per_rad),
-                            "must be positive when structure.carcass_lateral_stiffness_n_per_m is "
-                            "(both 0: rigid carcass)");
-    require_positive("structure.carcass_lateral_damping_ns_per_m",
-                     g.carcass_lateral_damping_ns_per_m);
-    require_positive("structure.carcass_torsional_damping_nms_per_rad",
-                     g.carcass_torsional_damping_nms_per_rad);
-    if (g.wheel_spacing_m > 0.0)
-      throw InvalidArgument("structure.wheel_spacing_m", format_value(g.wheel_spacing_m),
-                            "must be 0 with carcass compliance (implemented for one wheel)");
-  }
-
-  const SlidingTire& t = c.tire;
-  require_positive("tire.inflation_pressure_pa", t.inflation_pressure_pa);
-  require_finite("tire.rolling_shift", t.rolling_shift);
-  if (std::abs(t.rolling_shift) >= 1.0)
-    throw InvalidArgument("tire.rolling_shift", format_value(t.rolling_shift),
-                          "must lie in (-1, 1) so that the pressure stays positive");
-  require_positive("tire.friction.static_coefficient", t.friction.static_coefficient);
-  require_positive("tire.friction.kinetic_coefficient", t.friction.kinetic_coefficient);
-  require_positive("tire.friction.reference_speed", t.friction.reference_speed);
-  require_positive("tire.friction.exponent", t.friction.exponent);
-  require_positive("tire.regularization_speed", t.regularization_speed);
-  if (t.law_coefficients != "fitted" && t.law_coefficients != "asymptotic" &&
-      t.law_coefficients != "seed")
-    throw InvalidArgument("tire.law_coefficients", t.law_coefficients,
-                          "must be fitted, asymptotic or seed");
-
-  const RollingTire& r = c.rolling;
-  require_positive("rolling.relaxation_length_m", r.relaxation_length_m);
-  require_positive("rolling.cornering_coefficient", r.cornering_coefficient);
-  require_finite("rolling.aligning_coefficient_m", r.aligning_coefficient_m);
-  require_finite("rolling.tread_moment_nm2_per_rad", r.tread_moment_nm2_per_rad);
-  require_positive("rolling.longitudinal_slip_coefficient", r.longitudinal_slip_coefficient);
-
-  const LandingScenario& s = c.scenario;
-  require_positive("scenario.forward_speed_mps", s.forward_speed_mps);
-  require_finite("scenario.drift_speed_mps", s.drift_speed_mps);
-  require_positive("scenario.static_load_n", s.static_load_n);
-  if (!(s.touchdown_time_s >= 0.0))
-    throw InvalidArgument("scenario.touchdown_time_s", format_value(s.touchdown_time_s),
-                          "must be >= 0");
-  if (!(s.touchdown_time_s < 1e6))
-    throw InvalidArgument("scenario.touchdown_time_s", format_value(s.touchdown_time_s),
-                          "must be finite");
-  require_positive("scenario.load_ramp_s", s.load_ramp_s);
-  require_positive("scenario.end_time_s", s.end_time_s);
-  require_finite("scenario.initial_torsion_rad", s.initial_torsion_rad);
-  require_finite("scenario.initial_lateral_m", s.initial_lateral_m);
-  require_positive("scenario.rolling_slip", s.rolling_slip);
-  if (!(s.sliding_slip > s.rolling_slip && s.sliding_slip < 1.0))
-    throw InvalidArgument("scenario.sliding_slip", format_value(s.sliding_slip),
-                          "must lie between rolling_slip and 1");
-  if (s.braking) {
-    if (!(s.brake_off_s > s.brake_on_s && s.brake_on_s >= 0.0))
-      throw InvalidArgument("scenario.brake_off_s", format_value(s.brake_off_s),
-                            "must come after brake_on_s >= 0");
-    require_positive("scenario.brake_max_torque_nm", s.brake_max_torque_nm);
-    if (!(s.brake_target_slip > 0.0 && s.brake_target_slip < 1.0))
-      throw InvalidArgument("scenario.brake_target_slip", format_value(s.brake_target_slip),
-                            "must lie in (0, 1)");
-    require_positive("scenario.brake_slip_band", s.brake_slip_band);
-  }
-  require_finite("scenario.window_start_s", s.window_start_s);
-  require_finite("scenario.window_end_s", s.window_end_s);
-}
-
 namespace {
 
 ContactPatch unit_patch(const SlidingTire& tire) {
@@ -516,105 +404,134 @@ ContactState contact_state(const GearModel& model, const GearMode& mode, double 
   return cs;
 }
 
-GearJacobian gear_jacobian(const GearModel& model, const GearMode& mode, double t,
-                           const GearState& x) {
-  const GearConfig& c = model.config;
-  const GearStructure& g = c.structure;
-  const LandingScenario& s = c.scenario;
-  if (g.carcass_compliance()) {
-    // e_y', e_psi' come from an implicit solve: forward differences of the whole right-hand side
-    // (one evaluation per state).
-    const GearState f0 = gear_rhs(model, mode, t, x);
-    constexpr std::array<double, kStateSize> kScale{1e-3, 1e-1, 1e-3, 1e-1, 1e2, 1e-3,
-                                                    1e-3, 1e-1, 1e2,  1e-3, 1e-3};
-    GearJacobian J;
-    for (int j = 0; j < kStateSize; ++j) {
-      GearState xp = x;
-      const double h = 1e-7 * std::max(std::abs(x[j]), kScale[static_cast<std::size_t>(j)]);
-      xp[j] += h;
-      J.col(j) = (gear_rhs(model, mode, t, xp) - f0) / h;
-    }
-    return J;
+namespace {
+
+// d(dx/dt)/dx by forward differences of gear_rhs, one evaluation per state (carcass compliance:
+// e_y', e_psi' come from an implicit solve).
+GearJacobian jacobian_by_differences(const GearModel& model, const GearMode& mode, double t,
+                                     const GearState& x) {
+  const GearState f0 = gear_rhs(model, mode, t, x);
+  constexpr std::array<double, kStateSize> kScale{1e-3, 1e-1, 1e-3, 1e-1, 1e2, 1e-3,
+                                                  1e-3, 1e-1, 1e2,  1e-3, 1e-3};
+  GearJacobian J;
+  for (int j = 0; j < kStateSize; ++j) {
+    GearState xp = x;
+    const double h = 1e-7 * std::max(std::abs(x[j]), kScale[static_cast<std::size_t>(j)]);
+    xp[j] += h;
+    J.col(j) = (gear_rhs(model, mode, t, xp) - f0) / h;
   }
-  const double V = s.forward_speed_mps, r = g.wheel_radius_m;
-  const ContactState cs = contact_state(model, mode, t, x);
+  return J;
+}
+
+using KinematicsJacobian = Eigen::Matrix<double, 4, kStateSize>;
+
+// d(vx, vy, omega, lambda)/dx of the patch kinematics (landing_gear.hpp; theory.md section 1),
+// without the wheel's own columns (offset l_i on psi', spin Omega_i), which wheel_kinematics adds.
+KinematicsJacobian kinematics_jacobian(const GearModel& model, const GearState& x) {
+  const LandingScenario& s = model.config.scenario;
   const double cp = std::cos(x[kPsi]), sp = std::sin(x[kPsi]);
   const double lateral = x[kYDot] + s.drift_speed_mps;
-  std::array<WheelContact, 2> wheels;
-  const int n = wheel_contacts(model, mode, t, x, wheels);
-
-  // d(vx, vy, omega, lambda)/dx (kinematics of landing_gear.hpp); the offset and spin columns
-  // are the wheel's.
-  Eigen::Matrix<double, 4, kStateSize> D = Eigen::Matrix<double, 4, kStateSize>::Zero();
-  const double forward = V + x[kXDot];
+  const double forward = s.forward_speed_mps + x[kXDot];
+  KinematicsJacobian D = KinematicsJacobian::Zero();
   D(0, kYDot) = sp;
   D(0, kPsi) = -forward * sp + lateral * cp;
   D(0, kXDot) = cp;
   D(1, kYDot) = cp;
   D(1, kPsi) = -forward * cp - lateral * sp;
   D(1, kXDot) = -sp;
-  D(1, kPsiDot) = -g.trail_m;
+  D(1, kPsiDot) = -model.config.structure.trail_m;
   D(2, kPsiDot) = 1.0;
   D(3, kLambda) = 1.0;
+  return D;
+}
 
-  // dF: rows Fx, Fy, Mz of the gear's resultant (moment about the midpoint for a twin);
-  // dFx_wheel: each wheel's drag.
-  Eigen::Matrix<double, 3, kStateSize> dF = Eigen::Matrix<double, 3, kStateSize>::Zero();
-  std::array<Eigen::Matrix<double, 1, kStateSize>, 2> dFx_wheel{};
+// K = d(Fx, Fy, Mz)/d(vx, vy, omega, lambda) of one wheel's contact law at fixed load and patch:
+// analytic for the sliding coupled law, forward differences of the law in its inputs (one
+// evaluation each) for the others; zero without load.
+Eigen::Matrix<double, 3, 4> contact_law_jacobian(const GearModel& model, const GearMode& mode,
+                                                 const GearState& x, const ContactState& w) {
+  Eigen::Matrix<double, 3, 4> K = Eigen::Matrix<double, 3, 4>::Zero();
+  if (!(w.load_n > 0.0)) return K;
+  if (!mode.rolling && model.contact == ContactModel::coupled) {
+    K.leftCols<3>() = sliding_law_jacobian(model, w);
+    return K;
+  }
+  const double V = model.config.scenario.forward_speed_mps;
+  const Eigen::Vector3d F0(w.force.Fx, w.force.Fy, w.force.Mz);
+  const int inputs = mode.rolling ? 4 : 3;
+  for (int j = 0; j < inputs; ++j) {
+    ContactState p = w;
+    double lambda = x[kLambda];
+    double* v = j == 0 ? &p.slip.vx : j == 1 ? &p.slip.vy : j == 2 ? &p.slip.omega : &lambda;
+    const double h =
+        j == 3 ? 1e-7 * std::max(std::abs(lambda), 1e-3) : 1e-7 * std::max(std::abs(*v), 1.0);
+    *v += h;
+    p.slip_ratio = p.slip.vx / V;
+    contact_forces(model, mode.rolling, lambda, p);
+    K.col(j) = (Eigen::Vector3d(p.force.Fx, p.force.Fy, p.force.Mz) - F0) / h;
+  }
+  return K;
+}
+
+// The friction's partials in the state: rows Fx, Fy, Mz of the gear's resultant (the moment
+// about the midpoint for a twin), and each wheel's drag.
+struct FrictionJacobian {
+  Eigen::Matrix<double, 3, kStateSize> resultant = Eigen::Matrix<double, 3, kStateSize>::Zero();
+  std::array<Eigen::Matrix<double, 1, kStateSize>, 2> wheel_drag{};
+};
+
+FrictionJacobian friction_jacobian(const GearModel& model, const GearMode& mode, const GearState& x,
+                                   const KinematicsJacobian& D,
+                                   const std::array<WheelContact, 2>& wheels, int n) {
+  const GearStructure& g = model.config.structure;
+  FrictionJacobian out;
+  Eigen::Matrix<double, 3, kStateSize>& dF = out.resultant;
   for (int i = 0; i < n; ++i) {
     const WheelContact& wc = wheels[static_cast<std::size_t>(i)];
-    const ContactState& w = wc.cs;
-    // K = d(Fx, Fy, Mz)/d(vx, vy, omega, lambda) of the contact law at fixed load and patch.
-    Eigen::Matrix<double, 3, 4> K = Eigen::Matrix<double, 3, 4>::Zero();
-    if (w.load_n > 0.0) {
-      if (!mode.rolling && model.contact == ContactModel::coupled) {
-        K.leftCols<3>() = sliding_law_jacobian(model, w);
-      } else {
-        // Forward differences of the law in its four inputs (one evaluation each).
-        const Eigen::Vector3d F0(w.force.Fx, w.force.Fy, w.force.Mz);
-        const int inputs = mode.rolling ? 4 : 3;
-        for (int j = 0; j < inputs; ++j) {
-          ContactState p = w;
-          double lambda = x[kLambda];
-          double* v = j == 0 ? &p.slip.vx : j == 1 ? &p.slip.vy : j == 2 ? &p.slip.omega : &lambda;
-          const double h =
-              j == 3 ? 1e-7 * std::max(std::abs(lambda), 1e-3) : 1e-7 * std::max(std::abs(*v), 1.0);
-          *v += h;
-          p.slip_ratio = p.slip.vx / V;
-          contact_forces(model, mode.rolling, lambda, p);
-          K.col(j) = (Eigen::Vector3d(p.force.Fx, p.force.Fy, p.force.Mz) - F0) / h;
-        }
-      }
-    }
-    Eigen::Matrix<double, 4, kStateSize> Di = D;
+    const Eigen::Matrix<double, 3, 4> K = contact_law_jacobian(model, mode, x, wc.cs);
+    KinematicsJacobian Di = D;
     Di(0, kPsiDot) = -wc.offset;
-    Di(0, wc.spin) = -r;
+    Di(0, wc.spin) = -g.wheel_radius_m;
     const Eigen::Matrix<double, 3, kStateSize> dFi = K * Di;
-    dFx_wheel[static_cast<std::size_t>(i)] = dFi.row(0);
+    out.wheel_drag[static_cast<std::size_t>(i)] = dFi.row(0);
     dF.row(0) += dFi.row(0);
     dF.row(1) += dFi.row(1);
     dF.row(2) += dFi.row(2) - (n == 1 ? 0.0 : wc.offset - g.offset_m) * dFi.row(0);
   }
+  return out;
+}
 
-  GearJacobian J = GearJacobian::Zero();
-  const Resultants<double>& F = cs.force;
+// The strut's rows: lateral bending and torsion (landing_gear.hpp, equations of motion).
+void strut_rows(const GearModel& model, const GearState& x, const Resultants<double>& F,
+                const FrictionJacobian& dF, GearJacobian& J) {
+  const GearStructure& g = model.config.structure;
+  const double cp = std::cos(x[kPsi]), sp = std::sin(x[kPsi]);
+  const Eigen::Matrix<double, 3, kStateSize>& dR = dF.resultant;
   J(kY, kYDot) = 1.0;
-  J.row(kYDot) = (dF.row(0) * sp + dF.row(1) * cp) / g.lateral_mass_kg;
+  J.row(kYDot) = (dR.row(0) * sp + dR.row(1) * cp) / g.lateral_mass_kg;
   J(kYDot, kPsi) += (F.Fx * cp - F.Fy * sp) / g.lateral_mass_kg;
   J(kYDot, kY) -= g.lateral_stiffness_n_per_m / g.lateral_mass_kg;
   J(kYDot, kYDot) -= g.lateral_damping_ns_per_m / g.lateral_mass_kg;
   J(kPsi, kPsiDot) = 1.0;
   J.row(kPsiDot) =
-      (dF.row(2) - g.trail_m * dF.row(1) - g.offset_m * dF.row(0)) / g.torsional_inertia_kgm2;
+      (dR.row(2) - g.trail_m * dR.row(1) - g.offset_m * dR.row(0)) / g.torsional_inertia_kgm2;
   J(kPsiDot, kPsi) -= g.torsional_stiffness_nm_per_rad *
                       freeplay_deflection(x[kPsi], g.freeplay_rad).second /
                       g.torsional_inertia_kgm2;
   J(kPsiDot, kPsiDot) -= g.torsional_damping_nms_per_rad / g.torsional_inertia_kgm2;
-  // Each wheel: I_w Omega_i' = -r Fx_i - T_i(Omega_i) tanh(Omega_i), with
-  // T = T_max / (1 + e^z), z = (1 - Omega r / V - s*) / ds.
+}
+
+// Each wheel's row: I_w Omega_i' = -r Fx_i - T_i(Omega_i) tanh(Omega_i), with
+// T = T_max / (1 + e^z), z = (1 - Omega r / V - s*) / ds.
+void wheel_rows(const GearModel& model, const GearMode& mode, const GearState& x,
+                const std::array<WheelContact, 2>& wheels, int n, const FrictionJacobian& dF,
+                GearJacobian& J) {
+  const GearStructure& g = model.config.structure;
+  const LandingScenario& s = model.config.scenario;
+  const double V = s.forward_speed_mps, r = g.wheel_radius_m;
   for (int i = 0; i < n; ++i) {
     const WheelContact& wc = wheels[static_cast<std::size_t>(i)];
-    J.row(wc.spin) = -r * dFx_wheel[static_cast<std::size_t>(i)] / g.wheel_inertia_kgm2;
+    J.row(wc.spin) = -r * dF.wheel_drag[static_cast<std::size_t>(i)] / g.wheel_inertia_kgm2;
     const double th = std::tanh(x[wc.spin]);
     double dT = 0.0;
     if (mode.brake_command) {
@@ -627,9 +544,20 @@ GearJacobian gear_jacobian(const GearModel& model, const GearMode& mode, double 
     J(wc.spin, wc.spin) -=
         (dT * th + wc.cs.brake_torque_nm * (1.0 - th * th)) / g.wheel_inertia_kgm2;
   }
+}
+
+// The optional degrees of freedom and couplings: fore-aft bending, gyroscopic coupling, and the
+// stretched string while rolling.
+void optional_rows(const GearModel& model, const GearMode& mode, const GearState& x,
+                   const ContactState& cs, const KinematicsJacobian& D, const FrictionJacobian& dF,
+                   GearJacobian& J) {
+  const GearStructure& g = model.config.structure;
+  const double cp = std::cos(x[kPsi]), sp = std::sin(x[kPsi]);
+  const Resultants<double>& F = cs.force;
   if (g.fore_aft_stiffness_n_per_m > 0.0) {
+    const Eigen::Matrix<double, 3, kStateSize>& dR = dF.resultant;
     J(kX, kXDot) = 1.0;
-    J.row(kXDot) = (dF.row(0) * cp - dF.row(1) * sp) / g.fore_aft_mass_kg;
+    J.row(kXDot) = (dR.row(0) * cp - dR.row(1) * sp) / g.fore_aft_mass_kg;
     J(kXDot, kPsi) += (-F.Fx * sp - F.Fy * cp) / g.fore_aft_mass_kg;
     J(kXDot, kX) -= g.fore_aft_stiffness_n_per_m / g.fore_aft_mass_kg;
     J(kXDot, kXDot) -= g.fore_aft_damping_ns_per_m / g.fore_aft_mass_kg;
@@ -647,8 +575,26 @@ GearJacobian gear_jacobian(const GearModel& model, const GearMode& mode, double 
   if (mode.rolling && mode.loaded) {
     J.row(kLambda) = -D.row(1);
     J(kLambda, kPsiDot) -= cs.patch_radius_m;
-    J(kLambda, kLambda) -= V / c.rolling.relaxation_length_m;
+    J(kLambda, kLambda) -=
+        model.config.scenario.forward_speed_mps / model.config.rolling.relaxation_length_m;
   }
+}
+
+}  // namespace
+
+GearJacobian gear_jacobian(const GearModel& model, const GearMode& mode, double t,
+                           const GearState& x) {
+  if (model.config.structure.carcass_compliance())
+    return jacobian_by_differences(model, mode, t, x);
+  const ContactState cs = contact_state(model, mode, t, x);
+  std::array<WheelContact, 2> wheels;
+  const int n = wheel_contacts(model, mode, t, x, wheels);
+  const KinematicsJacobian D = kinematics_jacobian(model, x);
+  const FrictionJacobian dF = friction_jacobian(model, mode, x, D, wheels, n);
+  GearJacobian J = GearJacobian::Zero();
+  strut_rows(model, x, cs.force, dF, J);
+  wheel_rows(model, mode, x, wheels, n, dF, J);
+  optional_rows(model, mode, x, cs, D, dF, J);
   return J;
 }
 
@@ -715,82 +661,6 @@ GearState gear_rhs(const GearModel& model, const GearMode& mode, double t, const
     dx[kCarcassY] = dx[kCarcassPsi] = 0.0;
   }
   return dx;
-}
-
-namespace {
-
-template <class F>
-void for_each_parameter(GearConfig& c, F&& f) {
-  GearStructure& g = c.structure;
-  f("structure.lateral_mass_kg", g.lateral_mass_kg);
-  f("structure.lateral_stiffness_n_per_m", g.lateral_stiffness_n_per_m);
-  f("structure.lateral_damping_ns_per_m", g.lateral_damping_ns_per_m);
-  f("structure.torsional_inertia_kgm2", g.torsional_inertia_kgm2);
-  f("structure.torsional_stiffness_nm_per_rad", g.torsional_stiffness_nm_per_rad);
-  f("structure.torsional_damping_nms_per_rad", g.torsional_damping_nms_per_rad);
-  f("structure.trail_m", g.trail_m);
-  f("structure.offset_m", g.offset_m);
-  f("structure.wheel_radius_m", g.wheel_radius_m);
-  f("structure.wheel_inertia_kgm2", g.wheel_inertia_kgm2);
-  f("structure.gyroscopic_length_m", g.gyroscopic_length_m);
-  f("structure.freeplay_rad", g.freeplay_rad);
-  f("structure.wheel_spacing_m", g.wheel_spacing_m);
-  f("structure.fore_aft_mass_kg", g.fore_aft_mass_kg);
-  f("structure.fore_aft_stiffness_n_per_m", g.fore_aft_stiffness_n_per_m);
-  f("structure.fore_aft_damping_ns_per_m", g.fore_aft_damping_ns_per_m);
-  f("structure.carcass_lateral_stiffness_n_per_m", g.carcass_lateral_stiffness_n_per_m);
-  f("structure.carcass_lateral_damping_ns_per_m", g.carcass_lateral_damping_ns_per_m);
-  f("structure.carcass_torsional_stiffness_nm_per_rad", g.carcass_torsional_stiffness_nm_per_rad);
-  f("structure.carcass_torsional_damping_nms_per_rad", g.carcass_torsional_damping_nms_per_rad);
-  SlidingTire& t = c.tire;
-  f("tire.inflation_pressure_pa", t.inflation_pressure_pa);
-  f("tire.rolling_shift", t.rolling_shift);
-  f("tire.friction.static_coefficient", t.friction.static_coefficient);
-  f("tire.friction.kinetic_coefficient", t.friction.kinetic_coefficient);
-  f("tire.friction.reference_speed", t.friction.reference_speed);
-  f("tire.friction.exponent", t.friction.exponent);
-  f("tire.regularization_speed", t.regularization_speed);
-  RollingTire& r = c.rolling;
-  f("rolling.relaxation_length_m", r.relaxation_length_m);
-  f("rolling.cornering_coefficient", r.cornering_coefficient);
-  f("rolling.aligning_coefficient_m", r.aligning_coefficient_m);
-  f("rolling.tread_moment_nm2_per_rad", r.tread_moment_nm2_per_rad);
-  f("rolling.longitudinal_slip_coefficient", r.longitudinal_slip_coefficient);
-  LandingScenario& s = c.scenario;
-  f("scenario.forward_speed_mps", s.forward_speed_mps);
-  f("scenario.drift_speed_mps", s.drift_speed_mps);
-  f("scenario.static_load_n", s.static_load_n);
-  f("scenario.touchdown_time_s", s.touchdown_time_s);
-  f("scenario.load_ramp_s", s.load_ramp_s);
-  f("scenario.end_time_s", s.end_time_s);
-  f("scenario.initial_torsion_rad", s.initial_torsion_rad);
-  f("scenario.initial_lateral_m", s.initial_lateral_m);
-  f("scenario.rolling_slip", s.rolling_slip);
-  f("scenario.sliding_slip", s.sliding_slip);
-  f("scenario.brake_on_s", s.brake_on_s);
-  f("scenario.brake_off_s", s.brake_off_s);
-  f("scenario.brake_max_torque_nm", s.brake_max_torque_nm);
-  f("scenario.brake_target_slip", s.brake_target_slip);
-  f("scenario.brake_slip_band", s.brake_slip_band);
-  f("scenario.window_start_s", s.window_start_s);
-  f("scenario.window_end_s", s.window_end_s);
-}
-
-}  // namespace
-
-double* gear_parameter(GearConfig& config, std::string_view name) {
-  double* found = nullptr;
-  for_each_parameter(config, [&](std::string_view n, double& v) {
-    if (n == name) found = &v;
-  });
-  return found;
-}
-
-std::vector<std::string> gear_parameter_names() {
-  GearConfig c;
-  std::vector<std::string> names;
-  for_each_parameter(c, [&](std::string_view n, double&) { names.emplace_back(n); });
-  return names;
 }
 
 double string_deflection_for_force(const GearModel& model, double t, const GearState& x,

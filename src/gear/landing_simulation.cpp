@@ -187,40 +187,33 @@ ShimmyMetrics assess(const Window& window, double peak_torsion, double peak_late
   return m;
 }
 
-}  // namespace
-
-LandingRun simulate_landing(const GearModel& model, const SolverOptions& options,
-                            const ShimmyCriterion& criterion) {
-  const auto clock_start = std::chrono::steady_clock::now();
-  validate(model.config);
+// The solver options a landing needs (the gear's own are validate()'s): positive tolerance and
+// interval, at most 1e6 samples, at least one step between outputs.
+void check_options(const GearModel& model, const SolverOptions& options) {
   require_positive("solver.relative_tolerance", options.relative_tolerance);
   require_positive("solver.output_interval_s", options.output_interval_s);
   // The time history is kept in memory (and written by the apps): bounded, with the number.
   constexpr double kMostSamples = 1e6;
   const double samples = model.config.scenario.end_time_s / options.output_interval_s;
-  if (!(samples <= kMostSamples))
+  if (!(samples <= kMostSamples)) {
+    char count[32];
+    std::snprintf(count, sizeof count, "%.3g", samples);
     throw InvalidArgument(
         "solver.output_interval_s", format_value(options.output_interval_s),
         "with scenario.end_time_s = " + format_value(model.config.scenario.end_time_s) +
-            " it asks for " +
-            [&] {
-              char b[32];
-              std::snprintf(b, sizeof b, "%.3g", samples);
-              return std::string(b);
-            }() +
+            " it asks for " + count +
             " samples; at most 1e6 are kept (a longer interval or a shorter "
             "run)");
+  }
   if (options.max_steps < 1)
     throw InvalidArgument("solver.max_steps", std::to_string(options.max_steps), "must be >= 1");
-  const LandingScenario& s = model.config.scenario;
-  LandingRun run;
-  run.contact = model.contact;
-  std::tie(run.window_start_s, run.window_end_s) = analysis_window(s);
+}
 
-  Problem problem{&model, initial_mode(model), active_states(model)};
+// CVODE on the problem's active states from x at t = 0: vectors, tolerances (relative_tolerance
+// times each state's scale, landing_simulation.hpp), method, dense linear solver, Jacobian,
+// events.
+void start_cvode(Cvode& cv, Problem& problem, const GearState& x, const SolverOptions& options) {
   const int n = problem.size();
-  GearState x = initial_state(model);
-  Cvode cv;
   check(SUNContext_Create(nullptr, &cv.ctx), "SUNContext_Create", 0.0);
   cv.y = N_VNew_Serial(n, cv.ctx);
   cv.atol = N_VNew_Serial(n, cv.ctx);
@@ -239,7 +232,7 @@ LandingRun simulate_landing(const GearModel& model, const SolverOptions& options
         scale[static_cast<std::size_t>(problem.active[static_cast<std::size_t>(k)])];
   }
   cv.mem = CVodeCreate(options.method == Integrator::bdf ? CV_BDF : CV_ADAMS, cv.ctx);
-  double t = 0.0;
+  const double t = 0.0;
   check(CVodeInit(cv.mem, rhs, t, cv.y), "CVodeInit", t);
   check(CVodeSVtolerances(cv.mem, options.relative_tolerance, cv.atol), "CVodeSVtolerances", t);
   cv.A = SUNDenseMatrix(n, n, cv.ctx);
@@ -252,146 +245,207 @@ LandingRun simulate_landing(const GearModel& model, const SolverOptions& options
   std::array<int, kRoots> direction{1, 1, -1, 1, 1, 1};
   check(CVodeSetRootDirection(cv.mem, direction.data()), "CVodeSetRootDirection", t);
   check(CVodeSetNoInactiveRootWarn(cv.mem), "CVodeSetNoInactiveRootWarn", t);
+}
 
-  // The analysis window keeps what assess() reads: t, psi', psi.
-  Window window;
-  const auto expected = static_cast<std::size_t>(std::clamp(
-      (run.window_end_s - run.window_start_s) / options.output_interval_s + 2.0, 0.0, 1e6));
-  window.t.reserve(expected);
-  window.rate.reserve(expected);
-  window.psi.reserve(expected);
-  if (options.record)
-    run.samples.reserve(static_cast<std::size_t>(
-        std::clamp(s.end_time_s / options.output_interval_s + 8.0, 0.0, 1e6)));
-  double peak_torsion = 0.0, peak_lateral = 0.0;
-  auto record = [&](double time, N_Vector v) {
-    LandingSample sample{time, to_state(problem, v), {}, problem.mode.rolling};
+// What a landing keeps of each output sample: the analysis window (what assess() reads: t, psi',
+// psi), the peaks after touchdown and, with options.record, the time history.
+class Recorder {
+ public:
+  Recorder(const Problem& problem, const SolverOptions& options, LandingRun& run)
+      : problem_(problem), options_(options), run_(run) {
+    const LandingScenario& s = problem.model->config.scenario;
+    const auto expected = static_cast<std::size_t>(std::clamp(
+        (run.window_end_s - run.window_start_s) / options.output_interval_s + 2.0, 0.0, 1e6));
+    window_.t.reserve(expected);
+    window_.rate.reserve(expected);
+    window_.psi.reserve(expected);
+    if (options.record)
+      run.samples.reserve(static_cast<std::size_t>(
+          std::clamp(s.end_time_s / options.output_interval_s + 8.0, 0.0, 1e6)));
+  }
+
+  void operator()(double time, N_Vector v) {
+    const GearModel& model = *problem_.model;
+    LandingSample sample{time, to_state(problem_, v), {}, problem_.mode.rolling};
     // The contact is kept for the time histories only; the analysis needs the state alone.
-    if (options.record) sample.contact = contact_state(model, problem.mode, time, sample.x);
-    if (time >= s.touchdown_time_s) {
-      peak_torsion = std::max(peak_torsion, std::abs(sample.x[kPsi]));
-      peak_lateral = std::max(peak_lateral, std::abs(sample.x[kY]));
+    if (options_.record) sample.contact = contact_state(model, problem_.mode, time, sample.x);
+    if (time >= model.config.scenario.touchdown_time_s) {
+      peak_torsion_ = std::max(peak_torsion_, std::abs(sample.x[kPsi]));
+      peak_lateral_ = std::max(peak_lateral_, std::abs(sample.x[kY]));
     }
-    if (time >= run.window_start_s && time <= run.window_end_s) {
-      window.t.push_back(time);
-      window.rate.push_back(sample.x[kPsiDot]);
-      window.psi.push_back(sample.x[kPsi]);
+    if (time >= run_.window_start_s && time <= run_.window_end_s) {
+      window_.t.push_back(time);
+      window_.rate.push_back(sample.x[kPsiDot]);
+      window_.psi.push_back(sample.x[kPsi]);
     }
-    if (options.record) run.samples.push_back(sample);
-  };
-  record(t, cv.y);
+    if (options_.record) run_.samples.push_back(sample);
+  }
 
-  // The integrator's counters restart at each CVodeReInit: add them up before it.
-  const auto count = [&] {
-    long steps = 0, rhs = 0, lin_rhs = 0, jac = 0, setups = 0, iters = 0, fails = 0, conv = 0;
-    CVodeGetNumSteps(cv.mem, &steps);
-    CVodeGetNumRhsEvals(cv.mem, &rhs);
-    CVodeGetNumLinRhsEvals(cv.mem, &lin_rhs);
-    CVodeGetNumJacEvals(cv.mem, &jac);
-    CVodeGetNumLinSolvSetups(cv.mem, &setups);
-    CVodeGetNumNonlinSolvIters(cv.mem, &iters);
-    CVodeGetNumErrTestFails(cv.mem, &fails);
-    CVodeGetNumNonlinSolvConvFails(cv.mem, &conv);
-    run.steps += steps;
-    run.rhs_evaluations += rhs + lin_rhs;
-    run.jacobian_evaluations += jac;
-    run.linear_setups += setups;
-    run.newton_iterations += iters;
-    run.error_test_failures += fails;
-    run.convergence_failures += conv;
-  };
-  // CVODE takes one step per call (CV_ONE_STEP); the samples on the output grid are its
-  // interpolant there (CVodeGetDky), which is what CV_NORMAL would return, without a call and a
-  // root search split at every grid point. An event is handled when the output reaches it.
-  const double dt = options.output_interval_s;
-  long grid = 1;
+  ShimmyMetrics metrics(const ShimmyCriterion& criterion) const {
+    return assess(window_, peak_torsion_, peak_lateral_, criterion);
+  }
+
+ private:
+  const Problem& problem_;
+  const SolverOptions& options_;
+  LandingRun& run_;
+  Window window_;
+  double peak_torsion_ = 0.0, peak_lateral_ = 0.0;
+};
+
+// The integrator's counters, added to the run's: they restart at each CVodeReInit.
+void add_counters(void* mem, LandingRun& run) {
+  long steps = 0, rhs = 0, lin_rhs = 0, jac = 0, setups = 0, iters = 0, fails = 0, conv = 0;
+  CVodeGetNumSteps(mem, &steps);
+  CVodeGetNumRhsEvals(mem, &rhs);
+  CVodeGetNumLinRhsEvals(mem, &lin_rhs);
+  CVodeGetNumJacEvals(mem, &jac);
+  CVodeGetNumLinSolvSetups(mem, &setups);
+  CVodeGetNumNonlinSolvIters(mem, &iters);
+  CVodeGetNumErrTestFails(mem, &fails);
+  CVodeGetNumNonlinSolvConvFails(mem, &conv);
+  run.steps += steps;
+  run.rhs_evaluations += rhs + lin_rhs;
+  run.jacobian_evaluations += jac;
+  run.linear_setups += setups;
+  run.newton_iterations += iters;
+  run.error_test_failures += fails;
+  run.convergence_failures += conv;
+}
+
+// The events CVODE found at its root t: the mode switches, the log and the state to restart
+// from (x, changed at the end of spin-up so that Fy is continuous). Returns the event's time: a
+// time event (load onset, full load, brake on/off) is located by CVODE to within rounding, either
+// side of its instant; the instant itself is taken, so that whether the sample there (e.g. at
+// brake off, the analysis window's end) counts does not hang on the root finder.
+double apply_events(Problem& problem, const std::array<int, kRoots>& found, double t, GearState& x,
+                    LandingRun& run) {
+  const GearModel& model = *problem.model;
+  const LandingScenario& s = model.config.scenario;
+  if (!found[kSpinUp] && !found[kSliding]) {
+    if (found[kLoadOnset]) t = s.touchdown_time_s;
+    if (found[kFullLoad]) t = s.touchdown_time_s + s.load_ramp_s;
+    if (found[kBrakeOn]) t = s.brake_on_s;
+    if (found[kBrakeOff]) t = s.brake_off_s;
+  }
+  GearMode& mode = problem.mode;
+  if (found[kLoadOnset]) {
+    mode.loaded = true;
+    run.events.push_back({t, "load onset"});
+  }
+  if (found[kFullLoad]) run.events.push_back({t, "full load"});
+  if (found[kSpinUp] && model.contact == ContactModel::von_schlippe) {
+    problem.string_spun_up = true;
+    if (!run.spin_up_s) run.spin_up_s = t - s.touchdown_time_s;
+    run.events.push_back({t, "spin-up"});
+  } else if (found[kSpinUp]) {
+    // The string takes the sliding lateral force over, so Fy is continuous.
+    const ContactState cs = contact_state(model, mode, t, x);
+    mode.rolling = true;
+    x[kLambda] = string_deflection_for_force(model, t, x, cs.force.Fy);
+    if (!run.spin_up_s) run.spin_up_s = t - s.touchdown_time_s;
+    run.events.push_back({t, "spin-up"});
+  }
+  if (found[kSliding]) {
+    mode.rolling = false;
+    run.events.push_back({t, "sliding"});
+  }
+  if (found[kBrakeOn]) {
+    mode.brake_command = true;
+    run.events.push_back({t, "brake on"});
+  }
+  if (found[kBrakeOff]) {
+    mode.brake_command = false;
+    run.events.push_back({t, "brake off"});
+  }
+  return t;
+}
+
+// Where the integrator stands between outputs.
+struct Progress {
   double reached = 0.0;  // the integrator's time t_n
   bool root = false;     // a root found at root_t and not handled yet
   double root_t = 0.0;
   long steps_since_output = 0;
-  while (t < s.end_time_s) {
-    const double tout = std::min(static_cast<double>(grid) * dt, s.end_time_s);
+};
+
+// CVODE steps (CV_ONE_STEP) until it passes tout or finds a root; solver.max_steps bounds the
+// steps between two outputs, as CVodeSetMaxNumSteps does in CV_NORMAL.
+void step_to(Cvode& cv, double tout, const GearModel& model, const SolverOptions& options,
+             Progress& p) {
+  while (!p.root && p.reached < tout) {
+    if (++p.steps_since_output > options.max_steps)
+      check_step(CV_TOO_MUCH_WORK, "CVode (solver.max_steps between outputs)", p.reached,
+                 model.config);
+    throw_if_stopped(options.stop);
+    double returned = p.reached;
+    const int flag = CVode(cv.mem, tout, cv.y, &returned, CV_ONE_STEP);
+    check_step(flag, "CVode", returned, model.config);
+    check(CVodeGetCurrentTime(cv.mem, &p.reached), "CVodeGetCurrentTime", returned);
+    if (flag == CV_ROOT_RETURN) {
+      p.root = true;
+      p.root_t = returned;
+    }
+  }
+}
+
+// From t = 0 to the scenario's end: the samples on the output grid are CVODE's interpolant there
+// (CVodeGetDky), which is what CV_NORMAL would return, without a call and a root search split at
+// every grid point; an event is handled when the output reaches it, and CVODE restarts there.
+void integrate(Cvode& cv, Problem& problem, const SolverOptions& options, Recorder& record,
+               LandingRun& run) {
+  const GearModel& model = *problem.model;
+  const double end = model.config.scenario.end_time_s, dt = options.output_interval_s;
+  double t = 0.0;
+  long grid = 1;
+  Progress p;
+  while (t < end) {
+    const double tout = std::min(static_cast<double>(grid) * dt, end);
     if (tout - t < 1e-9 * dt) {  // an event fell on the grid point
       record(t, cv.y);
       ++grid;
       continue;
     }
-    while (!root && reached < tout) {
-      // solver.max_steps bounds the steps between two outputs, as CVodeSetMaxNumSteps does in
-      // CV_NORMAL.
-      if (++steps_since_output > options.max_steps)
-        check_step(CV_TOO_MUCH_WORK, "CVode (solver.max_steps between outputs)", reached,
-                   model.config);
-      throw_if_stopped(options.stop);
-      double returned = reached;
-      const int flag = CVode(cv.mem, tout, cv.y, &returned, CV_ONE_STEP);
-      check_step(flag, "CVode", returned, model.config);
-      check(CVodeGetCurrentTime(cv.mem, &reached), "CVodeGetCurrentTime", returned);
-      if (flag == CV_ROOT_RETURN) {
-        root = true;
-        root_t = returned;
-      }
-    }
-    if (!root || tout < root_t) {
+    step_to(cv, tout, model, options, p);
+    if (!p.root || tout < p.root_t) {
       check(CVodeGetDky(cv.mem, tout, 0, cv.out), "CVodeGetDky", tout);
       t = tout;
       record(t, cv.out);
-      steps_since_output = 0;
+      p.steps_since_output = 0;
       ++grid;
       continue;
     }
     // The event: cv.y holds the state at the root.
-    t = root_t;
-    root = false;
+    p.root = false;
     std::array<int, kRoots> found{};
-    check(CVodeGetRootInfo(cv.mem, found.data()), "CVodeGetRootInfo", t);
-    // A time event (load onset, full load, brake on/off) is located by CVODE to within rounding,
-    // either side of its instant; take the instant itself, so that whether the sample there
-    // (e.g. at brake off, the analysis window's end) counts does not hang on the root finder.
-    if (!found[kSpinUp] && !found[kSliding]) {
-      if (found[kLoadOnset]) t = s.touchdown_time_s;
-      if (found[kFullLoad]) t = s.touchdown_time_s + s.load_ramp_s;
-      if (found[kBrakeOn]) t = s.brake_on_s;
-      if (found[kBrakeOff]) t = s.brake_off_s;
-    }
-    x = to_state(problem, cv.y);
-    GearMode& mode = problem.mode;
-    if (found[kLoadOnset]) {
-      mode.loaded = true;
-      run.events.push_back({t, "load onset"});
-    }
-    if (found[kFullLoad]) run.events.push_back({t, "full load"});
-    if (found[kSpinUp] && model.contact == ContactModel::von_schlippe) {
-      problem.string_spun_up = true;
-      if (!run.spin_up_s) run.spin_up_s = t - s.touchdown_time_s;
-      run.events.push_back({t, "spin-up"});
-    } else if (found[kSpinUp]) {
-      // The string takes the sliding lateral force over, so Fy is continuous.
-      const ContactState cs = contact_state(model, mode, t, x);
-      mode.rolling = true;
-      x[kLambda] = string_deflection_for_force(model, t, x, cs.force.Fy);
-      if (!run.spin_up_s) run.spin_up_s = t - s.touchdown_time_s;
-      run.events.push_back({t, "spin-up"});
-    }
-    if (found[kSliding]) {
-      mode.rolling = false;
-      run.events.push_back({t, "sliding"});
-    }
-    if (found[kBrakeOn]) {
-      mode.brake_command = true;
-      run.events.push_back({t, "brake on"});
-    }
-    if (found[kBrakeOff]) {
-      mode.brake_command = false;
-      run.events.push_back({t, "brake off"});
-    }
-    count();
+    check(CVodeGetRootInfo(cv.mem, found.data()), "CVodeGetRootInfo", p.root_t);
+    GearState x = to_state(problem, cv.y);
+    t = apply_events(problem, found, p.root_t, x, run);
+    add_counters(cv.mem, run);
     from_state(problem, x, cv.y);
     check(CVodeReInit(cv.mem, t, cv.y), "CVodeReInit", t);
-    reached = t;
+    p.reached = t;
   }
-  count();
-  run.metrics = assess(window, peak_torsion, peak_lateral, criterion);
+  add_counters(cv.mem, run);
+}
+
+}  // namespace
+
+LandingRun simulate_landing(const GearModel& model, const SolverOptions& options,
+                            const ShimmyCriterion& criterion) {
+  const auto clock_start = std::chrono::steady_clock::now();
+  validate(model.config);
+  check_options(model, options);
+  LandingRun run;
+  run.contact = model.contact;
+  std::tie(run.window_start_s, run.window_end_s) = analysis_window(model.config.scenario);
+  Problem problem{&model, initial_mode(model), active_states(model)};
+  Cvode cv;
+  start_cvode(cv, problem, initial_state(model), options);
+  Recorder record(problem, options, run);
+  record(0.0, cv.y);
+  integrate(cv, problem, options, record, run);
+  run.metrics = record.metrics(criterion);
   run.wall_s =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - clock_start).count();
   return run;

@@ -226,20 +226,22 @@ OscillationEstimate perturbation_response(const GearModel& model, const QuasiSte
   return analyse_oscillation(t, rate, psi);
 }
 
+// The position of `state` among the quasi-steady state's active states; -1 if inactive.
+int index_of(const QuasiSteadyState& q, int state) {
+  for (std::size_t k = 0; k < q.states.size(); ++k)
+    if (q.states[k] == state) return static_cast<int>(k);
+  return -1;
+}
+
 // The work per cycle of each term along the mode v (complex amplitudes of the active states,
 // angular frequency w), the contact forces along it from Jc (linear_stability.hpp).
 EnergyPerCycle mode_energy(const GearModel& model, const QuasiSteadyState& q,
                            const Eigen::Matrix<double, 4, kStateSize>& Jc,
                            const Eigen::VectorXcd& v, double w) {
-  const auto index_of = [&](int state) {
-    for (std::size_t k = 0; k < q.states.size(); ++k)
-      if (q.states[k] == state) return static_cast<int>(k);
-    return -1;
-  };
   Eigen::Vector4cd F = Eigen::Vector4cd::Zero();
   for (std::size_t k = 0; k < q.states.size(); ++k)
     F += Jc.col(q.states[k]).cast<std::complex<double>>() * v[static_cast<int>(k)];
-  const std::complex<double> psi_dot = v[index_of(kPsiDot)], y_dot = v[index_of(kYDot)];
+  const std::complex<double> psi_dot = v[index_of(q, kPsiDot)], y_dot = v[index_of(q, kYDot)];
   const auto work = [&](std::complex<double> force, std::complex<double> rate) {
     return std::numbers::pi / w * (force * std::conj(rate)).real();
   };
@@ -253,7 +255,7 @@ EnergyPerCycle mode_energy(const GearModel& model, const QuasiSteadyState& q,
   e.lateral_damping = work(-g.lateral_damping_ns_per_m * y_dot, y_dot);
   if (g.carcass_compliance()) {
     const double fx0 = contact_state(model, q.mode, q.t, q.x).force.Fx;
-    e.carcass_lever = work(-(q.x[kCarcassY] * F[0] + fx0 * v[index_of(kCarcassY)]), psi_dot);
+    e.carcass_lever = work(-(q.x[kCarcassY] * F[0] + fx0 * v[index_of(q, kCarcassY)]), psi_dot);
   }
   return e;
 }
@@ -262,6 +264,36 @@ EnergyPerCycle mode_energy(const GearModel& model, const QuasiSteadyState& q,
 double friction_work(const EnergyPerCycle& e) {
   return e.spin_torque + e.trail_lateral_force + e.offset_drag + e.lateral_friction +
          e.carcass_lever;
+}
+
+// The dominant oscillatory mode (eigenvalue `ev`, eigenvector v): its growth and frequency, its
+// kind (torsion, lateral, fore-aft) and its energy per cycle at 1 mrad or 1 mm, with the part
+// the fall of friction with slip speed contributes.
+void describe_dominant_mode(const GearModel& model, const QuasiSteadyState& q,
+                            const Eigen::Matrix<double, 4, kStateSize>& Jc, std::complex<double> ev,
+                            Eigen::VectorXcd v, StabilityReport& rep) {
+  rep.growth_rate_per_s = ev.real();
+  rep.frequency_hz = ev.imag() / (2 * std::numbers::pi);
+  const std::complex<double> psi = v[index_of(q, kPsi)], y = v[index_of(q, kY)];
+  rep.torsion_share = std::abs(psi) / (std::abs(psi) + std::abs(y) / 0.1);
+  const int ix = index_of(q, kX);
+  const double fore_aft = ix >= 0 ? std::abs(v[ix]) : 0.0;
+  rep.mode_kind = fore_aft > std::max(std::abs(psi) * 1.0, std::abs(y))
+                      ? "fore-aft"
+                      : (std::abs(psi) * 1.0 >= std::abs(y) ? "torsion" : "lateral");
+  // Amplitude: 1 mrad of torsion or 1 mm of lateral or fore-aft deflection, whichever the mode
+  // moves most (|psi| x 1 m against |y| and |x|, as mode_kind), so that a lateral mode's energy
+  // is not that of a tiny torsion blown up to 1 mrad.
+  const double largest = std::max({std::abs(psi) * 1.0, std::abs(y), fore_aft});
+  v *= (largest > 1e-300 ? 1e-3 / largest : 1.0);
+  rep.energy = mode_energy(model, q, Jc, v, ev.imag());
+  // The fall of friction with slip speed: the same mode with f held at its operating value.
+  GearModel flat = model;
+  flat.config.tire.friction.static_coefficient = rep.friction;
+  flat.config.tire.friction.kinetic_coefficient = rep.friction;
+  rep.energy.fall_of_friction =
+      friction_work(rep.energy) -
+      friction_work(mode_energy(flat, q, contact_jacobian(flat, q), v, ev.imag()));
 }
 
 }  // namespace
@@ -289,11 +321,6 @@ StabilityReport assess_stability(const GearModel& model_in, StabilityPhase phase
       break;
     }
   }
-  const auto index_of = [&](int state) {
-    for (int k = 0; k < n; ++k)
-      if (q.states[static_cast<std::size_t>(k)] == state) return k;
-    return -1;
-  };
   const Eigen::Matrix<double, 4, kStateSize> Jc = contact_jacobian(model, q);
   rep.spin_torque_damping_nms_per_rad = -Jc(2, kPsiDot);
   rep.drag_slope_ns_per_m = (Jc(0, kSpin) + Jc(0, kSpin2)) / model.config.structure.wheel_radius_m;
@@ -303,42 +330,19 @@ StabilityReport assess_stability(const GearModel& model_in, StabilityPhase phase
     const std::complex<double> ev = es.eigenvalues()[k];
     if (ev.imag() <= 2 * std::numbers::pi * 0.5) continue;
     const Eigen::VectorXcd v = es.eigenvectors().col(k);
-    const double share = std::abs(v[index_of(kPsi)]) /
-                         (std::abs(v[index_of(kPsi)]) + std::abs(v[index_of(kY)]) / 0.1);
+    const double share = std::abs(v[index_of(q, kPsi)]) /
+                         (std::abs(v[index_of(q, kPsi)]) + std::abs(v[index_of(q, kY)]) / 0.1);
     if (share > best_share) {
       best_share = share;
       rep.torsion_growth_rate_per_s = ev.real();
       rep.torsion_frequency_hz = ev.imag() / (2 * std::numbers::pi);
     }
   }
-  if (dominant < 0) {
+  if (dominant < 0)
     rep.growth_rate_per_s = rep.max_real_part;
-  } else {
-    const std::complex<double> ev = es.eigenvalues()[dominant];
-    rep.growth_rate_per_s = ev.real();
-    rep.frequency_hz = ev.imag() / (2 * std::numbers::pi);
-    Eigen::VectorXcd v = es.eigenvectors().col(dominant);
-    const std::complex<double> psi = v[index_of(kPsi)], y = v[index_of(kY)];
-    rep.torsion_share = std::abs(psi) / (std::abs(psi) + std::abs(y) / 0.1);
-    const int ix = index_of(kX);
-    const double fore_aft = ix >= 0 ? std::abs(v[ix]) : 0.0;
-    rep.mode_kind = fore_aft > std::max(std::abs(psi) * 1.0, std::abs(y))
-                        ? "fore-aft"
-                        : (std::abs(psi) * 1.0 >= std::abs(y) ? "torsion" : "lateral");
-    // Amplitude: 1 mrad of torsion or 1 mm of lateral or fore-aft deflection, whichever the mode
-    // moves most (|psi| x 1 m against |y| and |x|, as mode_kind), so that a lateral mode's energy
-    // is not that of a tiny torsion blown up to 1 mrad.
-    const double largest = std::max({std::abs(psi) * 1.0, std::abs(y), fore_aft});
-    v *= (largest > 1e-300 ? 1e-3 / largest : 1.0);
-    rep.energy = mode_energy(model, q, Jc, v, ev.imag());
-    // The fall of friction with slip speed: the same mode with f held at its operating value.
-    GearModel flat = model;
-    flat.config.tire.friction.static_coefficient = rep.friction;
-    flat.config.tire.friction.kinetic_coefficient = rep.friction;
-    rep.energy.fall_of_friction =
-        friction_work(rep.energy) -
-        friction_work(mode_energy(flat, q, contact_jacobian(flat, q), v, ev.imag()));
-  }
+  else
+    describe_dominant_mode(model, q, Jc, es.eigenvalues()[dominant],
+                           es.eigenvectors().col(dominant), rep);
   rep.perturbation_growth_rate_per_s = std::numeric_limits<double>::quiet_NaN();
   rep.perturbation_frequency_hz = std::numeric_limits<double>::quiet_NaN();
   if (options.simulate_perturbation && q.converged) {

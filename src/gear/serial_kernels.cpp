@@ -16,59 +16,67 @@ View view(N_Vector v) {
   return {NV_DATA_S(v), NV_LENGTH_S(v)};
 }
 
-// z = a x + b y with nvector_serial.c's special cases (each rounds differently: c (x + y) is
-// not c x + c y), so that the sums are the library's to the last bit.
+// w += c u, with nvector_serial.c's cases c = 1 and c = -1 (Vaxpy).
+void axpy(sunindextype n, sunrealtype c, const sunrealtype* u, sunrealtype* w) {
+  if (c == 1.0) {
+    for (sunindextype i = 0; i < n; ++i) w[i] += u[i];
+  } else if (c == -1.0) {
+    for (sunindextype i = 0; i < n; ++i) w[i] -= u[i];
+  } else {
+    for (sunindextype i = 0; i < n; ++i) w[i] += c * u[i];
+  }
+}
+
+// z = v1 + v2 (VSum) and z = v2 - v1 (VDiff).
+void sum(sunindextype n, const sunrealtype* v1, const sunrealtype* v2, sunrealtype* z) {
+  for (sunindextype i = 0; i < n; ++i) z[i] = v1[i] + v2[i];
+}
+void difference(sunindextype n, const sunrealtype* v1, const sunrealtype* v2, sunrealtype* z) {
+  for (sunindextype i = 0; i < n; ++i) z[i] = v2[i] - v1[i];
+}
+
+// z = c v1 + v2 (VLin1) and z = c v1 - v2 (VLin2).
+void lin1(sunindextype n, sunrealtype c, const sunrealtype* v1, const sunrealtype* v2,
+          sunrealtype* z) {
+  for (sunindextype i = 0; i < n; ++i) z[i] = (c * v1[i]) + v2[i];
+}
+void lin2(sunindextype n, sunrealtype c, const sunrealtype* v1, const sunrealtype* v2,
+          sunrealtype* z) {
+  for (sunindextype i = 0; i < n; ++i) z[i] = (c * v1[i]) - v2[i];
+}
+
+// z = c (x + y) (VScaleSum), z = c (x - y) (VScaleDiff) and the general a x + b y.
+void scale_sum(sunindextype n, sunrealtype c, const sunrealtype* x, const sunrealtype* y,
+               sunrealtype* z) {
+  for (sunindextype i = 0; i < n; ++i) z[i] = c * (x[i] + y[i]);
+}
+void scale_difference(sunindextype n, sunrealtype c, const sunrealtype* x, const sunrealtype* y,
+                      sunrealtype* z) {
+  for (sunindextype i = 0; i < n; ++i) z[i] = c * (x[i] - y[i]);
+}
+void general_sum(sunindextype n, sunrealtype a, const sunrealtype* x, sunrealtype b,
+                 const sunrealtype* y, sunrealtype* z) {
+  for (sunindextype i = 0; i < n; ++i) z[i] = (a * x[i]) + (b * y[i]);
+}
+
+// z = a x + b y with nvector_serial.c's special cases, in its order (each rounds differently:
+// c (x + y) is not c x + c y), so that the sums are the library's to the last bit.
 void linear_sum(sunrealtype a, N_Vector x, sunrealtype b, N_Vector y, N_Vector z) {
-  const auto [xd, length] = view(x);
-  const sunindextype n = length;  // a copy: clang 14 cannot capture a structured binding
+  const auto [xd, n] = view(x);
   sunrealtype* yd = NV_DATA_S(y);
   sunrealtype* zd = NV_DATA_S(z);
-  const auto axpy = [n](sunrealtype c, const sunrealtype* u, sunrealtype* w) {  // w += c u
-    if (c == 1.0) {
-      for (sunindextype i = 0; i < n; ++i) w[i] += u[i];
-    } else if (c == -1.0) {
-      for (sunindextype i = 0; i < n; ++i) w[i] -= u[i];
-    } else {
-      for (sunindextype i = 0; i < n; ++i) w[i] += c * u[i];
-    }
-  };
-  if (b == 1.0 && z == y) return axpy(a, xd, yd);
-  if (a == 1.0 && z == x) return axpy(b, yd, xd);
-  if (a == 1.0 && b == 1.0) {
-    for (sunindextype i = 0; i < n; ++i) zd[i] = xd[i] + yd[i];
-    return;
-  }
-  if ((a == 1.0 && b == -1.0) || (a == -1.0 && b == 1.0)) {  // z = v2 - v1
-    const sunrealtype* v1 = a == 1.0 ? yd : xd;
-    const sunrealtype* v2 = a == 1.0 ? xd : yd;
-    for (sunindextype i = 0; i < n; ++i) zd[i] = v2[i] - v1[i];
-    return;
-  }
-  if (a == 1.0 || b == 1.0) {  // z = c v1 + v2
-    const bool first = a == 1.0;
-    const sunrealtype c = first ? b : a;
-    const sunrealtype* v1 = first ? yd : xd;
-    const sunrealtype* v2 = first ? xd : yd;
-    for (sunindextype i = 0; i < n; ++i) zd[i] = (c * v1[i]) + v2[i];
-    return;
-  }
-  if (a == -1.0 || b == -1.0) {  // z = c v1 - v2
-    const bool first = a == -1.0;
-    const sunrealtype c = first ? b : a;
-    const sunrealtype* v1 = first ? yd : xd;
-    const sunrealtype* v2 = first ? xd : yd;
-    for (sunindextype i = 0; i < n; ++i) zd[i] = (c * v1[i]) - v2[i];
-    return;
-  }
-  if (a == b) {
-    for (sunindextype i = 0; i < n; ++i) zd[i] = a * (xd[i] + yd[i]);
-    return;
-  }
-  if (a == -b) {
-    for (sunindextype i = 0; i < n; ++i) zd[i] = a * (xd[i] - yd[i]);
-    return;
-  }
-  for (sunindextype i = 0; i < n; ++i) zd[i] = (a * xd[i]) + (b * yd[i]);
+  if (b == 1.0 && z == y) return axpy(n, a, xd, yd);
+  if (a == 1.0 && z == x) return axpy(n, b, yd, xd);
+  if (a == 1.0 && b == 1.0) return sum(n, xd, yd, zd);
+  if (a == 1.0 && b == -1.0) return difference(n, yd, xd, zd);  // x - y
+  if (a == -1.0 && b == 1.0) return difference(n, xd, yd, zd);  // y - x
+  if (a == 1.0) return lin1(n, b, yd, xd, zd);
+  if (b == 1.0) return lin1(n, a, xd, yd, zd);
+  if (a == -1.0) return lin2(n, b, yd, xd, zd);
+  if (b == -1.0) return lin2(n, a, xd, yd, zd);
+  if (a == b) return scale_sum(n, a, xd, yd, zd);
+  if (a == -b) return scale_difference(n, a, xd, yd, zd);
+  general_sum(n, a, xd, b, yd, zd);
 }
 
 void constant(sunrealtype c, N_Vector z) {

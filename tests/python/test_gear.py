@@ -44,6 +44,28 @@ def test_default_configuration_is_the_apps(shimmy_app, tmp_path):
     assert "structure.offset_m" in c.LandingConfig.parameter_names()
 
 
+def test_keys_are_the_apps_table(shimmy_app):
+    """LandingConfig.keys() is the app's key table: every key of the configuration, with its
+    default as --print-config prints it."""
+    keys = {k["name"]: k for k in c.LandingConfig.keys()}
+    printed = print_config(shimmy_app)
+
+    def leaves(node, prefix=""):
+        for name, value in node.items():
+            dotted = f"{prefix}.{name}" if prefix else name
+            if isinstance(value, dict):
+                yield from leaves(value, dotted)
+            else:
+                yield dotted, value
+
+    assert dict(leaves(printed)) == {name: k["default"] for name, k in keys.items()}
+    offset = keys["structure.offset_m"]
+    assert (offset["type"], offset["unit"], offset["values"]) == ("number", "m", "finite")
+    assert keys["structure.freeplay_rad"]["values"] == "[0, 1)"
+    assert keys["solver.method"]["values"] == "adams or bdf"
+    assert set(c.LandingConfig.parameter_names()) <= set(keys)
+
+
 def test_bad_configuration_values_are_value_errors(tmp_path):
     cfg = c.LandingConfig()
     mass = cfg["structure.lateral_mass_kg"]

@@ -164,7 +164,8 @@ struct GearConfig {
   LandingScenario scenario;
 };
 
-// Throws InvalidArgument naming the first bad field.
+// Throws InvalidArgument naming the first bad field (the ranges and relations of
+// gear_parameters.hpp, row by row).
 void validate(const GearConfig& config);
 
 // Named gears (docs/shimmy.md, "Parameters"): "default" (GearConfig{}: classically stable with a
@@ -181,7 +182,8 @@ GearConfig legacy_gear_config();
 GearConfig carcass_from_string_tire(GearConfig config);
 
 // The numeric parameters of a GearConfig by dotted name ("structure.offset_m",
-// "scenario.forward_speed_mps", "tire.friction.static_coefficient", ...); nullptr if unknown.
+// "scenario.forward_speed_mps", "tire.friction.static_coefficient", ...); nullptr if unknown
+// (gear_parameters.hpp has every key with its unit and range).
 double* gear_parameter(GearConfig& config, std::string_view name);
 std::vector<std::string> gear_parameter_names();
 

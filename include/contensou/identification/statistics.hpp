@@ -1,19 +1,29 @@
-// Small statistics toolkit for identification and residual diagnostics.
+// Small statistics toolkit for identification and residual diagnostics. The distributions are
+// Boost.Math's (students_t, normal, chi_squared, fisher_f; header-only, used in the .cpp only):
+// these functions check their arguments (InvalidArgument naming the bad one) and name the use.
 #pragma once
 
 #include <vector>
 
 namespace contensou {
 
-// Regularised incomplete beta function I_x(a, b) (continued fraction, Lentz's method).
-double incomplete_beta(double a, double b, double x);
-
-// Student t distribution with nu degrees of freedom: CDF and quantile (inverse CDF).
+// Student t distribution with nu degrees of freedom: CDF and quantile (inverse CDF), p in (0, 1).
 double student_t_cdf(double t, double nu);
 double student_t_quantile(double p, double nu);
 
-// Standard normal CDF.
+// Standard normal CDF and quantile, p in (0, 1).
 double normal_cdf(double z);
+double normal_quantile(double p);
+
+// Chi-square with k degrees of freedom: the survival P(X > x) (1 for x <= 0, NaN for NaN) and
+// the quantile, p in (0, 1).
+double chi2_survival(double x, double k);
+double chi2_quantile(double p, double k);
+
+// Fisher's F with (d1, d2) degrees of freedom: the survival P(X > x) (1 for x <= 0, NaN for NaN)
+// and the quantile, p in (0, 1).
+double fisher_f_survival(double x, double d1, double d2);
+double fisher_f_quantile(double p, double d1, double d2);
 
 // Wald-Wolfowitz runs test on the signs of a sequence (zeros dropped): the number of runs,
 // its z score under independence and the two-sided p value (normal approximation).
@@ -29,13 +39,5 @@ RunsTest runs_test(const std::vector<double>& sequence);
 // Lag-1 autocorrelation (about the mean) and the Durbin-Watson statistic (about zero).
 double lag1_autocorrelation(const std::vector<double>& x);
 double durbin_watson(const std::vector<double>& x);
-
-}  // namespace contensou
-
-namespace contensou {
-
-// Regularised upper incomplete gamma Q(a, x) and the chi-square survival P(X > x), k dof.
-double upper_incomplete_gamma(double a, double x);
-double chi2_survival(double x, double k);
 
 }  // namespace contensou
