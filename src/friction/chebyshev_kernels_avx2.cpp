@@ -63,12 +63,23 @@ void blocked_slope_sums(const double* c, double x, double* out, double* slope) {
   slope_block<M, N, F>(c + 2 * F, T, D, out + 2 * F, slope + 2 * F);
 }
 
+// The Chebyshev basis in z of falling_sums and the chain factors of its slopes.
+struct ZPointBasis {
+  const double* T;  // T_k(x), k = 0..8, x the z point's place in its octave
+  const double* D;  // T_k'(x)
+  double dxdt;      // factor of the t-slopes
+  double dxdz;      // factor of the z-slopes
+};
+
 // The z sums of falling_sums: the rows B (values) and dB (t-slopes) of the 54 = 9 x 6 flat
-// functions (z degree k, function i: flat 6 k + i, 32-byte aligned) times T_k(x) and T_k'(x).
+// functions (z degree k, function i: flat 6 k + i, 32-byte aligned) times T_k(x) and T_k'(x)
+// (the basis z; the slopes times dx/dt and dx/dz).
 // A vector at flat 4 v holds the functions of phase 4 v mod 12: 0 (i = 0..3 of k = 2m), 4
 // (i = 4, 5 of 2m, 0, 1 of 2m + 1) or 8 (i = 2..5 of 2m + 1); one sum per phase and kind.
-void z_sums(const double* B, const double* dB, const double* Tz, const double* Dz, double dxdt,
-            double dxdz, double* __restrict g, double* __restrict gt, double* __restrict gz) {
+void z_sums(const double* B, const double* dB, const ZPointBasis& z, double* __restrict g,
+            double* __restrict gt, double* __restrict gz) {
+  const double* Tz = z.T;
+  const double* Dz = z.D;
   __m256d s[3][3] = {};          // [kind: value, t-slope, z-slope][phase 0, 4, 8]
   for (int m = 0; m < 4; ++m) {  // k = 2m, 2m + 1: flats 12m .. 12m + 11
     const __m256d ta = _mm256_broadcast_sd(Tz + 2 * m), tb = _mm256_broadcast_sd(Tz + 2 * m + 1);
@@ -96,7 +107,7 @@ void z_sums(const double* B, const double* dB, const double* Tz, const double* D
   // i = 0..3: phase 0, lanes 2, 3 of phase 4 and 0, 1 of phase 8; i = 4, 5: lanes 0, 1 of phase
   // 4 and 2, 3 of phase 8.
   double* out[3] = {g, gt, gz};
-  const double factor[3] = {1.0, dxdt, dxdz};
+  const double factor[3] = {1.0, z.dxdt, z.dxdz};
   for (int kind = 0; kind < 3; ++kind) {
     const __m256d f = _mm256_set1_pd(factor[kind]);
     const __m256d lo =
@@ -125,7 +136,7 @@ void falling_sums(const double* c, double xt, double dxdt, double xz, double dxd
   slope_block<M, N, 20>(c + 20, T, D, B + 20, dB + 20);
   slope_block<M, N, 14>(c + 40, T, D, B + 40, dB + 40);
   contensou::detail::chebyshev_basis<NZ, true>(xz, Tz, Dz);
-  z_sums(B, dB, Tz, Dz, dxdt, dxdz, g, gt, gz);
+  z_sums(B, dB, {Tz, Dz, dxdt, dxdz}, g, gt, gz);
 }
 
 }  // namespace

@@ -452,6 +452,36 @@ double update_far_sums(const std::vector<double>& knot,
 
 }  // namespace detail
 
+namespace {
+
+// A table's cubic pieces in t = rho^2 as they are (exact for the interpolant), clipped at zero
+// if asked, with their knot terms and far sums (impl/table_pieces.hpp): on [t_k, t_k+1], h =
+// t_k+1 - t_k, del = (p_k+1 - p_k) / h, the Hermite cubic p_k + d_k s + (3 del - 2 d_k -
+// d_k+1) s^2 / h + (d_k + d_k+1 - 2 del) s^3 / h^2, s = t - t_k.
+void set_table_pieces(ExactModel<double>& m, const TabulatedShape& tab, bool clip) {
+  if (tab.rho.front() > 0.0) {  // constant below the first knot
+    m.knot.push_back(0.0);
+    m.piece.push_back({tab.p.front(), 0.0, 0.0, 0.0});
+  }
+  for (std::size_t k = 0; k + 1 < tab.rho.size(); ++k) {
+    const double ta = tab.rho[k] * tab.rho[k], tb = tab.rho[k + 1] * tab.rho[k + 1];
+    const double h = tb - ta, del = (tab.p[k + 1] - tab.p[k]) / h;
+    const double d0 = tab.slope[k], d1 = tab.slope[k + 1];
+    m.knot.push_back(ta);
+    m.piece.push_back(
+        {tab.p[k], d0, (3.0 * del - 2.0 * d0 - d1) / h, (d0 + d1 - 2.0 * del) / (h * h)});
+  }
+  m.knot.push_back(1.0);
+  if (clip) clip_pieces(m.knot, m.piece);
+  // The far-knot series' deviation, as a bound on the chord integrals' error (in units of
+  // the profile times the chord length, as a profile representation error is).
+  detail::update_knot_terms(m.knot, m.piece, m.knot_m0, m.knot_m2);
+  m.representation_error =
+      detail::update_far_sums(m.knot, m.piece, m.far_m0, m.far_m2, m.far_from, m.near_integrated);
+}
+
+}  // namespace
+
 ExactModel<double> make_exact_model(const ContactPatch& patch, double representation_tolerance) {
   if (!(representation_tolerance > 0.0 && representation_tolerance < 1e-3))
     throw InvalidArgument("representation_tolerance", format_value(representation_tolerance),
@@ -491,26 +521,7 @@ ExactModel<double> make_exact_model(const ContactPatch& patch, double representa
   } else if (const auto* cs = std::get_if<ChebyshevShape>(&prof.shape); cs && rho_max == 1.0) {
     m.chebyshev = cs->c;  // already a series in t = rho^2: exact
   } else if (const auto* tab = std::get_if<TabulatedShape>(&prof.shape)) {
-    // A table: its cubic pieces in t = rho^2 as they are (exact for the interpolant).
-    if (tab->rho.front() > 0.0) {  // constant below the first knot
-      m.knot.push_back(0.0);
-      m.piece.push_back({tab->p.front(), 0.0, 0.0, 0.0});
-    }
-    for (std::size_t k = 0; k + 1 < tab->rho.size(); ++k) {
-      const double ta = tab->rho[k] * tab->rho[k], tb = tab->rho[k + 1] * tab->rho[k + 1];
-      const double h = tb - ta, del = (tab->p[k + 1] - tab->p[k]) / h;
-      const double d0 = tab->slope[k], d1 = tab->slope[k + 1];
-      m.knot.push_back(ta);
-      m.piece.push_back(
-          {tab->p[k], d0, (3.0 * del - 2.0 * d0 - d1) / h, (d0 + d1 - 2.0 * del) / (h * h)});
-    }
-    m.knot.push_back(1.0);
-    if (prof.clip_negative) clip_pieces(m.knot, m.piece);
-    // The far-knot series' deviation, as a bound on the chord integrals' error (in units of
-    // the profile times the chord length, as a profile representation error is).
-    detail::update_knot_terms(m.knot, m.piece, m.knot_m0, m.knot_m2);
-    m.representation_error =
-        detail::update_far_sums(m.knot, m.piece, m.far_m0, m.far_m2, m.far_from, m.near_integrated);
+    set_table_pieces(m, *tab, prof.clip_negative);
   } else {
     const ChebyshevFit fit =
         fit_chebyshev([&](double t) { return shape_value(prof, rho_max * std::sqrt(t)); },

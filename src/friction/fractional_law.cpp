@@ -13,6 +13,80 @@ void validate(const FractionalLaw<double>& p) {
   detail::check_law(p);
 }
 
+namespace {
+
+// Velocities scaled by sc = max(|vx|, |vy|, |omega| R, eps) (the law is homogeneous of degree
+// 0 in (v, u, eps): J is divided by sc at the end): v, u = omega R, eps^2, U = u^2, q = |v|^2.
+struct ScaledKinematics {
+  double vx, vy, u, e2, U, q, R;
+};
+
+// The shift forces -(M0/2R) [g2 (z x k) + Gq (k.v)(z x v)] and their Jacobian (theory.md
+// section 4; Gq = (g1 - g2)/q in the cancellation-free form of the header: Gq = u L, L = P / Q,
+// Q = S1 S2^3 Wq, Wq = S2^3 + s0 S1, s0 = U + eps^2; derivatives in q and s0, ds0/du = 2u).
+void add_shift_forces(const FractionalLaw<double>& p, const ScaledKinematics& k, double& Fx,
+                      double& Fy, Eigen::Matrix3d& J) {
+  const double vx = k.vx, vy = k.vy, u = k.u, e2 = k.e2, U = k.U, q = k.q, R = k.R;
+  const double hm = p.M0 / (2.0 * R);
+  const double s0 = U + e2, c = p.c;
+  const double S1 = std::sqrt(s0 + 0.25 * p.m * q), iS12 = 1.0 / (S1 * S1);
+  const double S2sq = s0 + c * q, S2 = std::sqrt(S2sq), iS22 = 1.0 / S2sq;
+  const double S23 = S2sq * S2, iS23 = 1.0 / S23, iS25 = iS23 * iS22;
+  const double g2 = u * s0 * iS23;
+  const double dg2_dq = -1.5 * c * u * s0 * iS25;
+  const double dg2_du = (s0 * e2 + c * q * (s0 + 2.0 * U)) * iS25;
+  const double P = s0 * s0 * (3.0 * c - 0.25 * p.m) + 3.0 * s0 * c * c * q + c * c * c * q * q;
+  const double Wq = S23 + s0 * S1, iQ = 1.0 / (S1 * S23 * Wq);
+  const double L = P * iQ;
+  const double P_q = 3.0 * s0 * c * c + 2.0 * c * c * c * q;
+  const double P_s = 2.0 * s0 * (3.0 * c - 0.25 * p.m) + 3.0 * c * c * q;
+  const double W_q = 1.5 * c * S2 + 0.125 * p.m * s0 / S1;
+  const double W_s = 1.5 * S2 + S1 + 0.5 * s0 / S1;
+  const double lnQ_q = 0.125 * p.m * iS12 + 1.5 * c * iS22 + W_q / Wq;
+  const double lnQ_s = 0.5 * iS12 + 1.5 * iS22 + W_s / Wq;
+  const double Gq = u * L;
+  const double dGq_dq = u * (P_q - P * lnQ_q) * iQ;
+  const double dGq_du = L + 2.0 * U * (P_s - P * lnQ_s) * iQ;
+  Fx += hm * g2 * p.ky;
+  Fy -= hm * g2 * p.kx;
+  const double dg2[3] = {2 * vx * dg2_dq, 2 * vy * dg2_dq, R * dg2_du};
+  for (int j = 0; j < 3; ++j) {
+    J(0, j) += hm * dg2[j] * p.ky;
+    J(1, j) -= hm * dg2[j] * p.kx;
+  }
+  const double kv = p.kx * vx + p.ky * vy, H = Gq * kv;
+  Fx += hm * H * vy;
+  Fy -= hm * H * vx;
+  const double dH_dvx = 2 * vx * dGq_dq * kv + Gq * p.kx;
+  const double dH_dvy = 2 * vy * dGq_dq * kv + Gq * p.ky;
+  const double dH_dw = R * dGq_du * kv;
+  J(0, 0) += hm * dH_dvx * vy;
+  J(0, 1) += hm * (dH_dvy * vy + H);
+  J(0, 2) += hm * dH_dw * vy;
+  J(1, 0) -= hm * (dH_dvx * vx + H);
+  J(1, 1) -= hm * dH_dvy * vx;
+  J(1, 2) -= hm * dH_dw * vx;
+}
+
+// The cross-shift torque Mk W q / Sk^3, W = vx ky - kappa vy kx, Sk = (q + a_k U + eps^2)^(1/2)
+// (theory.md section 4), and its Jacobian.
+void add_cross_shift_torque(const FractionalLaw<double>& p, const ScaledKinematics& k, double& Mz,
+                            Eigen::Matrix3d& J) {
+  const double vx = k.vx, vy = k.vy, u = k.u, q = k.q, R = k.R;
+  const double W = vx * p.ky - p.kappa * vy * p.kx;
+  const double iSk = 1.0 / std::sqrt(q + p.a_k * k.U + k.e2), iSk2 = iSk * iSk;
+  const double iSk3 = iSk2 * iSk, iSk5 = iSk3 * iSk2;
+  Mz += p.Mk * W * q * iSk3;
+  J(2, 0) += p.Mk * ((p.ky * q + W * 2 * vx) * iSk3 - 3 * W * q * vx * iSk5);
+  J(2, 1) += p.Mk * ((-p.kappa * p.kx * q + W * 2 * vy) * iSk3 - 3 * W * q * vy * iSk5);
+  J(2, 2) += -3 * p.Mk * W * q * p.a_k * u * R * iSk5;
+}
+
+}  // namespace
+
+// The fractional law and its Jacobian (theory.md section 4): sliding force -F0 (vx, kappa vy) /
+// Sa, spin torque -M0 (1 + kappa)/2 u / Sm, and with a shift the shift forces and the
+// cross-shift torque; on scaled velocities, one reciprocal per square root.
 FractionalWithJacobian fractional_resultants_with_jacobian(const FractionalLaw<double>& p,
                                                            const Kinematics<double>& k0) {
   detail::check_law(p);
@@ -46,56 +120,9 @@ FractionalWithJacobian fractional_resultants_with_jacobian(const FractionalLaw<d
   J(2, 1) = Mks * u * p.m * vy * iSm3;
   J(2, 2) = -Mks * R * (p.m * q + e2) * iSm3;
   if (p.kx != 0.0 || p.ky != 0.0) {
-    // Shift forces -(M0/2R) [g2 (z x k) + Gq (k.v)(z x v)], Gq = (g1 - g2)/q in the
-    // cancellation-free form of the header: Gq = u L, L = P / Q, Q = S1 S2^3 Wq,
-    // Wq = S2^3 + s0 S1, s0 = U + eps^2; derivatives in q and s0 (ds0/du = 2u).
-    const double hm = p.M0 / (2.0 * R);
-    const double s0 = U + e2, c = p.c;
-    const double S1 = std::sqrt(s0 + 0.25 * p.m * q), iS12 = 1.0 / (S1 * S1);
-    const double S2sq = s0 + c * q, S2 = std::sqrt(S2sq), iS22 = 1.0 / S2sq;
-    const double S23 = S2sq * S2, iS23 = 1.0 / S23, iS25 = iS23 * iS22;
-    const double g2 = u * s0 * iS23;
-    const double dg2_dq = -1.5 * c * u * s0 * iS25;
-    const double dg2_du = (s0 * e2 + c * q * (s0 + 2.0 * U)) * iS25;
-    const double P = s0 * s0 * (3.0 * c - 0.25 * p.m) + 3.0 * s0 * c * c * q + c * c * c * q * q;
-    const double Wq = S23 + s0 * S1, iQ = 1.0 / (S1 * S23 * Wq);
-    const double L = P * iQ;
-    const double P_q = 3.0 * s0 * c * c + 2.0 * c * c * c * q;
-    const double P_s = 2.0 * s0 * (3.0 * c - 0.25 * p.m) + 3.0 * c * c * q;
-    const double W_q = 1.5 * c * S2 + 0.125 * p.m * s0 / S1;
-    const double W_s = 1.5 * S2 + S1 + 0.5 * s0 / S1;
-    const double lnQ_q = 0.125 * p.m * iS12 + 1.5 * c * iS22 + W_q / Wq;
-    const double lnQ_s = 0.5 * iS12 + 1.5 * iS22 + W_s / Wq;
-    const double Gq = u * L;
-    const double dGq_dq = u * (P_q - P * lnQ_q) * iQ;
-    const double dGq_du = L + 2.0 * U * (P_s - P * lnQ_s) * iQ;
-    Fx += hm * g2 * p.ky;
-    Fy -= hm * g2 * p.kx;
-    const double dg2[3] = {2 * vx * dg2_dq, 2 * vy * dg2_dq, R * dg2_du};
-    for (int j = 0; j < 3; ++j) {
-      J(0, j) += hm * dg2[j] * p.ky;
-      J(1, j) -= hm * dg2[j] * p.kx;
-    }
-    const double kv = p.kx * vx + p.ky * vy, H = Gq * kv;
-    Fx += hm * H * vy;
-    Fy -= hm * H * vx;
-    const double dH_dvx = 2 * vx * dGq_dq * kv + Gq * p.kx;
-    const double dH_dvy = 2 * vy * dGq_dq * kv + Gq * p.ky;
-    const double dH_dw = R * dGq_du * kv;
-    J(0, 0) += hm * dH_dvx * vy;
-    J(0, 1) += hm * (dH_dvy * vy + H);
-    J(0, 2) += hm * dH_dw * vy;
-    J(1, 0) -= hm * (dH_dvx * vx + H);
-    J(1, 1) -= hm * dH_dvy * vx;
-    J(1, 2) -= hm * dH_dw * vx;
-    // Cross-shift torque Mk W q / Sk^3, W = vx ky - kappa vy kx.
-    const double W = vx * p.ky - p.kappa * vy * p.kx;
-    const double iSk = 1.0 / std::sqrt(q + p.a_k * U + e2), iSk2 = iSk * iSk;
-    const double iSk3 = iSk2 * iSk, iSk5 = iSk3 * iSk2;
-    Mz += p.Mk * W * q * iSk3;
-    J(2, 0) += p.Mk * ((p.ky * q + W * 2 * vx) * iSk3 - 3 * W * q * vx * iSk5);
-    J(2, 1) += p.Mk * ((-p.kappa * p.kx * q + W * 2 * vy) * iSk3 - 3 * W * q * vy * iSk5);
-    J(2, 2) += -3 * p.Mk * W * q * p.a_k * u * R * iSk5;
+    const ScaledKinematics k{vx, vy, u, e2, U, q, R};
+    add_shift_forces(p, k, Fx, Fy, J);
+    add_cross_shift_torque(p, k, Mz, J);
   }
   out.resultants = {Fx, Fy, Mz};
   J *= isc;

@@ -184,6 +184,83 @@ Gauge scaled_gauge(const S& surf, const Vec3& W) {
   return out;
 }
 
+// A point of the scaled projection's Newton iteration: t, Dhat(t), grad Dhat(t), phi(t) and
+// grad phi(t) (scaled_project).
+struct ScaledPoint {
+  Vec3 t;
+  double d;
+  Vec3 g;
+  double phi;
+  Vec3 grad;
+};
+
+// The scaled projection's objective (header comment): phi(t) = 1/2 t^T Q t - W_t.t + Dhat(t),
+// grad phi(t) = Q t - W_t + grad Dhat(t), Q = Ghat^-1.
+template <class S>
+struct ScaledObjective {
+  const S& surf;
+  const Mat3& Q;
+  const Vec3& Wt;
+
+  ScaledPoint at(const Vec3& t) const {
+    ScaledPoint p;
+    p.t = t;
+    surf.eval(t, p.d, p.g);
+    p.phi = 0.5 * t.dot(Q * t) - Wt.dot(t) + p.d;
+    p.grad = Q * t - Wt + p.g;
+    return p;
+  }
+
+  // Backtracking along dt: the first alpha = 2^-i (i < 50) with phi < 0 and Armijo's decrease
+  // or the gradient halved moves x there; false if none does. phi < 0 along the accepted
+  // iterates keeps t away from 0 (phi(0) = 0).
+  bool line_search(ScaledPoint& x, const Vec3& dt) const {
+    double alpha = 1.0;
+    for (int ls = 0; ls < 50; ++ls) {
+      const ScaledPoint n = at(x.t + alpha * dt);
+      if (n.phi < 0.0 && (n.phi <= x.phi + 1e-4 * alpha * x.grad.dot(dt) ||
+                          n.grad.norm() <= 0.5 * x.grad.norm())) {
+        x = n;
+        return true;
+      }
+      alpha *= 0.5;
+    }
+    return false;
+  }
+};
+
+// Newton on phi from x until |grad phi| <= tol plus the round-off floor of Q t: for a large
+// metric t is large (|t| ~ |Ghat| |W_t - W*|), and its last bit times |Q| bounds how small grad
+// phi can be computed (W* = grad Dhat(t) depends only on t's direction and is then accurate to
+// that relative round-off). The cheap Hessian first, the central-difference one once it
+// stalls or converges slowly (linearly: its error dominates for an ill-conditioned metric).
+template <class S>
+void scaled_newton(const ScaledObjective<S>& obj, double Qnorm, double tol, int max_iterations,
+                   ScaledPoint& x, Projection& out) {
+  auto round_off = [&] {
+    return 2.0 * std::numeric_limits<double>::epsilon() * Qnorm * x.t.norm();
+  };
+  out.converged = false;
+  bool accurate = false;
+  for (int it = 0; it < max_iterations; ++it) {
+    ++out.iterations;
+    if (x.grad.norm() <= tol + round_off()) {
+      out.converged = true;
+      break;
+    }
+    const double before = x.grad.norm();
+    const Mat3 H = obj.Q + (accurate ? obj.surf.hess(x.t) : obj.surf.hess_newton(x.t, x.g));
+    const Vec3 dt = newton_direction<3>(H, x.grad);
+    if (!obj.line_search(x, dt)) {
+      if (accurate) break;
+      accurate = true;
+      continue;
+    }
+    if (x.grad.norm() > 0.25 * before) accurate = true;
+  }
+  if (!out.converged && x.grad.norm() <= tol + round_off()) out.converged = true;
+}
+
 // The scaled projection (header comment): Newton on phi(t) = 1/2 t^T Q t - W_t.t + Dhat(t),
 // Q = Ghat^-1, from the gauge's normal ray where phi < 0.
 template <class S>
@@ -217,63 +294,12 @@ Projection scaled_project(const S& surf, const Vec3& Wt, const Mat3& Ghat,
   surf.eval(u, d, g);
   // Best point on the ray t = r u: r = (W_t.u - Dhat(u)) / u^T Q u > 0 (the gauge > 1).
   const double c = Wt.dot(u) - d, q = u.dot(Q * u);
-  Vec3 t = std::max(c, 0.0) / q * u;
-  surf.eval(t, d, g);
-  auto phi_of = [&](const Vec3& x, double dx) { return 0.5 * x.dot(Q * x) - Wt.dot(x) + dx; };
-  double phi = phi_of(t, d);
-  Vec3 grad = Q * t - Wt + g;
-  out.converged = false;
+  const ScaledObjective<S> obj{surf, Q, Wt};
+  ScaledPoint x = obj.at(std::max(c, 0.0) / q * u);
   // Tolerance relative to f N + |W_t| (round-off of Q t - W_t for a large trial).
-  const double tol = opt.tolerance * (1.0 + nWt);
-  bool accurate = false;  // the central-difference Hessian, once the cheap one stalls
-  for (int it = 0; it < opt.max_iterations; ++it) {
-    ++out.iterations;
-    // ... plus the round-off floor of Q t: for a large metric t is large (|t| ~ |Ghat| |W_t -
-    // W*|), and its last bit times |Q| bounds how small grad phi can be computed. W* = grad
-    // Dhat(t) depends only on t's direction and is then accurate to that relative round-off.
-    const double floor = 2.0 * std::numeric_limits<double>::epsilon() * Qnorm * t.norm();
-    if (grad.norm() <= tol + floor) {
-      out.converged = true;
-      break;
-    }
-    const double before = grad.norm();
-    const Mat3 H = Q + (accurate ? surf.hess(t) : surf.hess_newton(t, g));
-    const Vec3 dt = newton_direction<3>(H, grad);
-    double alpha = 1.0;
-    bool moved = false;
-    for (int ls = 0; ls < 50; ++ls) {
-      const Vec3 tn = t + alpha * dt;
-      Vec3 gn;
-      double dn;
-      surf.eval(tn, dn, gn);
-      const double phin = phi_of(tn, dn);
-      const Vec3 gradn = Q * tn - Wt + gn;
-      // phi < 0 along the accepted iterates keeps t away from 0 (phi(0) = 0).
-      if (phin < 0.0 &&
-          (phin <= phi + 1e-4 * alpha * grad.dot(dt) || gradn.norm() <= 0.5 * grad.norm())) {
-        t = tn;
-        d = dn;
-        g = gn;
-        phi = phin;
-        grad = gradn;
-        moved = true;
-        break;
-      }
-      alpha *= 0.5;
-    }
-    if (!moved) {
-      if (accurate) break;
-      accurate = true;
-      continue;
-    }
-    // Slow (linear) convergence: the cheap Hessian's error dominates (an ill-conditioned metric).
-    if (grad.norm() > 0.25 * before) accurate = true;
-  }
-  if (!out.converged &&
-      grad.norm() <= tol + 2.0 * std::numeric_limits<double>::epsilon() * Qnorm * t.norm())
-    out.converged = true;
-  out.residual = grad.norm() / (1.0 + nWt);
-  out.wrench = g;  // grad Dhat(t*): on the surface, with normal t*
+  scaled_newton(obj, Qnorm, opt.tolerance * (1.0 + nWt), opt.max_iterations, x, out);
+  out.residual = x.grad.norm() / (1.0 + nWt);
+  out.wrench = x.g;  // grad Dhat(t*): on the surface, with normal t*
   return out;
 }
 
