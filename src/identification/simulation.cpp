@@ -5,6 +5,7 @@
 #include <random>
 
 #include "contensou/friction/error.hpp"
+#include "contensou/friction/random.hpp"
 
 namespace contensou {
 
@@ -33,9 +34,9 @@ MeasuredData diagram_kinematics(const DiagramSpec& s) {
 void add_noise(MeasuredData& d, const DiagramSpec& s) {
   require_non_negative("noise level", s.noise_level);
   if (s.noise == SimulatedNoise::none || s.noise_level == 0.0) return;
+  // The same numbers with every standard library (contensou/friction/random.hpp).
   std::mt19937_64 rng(s.seed);
-  std::uniform_real_distribution<double> uniform(-1.0, 1.0);
-  std::normal_distribution<double> normal(0.0, 1.0);
+  StandardNormal normal;
   std::array<double, kChannels> peak{};
   for (const MeasuredPoint& p : d.points)
     for (int c = 0; c < kChannels; ++c)
@@ -46,7 +47,7 @@ void add_noise(MeasuredData& d, const DiagramSpec& s) {
       double& y = *p.force[c];
       switch (s.noise) {
         case SimulatedNoise::relative_uniform:
-          y *= 1.0 + s.noise_level * uniform(rng);
+          y *= 1.0 + s.noise_level * uniform_pm1(rng);
           break;
         case SimulatedNoise::relative_gaussian:
           y *= 1.0 + s.noise_level * normal(rng);
