@@ -131,11 +131,23 @@ struct ExactOptions {
   double tolerance = 1e-10;
 };
 
+// The estimated absolute errors of the exact resultants: one per component, not one number.
+// max() is the largest of the three, for the common question "is it small?"; it compares N
+// with N m as plain numbers (the torque's error scales with R), so to weigh them use the
+// components, or ExactResult::converged (each against its own scale, f N or f N R).
+struct ResultantErrors {
+  double Fx = 0.0;  // [N]
+  double Fy = 0.0;  // [N]
+  double Mz = 0.0;  // [N m]
+
+  double max() const { return std::max({Fx, Fy, Mz}); }
+};
+
 template <class T = double>
 struct ExactResult {
   Resultants<T> resultants;
-  Resultants<double> error;  // estimated absolute error [N, N, N m]
-  int evaluations = 0;       // rays evaluated (outer integrand evaluations)
+  ResultantErrors error;  // estimated absolute error of each component [N, N, N m]
+  int evaluations = 0;    // rays evaluated (outer integrand evaluations)
   // true only if every component of `error` meets the requested tolerance (tol f N, tol f N R;
   // representation error and floor included); false if the estimate exceeds it (the interval
   // budget ran out, or the profile's representation alone is coarser than the tolerance).
@@ -735,7 +747,7 @@ AdaptiveResult<T, 3> integrate_table(F& f, const ExactModel<T>& m, double s_max,
 
 // Whether an error estimate [N, N, N m] meets a tolerance relative to f N (forces) and f N R
 // (torque), scale_F = f N.
-inline bool within_tolerance(const Resultants<double>& e, double tol, double scale_F, double R) {
+inline bool within_tolerance(const ResultantErrors& e, double tol, double scale_F, double R) {
   return e.Fx <= tol * scale_F && e.Fy <= tol * scale_F && e.Mz <= tol * scale_F * R;
 }
 
