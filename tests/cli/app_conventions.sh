@@ -38,7 +38,9 @@ for pair in "contensou-identify:$identify" "contensou-shimmy:$shimmy" \
   expect 0 "$name --help" "$app" --help
   grep -q "Exit status: 0 success, 1 failure" out.txt ||
     { echo "FAIL: $name --help does not document the exit statuses"; failed=1; }
-  expect 2 "$name with an unknown option" "$app" --no-such-option
+  required=()  # CLI11 reports a missing required option before an unknown one
+  [ "$name" = contensou-engine-coefficients ] && required=(--radius 0.05 --friction 0.5)
+  expect 2 "$name with an unknown option" "$app" "${required[@]}" --no-such-option
   grep -q "no-such-option" err.txt ||
     { echo "FAIL: $name: the usage error does not name the option"; failed=1; }
 done
