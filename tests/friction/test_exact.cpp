@@ -484,7 +484,7 @@ TEST(ExactResultants, TableWithSpeedLawErrorEstimateBoundsTheErrorOnEveryPartiti
     const auto reference = exact_resultants(m, k, {1e-8});
     ASSERT_TRUE(reference.converged) << ratio;
     const Resultants<double>& ref = reference.resultants;
-    const Resultants<double>& ref_err = reference.error;
+    const ResultantErrors& ref_err = reference.error;
     for (double tol : {1e-3, 1e-4, 1e-6}) {
       const auto r = exact_resultants(m, k, {tol});
       EXPECT_LE(r.error.Fx, tol * fN) << ratio << " " << tol;
