@@ -59,20 +59,16 @@ ContactPatch named_patch(const std::string& profile, double radius, double frict
                           "must be a positive number [m] within 1e-100 ... 1e100");
   if (!(std::isfinite(friction) && friction > 0))
     throw InvalidArgument("--friction", format_value(friction), "must be a positive number");
-  ContactPatch p;
+  PressureProfile shape;
   if (profile == "uniform")
-    p.profile = uniform_profile();
+    shape = uniform_profile();
   else if (profile == "hertz")
-    p.profile = hertz_profile();
+    shape = hertz_profile();
   else if (profile == "seed-tire")
-    p.profile = seed_tire_profile();
+    shape = seed_tire_profile();
   else
     throw InvalidArgument("--profile", "'" + profile + "'", "use uniform, hertz or seed-tire");
-  p.radius_m = radius;
-  p.friction = friction;
-  p.reference_pressure_pa = 1.0;
-  p.reference_pressure_pa = 1.0 / normal_load(p);  // N = 1 (theory.md section 4)
-  return p;
+  return ContactPatch::from_normal_load(radius, 1.0, shape, friction);  // N = 1 N
 }
 
 double spin_torque_per_load(const ContactPatch& patch) {

@@ -8,6 +8,7 @@
 #include <exception>
 #include <iostream>
 
+#include "cli.hpp"
 #include "coefficients.hpp"
 #include "run_guard.hpp"
 
@@ -51,8 +52,9 @@ int main(int argc, char** argv) {
   app.add_option("--radius", radius, "patch radius R [m]")->required();
   app.add_option("--friction", friction, "friction coefficient f")->required();
   app.add_flag("--json", json, "print JSON instead of the table");
+  contensou::app::add_conventions(app, "contensou-engine-coefficients");
   contensou::app::prepare_output();
-  CLI11_PARSE(app, argc, argv);
+  if (const std::optional<int> status = contensou::app::parse(app, argc, argv)) return *status;
   try {
     using namespace contensou::engines;
     const auto patch = named_patch(profile, radius, friction);
@@ -90,6 +92,6 @@ int main(int argc, char** argv) {
     return contensou::app::finish_output(0);
   } catch (const std::exception& e) {
     std::cerr << "contensou-engine-coefficients: " << e.what() << "\n";
-    return 2;
+    return contensou::app::kExitFailure;
   }
 }

@@ -10,6 +10,7 @@
 #include <optional>
 #include <sstream>
 
+#include "cli.hpp"
 #include "contensou/contensou.hpp"
 #include "contensou/identification/fit.hpp"
 #include "contensou/identification/identify.hpp"
@@ -279,7 +280,7 @@ int main(int argc, char** argv) {
       "Fits the coupled dry-friction law (Kireenkov & Zhavoronok 2020, eqs. 5-7) to measured\n"
       "diagrams Fx, Fy, Mz against the sliding velocity and spin (CSV, theory.md section 6),\n"
       "and reports the parameters with 95 % confidence intervals."};
-  app.set_version_flag("--version", std::string(kName) + " " + kVersion);
+  app::add_conventions(app, kName);
   FitArgs a;
   a.request.style = KeyStyle::command_line;
   FitOptionHandles h;
@@ -289,11 +290,7 @@ int main(int argc, char** argv) {
   CLI::App* simulate = add_simulate_options(app, sim);
 
   app::prepare_output();
-  try {
-    app.parse(argc, argv);
-  } catch (const CLI::ParseError& e) {
-    return app.exit(e);
-  }
+  if (const std::optional<int> status = app::parse(app, argc, argv)) return *status;
   if (h.effective_speed) a.request.speed_inside_integrals = false;
   if (h.no_loop) a.request.loop = false;
   if (h.no_outliers) a.request.outliers = false;

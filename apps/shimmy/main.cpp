@@ -14,6 +14,7 @@
 
 #include "axis_label.hpp"
 #include "boundary_overlay.hpp"
+#include "cli.hpp"
 #include "config.hpp"
 #include "config_keys.hpp"
 #include "contensou/friction/error.hpp"
@@ -729,8 +730,9 @@ int main(int argc, char** argv) {
       kName};
   Options options;
   add_options(app, options);
+  app::add_conventions(app, kName);
   app::prepare_output();
-  CLI11_PARSE(app, argc, argv);
+  if (const std::optional<int> status = app::parse(app, argc, argv)) return *status;
   try {
     return app::finish_output(run(options));
   } catch (const std::exception& e) {

@@ -12,6 +12,8 @@
 //                                                   is the longitudinal direction)
 //     <config key="radius" value="0.05"/>           patch radius R [m], or instead:
 //     <config key="stiffness" value="1e7"/>         k [N/m^3]: R = (N / k)^(1/3) (Hertz-like)
+//     (no load or pressure key: the normal load N is MuJoCo's, the contact force its
+//     constraint solver computes for the pair, below; p* follows from N, R and the profile)
 //     <config key="law" value="fractional"/>        fractional (default) | exact | set-valued
 //     <config key="surface" value="exact"/>         set-valued only: exact (default) | ellipsoid
 //     <config key="regularization" value="1e-4"/>   fractional only: eps [m/s] of the law
@@ -319,17 +321,13 @@ struct Instance {
   }
 };
 
+// The unit patch, R = 1 m and N = 1 N: the law is scaled per step by the pair's R and by the
+// normal force MuJoCo's solver gives (no load or pressure in the configuration).
 ContactPatch unit_patch(const Config& c) {
-  ContactPatch p;
-  p.radius_m = 1.0;
-  p.friction = c.friction;
-  p.kappa = c.kappa;
-  p.profile = c.profile == "hertz"       ? hertz_profile()
-              : c.profile == "seed-tire" ? seed_tire_patch().profile
-                                         : uniform_profile();
-  p.reference_pressure_pa = 1.0;
-  p.reference_pressure_pa = 1.0 / normal_load(p);  // N = 1
-  return p;
+  const PressureProfile profile = c.profile == "hertz"       ? hertz_profile()
+                                  : c.profile == "seed-tire" ? seed_tire_profile()
+                                                             : uniform_profile();
+  return ContactPatch::from_normal_load(1.0, 1.0, profile, c.friction, c.kappa);
 }
 
 Instance* instance_of(const mjData* d, int instance) {

@@ -9,10 +9,12 @@ landing-gear shimmy model with stability maps in-process or on a ``dask.distribu
 friction (``LimitSurface``).
 The loops run in C++ (the extension ``contensou._core``) with the GIL released.
 
-Bad input raises ``ValueError`` with the C++ library's message.
+The friction functions take three arrays vx, vy, omega or one DataFrame (or mapping) with the
+columns vx_mps, vy_mps, omega_radps, whose result is labelled Fx_N, Fy_N, Mz_Nm
+(``FrictionTable.to_frame()``). Bad input raises ``ValueError`` with the C++ library's message.
 """
 
-from . import _core
+from . import _core, _signatures
 from ._core import (
     ContactPatch,
     ContactStep,
@@ -37,6 +39,7 @@ from ._core import (
 from .friction import (
     ExactLaw,
     ExactResults,
+    FrictionTable,
     exact_law_resultants,
     exact_resultants,
     fractional_resultants,
@@ -55,6 +58,8 @@ from .identification import IdentificationResult, LoopStep, Parameter, identify
 
 __version__: str = _core.version  # the CMake project's version
 
+_signatures.attach(_core)  # inspect.signature(ContactPatch) and the other classes
+
 __all__ = [
     "ContactPatch",
     "ContactStep",
@@ -63,6 +68,7 @@ __all__ = [
     "ExactModel",
     "ExactResults",
     "FractionalLaw",
+    "FrictionTable",
     "IdentificationResult",
     "LandingConfig",
     "LandingResult",

@@ -64,13 +64,9 @@ def _positive(option: str, value: float) -> float:
 
 def exact_curves(profile: str, radius: float, friction: float, psi: np.ndarray):
     """F_par / F0 and |Mz| / M0 of the exact integrals at psi (unit load), and M0 / N."""
-    patch = ContactPatch()
-    patch.radius_m = radius
-    patch.friction = friction
-    patch.profile = _profile(profile)
-    patch.reference_pressure_pa = 1.0
-    n = 2 * math.pi * radius**2 * patch.profile.moment(1)  # N for p* = 1 (theory.md section 4)
-    patch.reference_pressure_pa = 1.0 / n
+    # The unit load: p* = 1 / (2 pi R^2 A^1) (theory.md section 4).
+    patch = ContactPatch(radius_m=radius, normal_load=1.0, friction=friction,
+                         profile=_profile(profile))
     m0 = friction * radius * patch.profile.moment(2) / patch.profile.moment(1)
     omega = 1.0 / radius
     # The exact law (contensou/friction/exact_law.hpp): the exact resultants from tables built

@@ -14,6 +14,7 @@ import copy
 import json
 import os
 import re
+import sys
 from dataclasses import dataclass
 from typing import Any, Iterator, Mapping, NamedTuple, Optional, Sequence, Union
 
@@ -309,7 +310,11 @@ def _cell_task(k: int, config: str, model: str, x: tuple, y: tuple) -> tuple:
     return tuple(_core._map_cell(config, model, x, y, k % x[3], k // x[3]))
 
 
-def _progress(total: int, enabled: bool, label: str) -> Any:
+def _progress(total: int, enabled: Optional[bool], label: str) -> Any:
+    """A tqdm bar when asked for (True), or by default (None) only when standard error is a
+    terminal: no bar in logs, CI output or a notebook's captured stream."""
+    if enabled is None:
+        enabled = sys.stderr is not None and sys.stderr.isatty()
     if enabled:
         try:
             from tqdm.auto import tqdm  # type: ignore[import-untyped]
@@ -334,13 +339,14 @@ def stability_map(
     client: Any = None,
     *,
     model: str = "coupled",
-    progress: bool = True,
+    progress: Optional[bool] = None,
 ) -> StabilityMapResult:
     """A stability map over two gear parameters: one landing per cell.
 
     ``axes`` = (x, y), each (parameter, from, to, points), a ``MapAxis`` or a dict as in the
     app's configuration. Cells run in this process one after another by default, or as tasks
-    on ``client`` (a ``dask.distributed.Client``). A tqdm progress bar counts cells."""
+    on ``client`` (a ``dask.distributed.Client``). A tqdm progress bar counts cells when
+    ``progress`` is True, or by default when standard error is a terminal."""
     cfg = _config(config)
     x, y = (_axis(a) for a in axes)
     model = _model(model)

@@ -152,9 +152,39 @@ double cpp_loop_fractional(const FractionalLaw<double>& law, InArray vx, InArray
   return std::chrono::duration<double>(t1 - t0).count();
 }
 
-}  // namespace
+// ContactPatch(radius_m, reference_pressure_pa, friction, kappa, profile, slip_speed_friction,
+// *, normal_load): every argument checked here, so that a bad patch fails where it is made.
+void init_patch(ContactPatch* self, std::optional<double> radius_m, std::optional<double> pressure,
+                std::optional<double> friction, double kappa,
+                std::optional<PressureProfile> profile,
+                std::optional<SlipSpeedFriction<double>> slip, std::optional<double> normal_load) {
+  const char* const how =
+      "ContactPatch(radius_m=..., normal_load=... or reference_pressure_pa=..., friction=...); "
+      "ContactPatch.seed_tire() is the seed's tire";
+  if (!radius_m) throw InvalidArgument("radius_m", "missing", std::string("needed: ") + how);
+  require_positive("radius_m", *radius_m);
+  if (!friction) throw InvalidArgument("friction", "missing", std::string("needed: ") + how);
+  if (normal_load.has_value() == pressure.has_value())
+    throw InvalidArgument("normal_load, reference_pressure_pa",
+                          normal_load ? "both given" : "neither given",
+                          "give one: the load N [N] or the reference pressure p* [Pa]");
+  const PressureProfile shape = profile ? *profile : uniform_profile();
+  ContactPatch p;
+  if (normal_load) {
+    p = ContactPatch::from_normal_load(*radius_m, *normal_load, shape, *friction, kappa);
+  } else {
+    p.radius_m = *radius_m;
+    p.reference_pressure_pa = *pressure;
+    p.friction = *friction;
+    p.kappa = kappa;
+    p.profile = shape;
+  }
+  p.slip_speed_friction = slip;
+  validate(p);
+  new (self) ContactPatch(std::move(p));
+}
 
-void bind_friction(nb::module_& m) {
+void bind_profiles(nb::module_& m) {
   nb::class_<PressureProfile>(m, "PressureProfile",
                               "A pressure profile p(rho): radial shape, shift kx, ky and what to "
                               "do with a negative part (contensou/friction/pressure_profile.hpp).")
@@ -212,7 +242,9 @@ void bind_friction(nb::module_& m) {
       },
       "rho"_a, "p"_a, "terms"_a,
       "least-squares Chebyshev series in rho^2: (profile, (rms residual, max residual))");
+}
 
+void bind_patch(nb::module_& m) {
   nb::class_<SlipSpeedFriction<double>>(
       m, "SlipSpeedFriction", "f(w) = f_k + (f_s - f_k) exp(-(w / w_s)^delta), w the slip speed")
       .def(
@@ -228,23 +260,20 @@ void bind_friction(nb::module_& m) {
       .def_rw("exponent", &SlipSpeedFriction<double>::exponent);
 
   nb::class_<ContactPatch>(m, "ContactPatch",
-                           "Geometry, pressure and friction of the exact model (SI units)")
-      .def(
-          "__init__",
-          [](ContactPatch* p, double radius_m, double reference_pressure_pa, double friction,
-             double kappa, std::optional<PressureProfile> profile,
-             std::optional<SlipSpeedFriction<double>> slip) {
-            new (p) ContactPatch{};
-            p->radius_m = radius_m;
-            p->reference_pressure_pa = reference_pressure_pa;
-            p->friction = friction;
-            p->kappa = kappa;
-            if (profile) p->profile = *profile;
-            p->slip_speed_friction = slip;
-          },
-          "radius_m"_a = 0.087, "reference_pressure_pa"_a = 2.1e5, "friction"_a = 0.3,
-          "kappa"_a = 1.0, "profile"_a.none() = nb::none(),
-          "slip_speed_friction"_a.none() = nb::none())
+                           "Geometry, load, pressure and friction of the exact model (SI units). "
+                           "Give radius_m, friction and either normal_load [N] (p* = N / (2 pi "
+                           "R^2 A^1) is derived) or reference_pressure_pa; checked at once. "
+                           "ContactPatch.seed_tire() is the seed's tire.")
+      .def("__init__", &init_patch, "radius_m"_a.none() = nb::none(),
+           "reference_pressure_pa"_a.none() = nb::none(), "friction"_a.none() = nb::none(),
+           "kappa"_a = 1.0, "profile"_a.none() = nb::none(),
+           "slip_speed_friction"_a.none() = nb::none(), nb::kw_only(),
+           "normal_load"_a.none() = nb::none())
+      .def_static("from_normal_load", &ContactPatch::from_normal_load, "radius_m"_a,
+                  "normal_load"_a, "profile"_a, "friction"_a, "kappa"_a = 1.0,
+                  "the patch carrying the load N [N]: p* = N / (2 pi R^2 A^1)")
+      .def_static("seed_tire", &ContactPatch::seed_tire,
+                  "the seed's tire: R = 0.087 m, p* = 210 kPa (N = 4535 N), f = 0.3")
       .def_rw("radius_m", &ContactPatch::radius_m)
       .def_rw("reference_pressure_pa", &ContactPatch::reference_pressure_pa)
       .def_rw("friction", &ContactPatch::friction)
@@ -252,7 +281,7 @@ void bind_friction(nb::module_& m) {
       .def_rw("profile", &ContactPatch::profile)
       .def_rw("slip_speed_friction", &ContactPatch::slip_speed_friction, nb::arg().none())
       .def_prop_ro(
-          "normal_load", [](const ContactPatch& p) { return normal_load(p); },
+          "normal_load", [](const ContactPatch& p) { return p.normal_load(); },
           "N = 2 pi R^2 p* A^1 [N]")
       .def("validate", [](const ContactPatch& p) { validate(p); })
       .def("__repr__", [](const ContactPatch& p) {
@@ -262,7 +291,9 @@ void bind_friction(nb::module_& m) {
                describe(p.profile) + ">";
       });
   m.def("seed_tire_patch", &seed_tire_patch, "the seed's tire: R = 0.087 m, p* = 210 kPa, f = 0.3");
+}
 
+void bind_laws(nb::module_& m) {
   nb::class_<ExactModel<double>>(m, "ExactModel",
                                  "The integration-ready form of a ContactPatch: build once, "
                                  "evaluate many times")
@@ -311,7 +342,9 @@ void bind_friction(nb::module_& m) {
   m.def("fractional_law_fitted", &fractional_law_fitted, "patch"_a, "psi_min"_a = 1e-2,
         "psi_max"_a = 1e2, "n"_a = 41,
         "a and m (c, a_k) fitted by least squares to the exact integrals over psi");
+}
 
+void bind_loops(nb::module_& m) {
   m.def("_exact_loop", &exact_loop, "model"_a, "vx"_a, "vy"_a, "omega"_a, "force"_a, "error"_a,
         "converged"_a, "tolerance"_a, "threads"_a);
   m.def("_fractional_loop", &fractional_loop, "law"_a, "vx"_a, "vy"_a, "omega"_a, "force"_a,
@@ -320,6 +353,15 @@ void bind_friction(nb::module_& m) {
         "tolerance"_a = 1e-10, "seconds of the plain C++ loop (benchmark baseline)");
   m.def("_cpp_loop_fractional", &cpp_loop_fractional, "law"_a, "vx"_a, "vy"_a, "omega"_a,
         "jacobian"_a = false, "seconds of the plain C++ loop (benchmark baseline)");
+}
+
+}  // namespace
+
+void bind_friction(nb::module_& m) {
+  bind_profiles(m);
+  bind_patch(m);
+  bind_laws(m);
+  bind_loops(m);
 }
 
 }  // namespace contensou::python

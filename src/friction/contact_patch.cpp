@@ -3,44 +3,27 @@
 #include <algorithm>
 #include <cmath>
 #include <numbers>
+#include <utility>
 
 #include "contensou/friction/error.hpp"
 
 namespace contensou {
 
-ContactPatch seed_tire_patch() {
-  ContactPatch p;
-  p.radius_m = 0.087;
-  p.reference_pressure_pa = 2.1e5;
-  p.friction = 0.3;
-  p.profile = seed_tire_profile();
-  return p;
-}
+namespace {
 
-double normal_load(const ContactPatch& patch) {
-  validate(patch);
-  return 2.0 * std::numbers::pi * patch.radius_m * patch.radius_m * patch.reference_pressure_pa *
-         moment(patch.profile, 1);
-}
-
-void validate(const ContactPatch& patch) {
-  require_positive("radius_m", patch.radius_m);
-  require_positive("reference_pressure_pa", patch.reference_pressure_pa);
-  require_non_negative("friction", patch.friction);
-  require_positive("kappa", patch.kappa);
-  require_finite("kx", patch.profile.kx);
-  require_finite("ky", patch.profile.ky);
-  // A shape filled by hand (not by its factory) is checked here: an empty or inconsistent
-  // table would be read out of bounds by the interpolation.
-  if (const auto* t = std::get_if<TabulatedShape>(&patch.profile.shape)) {
+// The profile's shape and shift. A shape filled by hand (not by its factory) is checked here:
+// an empty or inconsistent table would be read out of bounds by the interpolation (and by
+// moment()).
+void check_profile(const PressureProfile& profile) {
+  if (const auto* t = std::get_if<TabulatedShape>(&profile.shape)) {
     const std::size_t n = t->rho.size();
     if (n < 2 || t->p.size() != n || t->slope.size() != n)
-      throw InvalidArgument("profile", describe(patch.profile),
+      throw InvalidArgument("profile", describe(profile),
                             "a tabulated shape needs >= 2 knots with as many p and slope values "
                             "(build it with tabulated_profile)");
     if (n > kMaxProfilePoints)
       throw InvalidArgument(
-          "profile", describe(patch.profile),
+          "profile", describe(profile),
           "a tabulated shape takes at most " + std::to_string(kMaxProfilePoints) + " knots");
     for (std::size_t i = 0; i < n; ++i) {
       require_finite("tabulated rho", t->rho[i]);
@@ -51,24 +34,92 @@ void validate(const ContactPatch& patch) {
                               "must be strictly increasing");
     }
     if (t->rho.front() < 0.0 || t->rho.back() != 1.0)
-      throw InvalidArgument("profile", describe(patch.profile),
+      throw InvalidArgument("profile", describe(profile),
                             "tabulated rho must lie in [0, 1] and end at the rim, 1");
   }
-  if (const auto* c = std::get_if<ChebyshevShape>(&patch.profile.shape)) {
+  if (const auto* c = std::get_if<ChebyshevShape>(&profile.shape)) {
     if (c->c.empty())
-      throw InvalidArgument("profile", describe(patch.profile), "needs at least one coefficient");
+      throw InvalidArgument("profile", describe(profile), "needs at least one coefficient");
     for (double a : c->c) require_finite("Chebyshev series c_k", a);
   }
-  if (const auto* c = std::get_if<CosineSeriesShape>(&patch.profile.shape)) {
+  if (const auto* c = std::get_if<CosineSeriesShape>(&profile.shape)) {
     require_positive("cosine series w", c->w);
     if (c->a.empty())
-      throw InvalidArgument("profile", describe(patch.profile), "needs at least one coefficient");
+      throw InvalidArgument("profile", describe(profile), "needs at least one coefficient");
     for (double a : c->a) require_finite("cosine series a_k", a);
   }
-  const double k = std::hypot(patch.profile.kx, patch.profile.ky);
+  const double k = std::hypot(profile.kx, profile.ky);
   if (!(k < 1.0))
     throw InvalidArgument("|(kx, ky)|", format_value(k),
                           "the pressure shift must be < 1 so that the pressure stays positive");
+}
+
+}  // namespace
+
+ContactPatch seed_tire_patch() {
+  ContactPatch p;
+  p.radius_m = 0.087;
+  p.reference_pressure_pa = 2.1e5;
+  p.friction = 0.3;
+  p.profile = seed_tire_profile();
+  return p;
+}
+
+ContactPatch ContactPatch::seed_tire() {
+  return seed_tire_patch();
+}
+
+ContactPatch ContactPatch::from_normal_load(double radius_m, double normal_load_n,
+                                            PressureProfile profile, double friction,
+                                            double kappa) {
+  require_positive("radius_m", radius_m);
+  require_positive("normal_load", normal_load_n);
+  check_profile(profile);  // before its moment is taken
+  const double A1 = moment(profile, 1);
+  if (!(A1 > 0.0) || !std::isfinite(A1))
+    throw InvalidArgument(
+        "profile", describe(profile),
+        "its moment A^1 = " + format_value(A1) + " must be positive and finite to carry a load");
+  ContactPatch p;
+  p.radius_m = radius_m;
+  p.friction = friction;
+  p.kappa = kappa;
+  p.profile = std::move(profile);
+  // N = 2 pi R^2 p* A^1 (theory.md section 4), solved for p*.
+  p.reference_pressure_pa = normal_load_n / (2.0 * std::numbers::pi * radius_m * radius_m * A1);
+  validate(p);
+  return p;
+}
+
+double ContactPatch::normal_load() const {
+  return contensou::normal_load(*this);
+}
+
+double normal_load(const ContactPatch& patch) {
+  validate(patch);
+  return 2.0 * std::numbers::pi * patch.radius_m * patch.radius_m * patch.reference_pressure_pa *
+         moment(patch.profile, 1);
+}
+
+void validate(const ContactPatch& patch) {
+  // A default-constructed patch: R, p* and f unset (NaN), named before anything else.
+  const std::pair<const char*, double> needed[] = {
+      {"radius_m", patch.radius_m},
+      {"reference_pressure_pa", patch.reference_pressure_pa},
+      {"friction", patch.friction}};
+  for (const auto& [name, value] : needed)
+    if (std::isnan(value))
+      throw InvalidArgument(name, "unset (NaN)",
+                            "a patch needs its radius, its load and its friction: make it with "
+                            "ContactPatch::from_normal_load(R, N, profile, f), set R, p* and f, "
+                            "or take ContactPatch::seed_tire()");
+  require_positive("radius_m", patch.radius_m);
+  require_positive("reference_pressure_pa", patch.reference_pressure_pa);
+  require_non_negative("friction", patch.friction);
+  require_positive("kappa", patch.kappa);
+  require_finite("kx", patch.profile.kx);
+  require_finite("ky", patch.profile.ky);
+  check_profile(patch.profile);
   if (patch.slip_speed_friction) {
     const auto& s = *patch.slip_speed_friction;
     require_non_negative("slip_speed_friction.static_coefficient", s.static_coefficient);

@@ -7,6 +7,7 @@
 #include <random>
 
 #include "contensou/friction/error.hpp"
+#include "contensou/friction/random.hpp"
 #include "parallel_cells.hpp"
 
 namespace contensou {
@@ -42,7 +43,7 @@ TireLawDraws draw_tire_laws(const TireLawDistribution& d, int n, unsigned seed) 
   const Eigen::Matrix<double, 5, 5> S =
       es.eigenvectors() * es.eigenvalues().cwiseMax(0.0).cwiseSqrt().asDiagonal();
   std::mt19937_64 rng(seed);
-  std::normal_distribution<double> normal;
+  StandardNormal normal;  // the same draws with every standard library (friction/random.hpp)
   TireLawDraws out;
   out.draws.reserve(static_cast<std::size_t>(n));
   while (static_cast<int>(out.draws.size()) < n) {

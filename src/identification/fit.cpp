@@ -218,10 +218,10 @@ ModelSpec base_spec_for(const MeasuredData& data, const IdentificationOptions& o
   ModelSpec s = base_model_spec(o.radius_m, o.normal_load_n);
   s.regularization_speed = o.regularization_speed;
   if (o.profile) {
-    ContactPatch patch;
-    patch.radius_m = o.radius_m;
-    patch.profile = *o.profile;
-    patch.profile.kx = patch.profile.ky = 0.0;
+    // Only the profile's shape matters here: a unit load and unit friction.
+    PressureProfile shape = *o.profile;
+    shape.kx = shape.ky = 0.0;
+    const ContactPatch patch = ContactPatch::from_normal_load(o.radius_m, 1.0, shape, 1.0);
     const FractionalLaw<double> law = fractional_law_from_patch(patch);
     s.c = law.c;
     s.a_k = law.a_k;
@@ -231,7 +231,6 @@ ModelSpec base_spec_for(const MeasuredData& data, const IdentificationOptions& o
     s.profile_a = law.a;
     s.profile_m = law.m;
     s.profile_m0_ratio = law.M0 / (law.F0 * o.radius_m);
-    patch.friction = 1.0;
     // 1e-6 of the profile is far below any measurement noise and keeps a tabulated profile's
     // series short (its PCHIP is only C1).
     s.profile_model = make_exact_model(patch, 1e-6);

@@ -112,6 +112,7 @@ std::optional<double> load_from_profile(const IdentifyRequest& r, ProfileChoice&
   ContactPatch patch;
   patch.radius_m = r.radius_m;
   patch.reference_pressure_pa = *ps;
+  patch.friction = 1.0;  // not known here, and no part of N
   patch.profile = profile.profile;
   return normal_load(patch);
 }

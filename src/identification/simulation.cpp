@@ -5,6 +5,7 @@
 #include <random>
 
 #include "contensou/friction/error.hpp"
+#include "contensou/friction/random.hpp"
 
 namespace contensou {
 
@@ -35,9 +36,9 @@ void add_noise(MeasuredData& d, const DiagramSpec& s) {
   require_non_negative("noise growth", s.noise_growth);
   const bool growth = s.noise == SimulatedNoise::load_cell && s.noise_growth > 0.0;
   if (s.noise == SimulatedNoise::none || (s.noise_level == 0.0 && !growth)) return;
+  // The same numbers with every standard library (contensou/friction/random.hpp).
   std::mt19937_64 rng(s.seed);
-  std::uniform_real_distribution<double> uniform(-1.0, 1.0);
-  std::normal_distribution<double> normal(0.0, 1.0);
+  StandardNormal normal;
   std::array<double, kChannels> peak{};
   for (const MeasuredPoint& p : d.points)
     for (int c = 0; c < kChannels; ++c)
@@ -48,7 +49,7 @@ void add_noise(MeasuredData& d, const DiagramSpec& s) {
       double& y = *p.force[c];
       switch (s.noise) {
         case SimulatedNoise::relative_uniform:
-          y *= 1.0 + s.noise_level * uniform(rng);
+          y *= 1.0 + s.noise_level * uniform_pm1(rng);
           break;
         case SimulatedNoise::relative_gaussian:
           y *= 1.0 + s.noise_level * normal(rng);

@@ -484,7 +484,7 @@ TEST(ExactResultants, TableWithSpeedLawErrorEstimateBoundsTheErrorOnEveryPartiti
     const auto reference = exact_resultants(m, k, {1e-8});
     ASSERT_TRUE(reference.converged) << ratio;
     const Resultants<double>& ref = reference.resultants;
-    const Resultants<double>& ref_err = reference.error;
+    const ResultantErrors& ref_err = reference.error;
     for (double tol : {1e-3, 1e-4, 1e-6}) {
       const auto r = exact_resultants(m, k, {tol});
       EXPECT_LE(r.error.Fx, tol * fN) << ratio << " " << tol;
@@ -880,4 +880,15 @@ TEST(ExactResultants, BadInputNamesParameterAndValue) {
             }).find("tolerance"),
             std::string::npos);
   EXPECT_EQ(exact_resultants(m, {0.0, 0.0, 0.0}).resultants.Fx, 0.0);
+}
+
+// ExactResult::error is one estimate per component; max() the largest of the three.
+TEST(ExactResult, ErrorIsPerComponentWithAMax) {
+  const ContactPatch p = ContactPatch::from_normal_load(0.1, 1000.0, uniform_profile(), 0.5);
+  const ExactModel<double> model = make_exact_model(p);
+  const ExactResult<double> r = exact_resultants(model, {0.3, 0.1, 5.0}, {1e-10});
+  EXPECT_TRUE(r.converged);
+  EXPECT_EQ(r.error.max(), std::max({r.error.Fx, r.error.Fy, r.error.Mz}));
+  // Converged: forces within 1e-10 f N, the torque within 1e-10 f N R (R = 0.1 m).
+  EXPECT_LE(r.error.max(), 1e-10 * 0.5 * 1000.0);
 }

@@ -22,8 +22,7 @@ TEST(ModelError, SeedTireFiguresOfTheory) {
 }
 
 TEST(ModelError, LateralChannelWithShiftAndBadRange) {
-  ContactPatch p;
-  p.profile = uniform_profile();
+  ContactPatch p = ContactPatch::from_normal_load(0.087, 5000.0, uniform_profile(), 0.3);
   p.profile.kx = 0.1;
   const ModelErrorReport r = model_error_report(p, 1e-2, 1e2, 11);
   EXPECT_EQ(r.laws[0].channels.size(), 3u);

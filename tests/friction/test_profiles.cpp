@@ -4,6 +4,7 @@
 #include <cstdio>
 #include <fstream>
 #include <numbers>
+#include <string>
 #include <variant>
 
 #include "contensou/friction/error.hpp"
@@ -233,4 +234,50 @@ TEST(Profiles, ChebyshevShapeMomentsAndExactModel) {
   EXPECT_EQ(m.chebyshev.size(), 3u);
   EXPECT_EQ(m.representation_error, 0.0);
   EXPECT_NE(describe(p).find("Chebyshev series in rho^2 (3 terms)"), std::string::npos);
+}
+
+// The patch made from its normal load: p* = N / (2 pi R^2 A^1) (theory.md section 4), with
+// A^1 = 1/2 (uniform) and 1/3 (Hertz: integral of rho sqrt(1 - rho^2)) in closed form, and
+// the seed tire's A^1 = 0.454090 (theory.md section 5).
+TEST(Patch, FromNormalLoadDerivesTheReferencePressure) {
+  const double R = 0.05, N = 800.0, pi = std::numbers::pi;
+  const ContactPatch u = ContactPatch::from_normal_load(R, N, uniform_profile(), 0.4);
+  EXPECT_NEAR(u.reference_pressure_pa, N / (pi * R * R), 1e-12 * N / (R * R));
+  EXPECT_NEAR(u.normal_load(), N, 1e-12 * N);
+  const ContactPatch h = ContactPatch::from_normal_load(R, N, hertz_profile(), 0.4, 0.8);
+  EXPECT_NEAR(h.reference_pressure_pa, 3.0 * N / (2.0 * pi * R * R), 1e-12 * N / (R * R));
+  EXPECT_EQ(h.kappa, 0.8);
+  PressureProfile shifted = seed_tire_profile();
+  shifted.kx = 0.14;  // a shift moves the pressure, not the load
+  const ContactPatch s = ContactPatch::from_normal_load(0.087, 4480.0, shifted, 0.3);
+  EXPECT_NEAR(s.reference_pressure_pa, 4480.0 / (2.0 * pi * 0.087 * 0.087 * 0.454090), 1.0);
+  EXPECT_NEAR(normal_load(s), 4480.0, 1e-9);
+  EXPECT_THROW(ContactPatch::from_normal_load(R, -1.0, uniform_profile(), 0.4), InvalidArgument);
+  EXPECT_THROW(ContactPatch::from_normal_load(0.0, N, uniform_profile(), 0.4), InvalidArgument);
+  EXPECT_THROW(ContactPatch::from_normal_load(R, N, uniform_profile(), -0.4), InvalidArgument);
+  EXPECT_THROW(ContactPatch::from_normal_load(R, N, cosine_series_profile(1.0, {-1.0}), 0.4),
+               InvalidArgument);  // A^1 < 0 carries no load
+}
+
+TEST(Patch, DefaultConstructedIsInvalidUntilSet) {
+  ContactPatch p;
+  try {
+    validate(p);
+    ADD_FAILURE() << "a default patch was accepted";
+  } catch (const InvalidArgument& e) {
+    EXPECT_EQ(e.parameter(), "radius_m");
+    EXPECT_NE(std::string(e.what()).find("ContactPatch::from_normal_load"), std::string::npos);
+  }
+  EXPECT_THROW(normal_load(p), InvalidArgument);
+  EXPECT_THROW(make_exact_model(p), InvalidArgument);
+  p.radius_m = 0.1;
+  p.reference_pressure_pa = 1e5;
+  EXPECT_THROW(validate(p), InvalidArgument);  // f not set yet
+  p.friction = 0.5;
+  EXPECT_NO_THROW(validate(p));
+  const ContactPatch seed = ContactPatch::seed_tire();  // the seed tire, one call away
+  EXPECT_EQ(seed.radius_m, 0.087);
+  EXPECT_EQ(seed.reference_pressure_pa, 2.1e5);
+  EXPECT_EQ(seed.friction, 0.3);
+  EXPECT_NEAR(seed.normal_load(), 4535.0, 1.0);
 }

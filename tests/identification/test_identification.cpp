@@ -156,7 +156,12 @@ TEST(Identification, WhiteNoiseDataHasTheTruthInEveryInterval) {
   s.points = 40;
   s.noise = SimulatedNoise::additive_gaussian;
   s.noise_level = 0.01;
-  s.seed = 2026;
+  // One realisation: each 95 % interval misses the truth in one draw of twenty, so with five
+  // parameters about one seed in four has a miss (IntervalsCoverTheTruthInMonteCarlo tests
+  // the coverage itself). Seed 2026 is such a draw with the library's own normal generator
+  // (friction/random.hpp): M0 2.1 standard errors off; seeds 2026-2035 give two misses in ten
+  // (2026, 2033), white residuals and rms / noise scale within 0.25 of 1 in all ten.
+  s.seed = 2027;
   const FitReport r =
       fit_fractional_law(simulate_diagrams(law, s), tire_options(NoiseModel::additive));
   EXPECT_TRUE(r.converged);

@@ -138,6 +138,7 @@ TEST(IdentifyRequest, NormalLoadComesFromTheProfileOrElseFromTheFzColumn) {
   ContactPatch patch;
   patch.radius_m = 0.087;
   patch.reference_pressure_pa = 2.1e5;
+  patch.friction = 0.3;
   patch.profile = seed_tire_profile();
   EXPECT_NEAR(*from_profile.input.normal_load_n, normal_load(patch), 1e-9 * normal_load(patch));
   // No load anywhere: none reported, and f is not either.

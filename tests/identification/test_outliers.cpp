@@ -55,8 +55,8 @@ TEST(Outliers, CleanDataNameNone) {
     EXPECT_EQ(r.fitted.points.size(), d.points.size());
   }
   // The exact integrals fitted by the fractional law: a smooth misfit 3.5 times the noise.
-  ContactPatch patch;
-  patch.radius_m = 0.087;
+  const ContactPatch patch =
+      ContactPatch::from_normal_load(0.087, 4993.6, uniform_profile(), 0.3);  // p* = 210 kPa
   DiagramSpec s;
   s.radius_m = 0.087;
   s.points = 60;

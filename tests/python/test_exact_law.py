@@ -148,7 +148,7 @@ def test_bad_input_raises_errors_naming_the_value(laws):
     with pytest.raises(ValueError, match="tolerance = 'small'"):
         c.ExactLaw(patch, tolerance="small")  # type: ignore[arg-type]
     with pytest.raises(ValueError, match=r"^radius_m = -0.1: must be positive and finite$"):
-        c.ExactLaw(c.ContactPatch(radius_m=-0.1))
+        c.ContactPatch(radius_m=-0.1)  # refused where it is made
     with pytest.raises(TypeError, match="model: expected an ExactModel or a ContactPatch"):
         c.ExactLaw(law)  # type: ignore[arg-type]
     for threads in (-1, 100000, 1.5):

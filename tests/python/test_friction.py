@@ -210,7 +210,7 @@ def test_bad_input_raises_value_error_with_the_library_message(tmp_path):
     with pytest.raises(ValueError, match=r"^omega = inf: must be finite"):
         c.fractional_resultants(law, 0.1, 0.0, [1.0, np.inf])
     with pytest.raises(ValueError, match=r"^radius_m = -0.1: must be positive and finite$"):
-        c.ExactModel(c.ContactPatch(radius_m=-0.1))
+        c.ContactPatch(radius_m=-0.1)  # refused where it is made
     with pytest.raises(ValueError, match=r"^tolerance = 2: must lie in \(0, 1\)"):
         c.exact_resultants(patch, 0.1, 0.0, 1.0, tolerance=2.0)
     with pytest.raises(ValueError, match=r"^kappa = -1: must be positive and finite$"):
@@ -231,7 +231,8 @@ def test_bad_input_raises_value_error_with_the_library_message(tmp_path):
     with pytest.raises(ValueError, match=r"profile\.csv:3: .*not a number: 'abc'"):
         c.read_profile_csv(str(csv))
     # A negative pressure is refused by the exact model unless clipped or kept.
-    neg = c.ContactPatch(profile=c.cosine_series_profile(1.0, [0.2, 1.0]))
+    neg = c.ContactPatch(radius_m=0.1, reference_pressure_pa=1e5, friction=0.4,
+                         profile=c.cosine_series_profile(1.0, [0.2, 1.0]))
     with pytest.raises(ValueError, match="negative"):
         c.ExactModel(neg)
 

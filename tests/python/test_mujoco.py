@@ -89,12 +89,14 @@ def test_plugin_wrench_equals_library_at_a_frozen_state(variant, profile, stiffn
 
     # The library at that state: the patch carrying N; N = 2 pi R^2 p* A^1 (theory.md section 4)
     # with A^1 = 1/2 (uniform) or 1/3 (Hertz, integral of rho sqrt(1 - rho^2)).
-    patch = contensou.ContactPatch()
-    patch.radius_m = radius
-    patch.friction = disk.friction
-    patch.profile = contensou.uniform_profile() if profile == "uniform" else contensou.hertz_profile()
+    shape = contensou.uniform_profile() if profile == "uniform" else contensou.hertz_profile()
     a1 = 0.5 if profile == "uniform" else 1 / 3
-    patch.reference_pressure_pa = N / (2 * math.pi * radius**2 * a1)
+    patch = contensou.ContactPatch(radius_m=radius, friction=disk.friction, profile=shape,
+                                   reference_pressure_pa=N / (2 * math.pi * radius**2 * a1))
+    # The same patch made from the load itself.
+    by_load = contensou.ContactPatch(radius_m=radius, friction=disk.friction, profile=shape,
+                                     normal_load=N)
+    assert by_load.reference_pressure_pa == pytest.approx(patch.reference_pressure_pa, rel=1e-14)
     if variant == "exact":
         want = contensou.exact_resultants(patch, vx, vy, omega, tolerance=1e-12).resultants
     else:
@@ -135,13 +137,10 @@ def multi_pair_mjcf(profile: str = "uniform", kappa: float = 1.0, tolerance: str
 
 def reference_patch(profile: str, kappa: float, N: float, radius: float = 0.1):
     """The patch of the plugin's configuration carrying the normal force N."""
-    patch = contensou.ContactPatch()
-    patch.radius_m, patch.friction, patch.kappa = radius, 0.5, kappa
-    patch.profile = {"uniform": contensou.uniform_profile, "hertz": contensou.hertz_profile,
-                     "seed-tire": contensou.seed_tire_profile}[profile]()
-    patch.reference_pressure_pa = 1.0
-    patch.reference_pressure_pa = N / patch.normal_load
-    return patch
+    shape = {"uniform": contensou.uniform_profile, "hertz": contensou.hertz_profile,
+             "seed-tire": contensou.seed_tire_profile}[profile]()
+    return contensou.ContactPatch(radius_m=radius, normal_load=N, friction=0.5, kappa=kappa,
+                                  profile=shape)
 
 
 @pytest.mark.parametrize("profile,kappa", [("uniform", 1.0), ("hertz", 0.6), ("seed-tire", 1.0)])

@@ -18,4 +18,5 @@ def test_readme_quick_start_runs(monkeypatch):
     assert namespace["r"].resultants.shape == (201, 2, 3)
     assert namespace["E"].shape == (201, 2, 3) and namespace["dE"].shape == (201, 2, 3, 3)
     assert namespace["m"].shimmy.shape == (6, 8)
+    assert list(namespace["frame"].columns) == ["Fx_N", "Fy_N", "Mz_Nm"]
     assert os.getcwd() == str(ROOT)

@@ -61,3 +61,27 @@ def test_exact_law_results_have_one_type_each(mypy, tmp_path):
     # Only the last line is an error: the pair is not an array.
     errors = [line for line in run.stdout.splitlines() if ": error:" in line]
     assert len(errors) == 1 and "use_exact_law.py:9:" in errors[0], run.stdout + run.stderr
+
+
+def test_both_input_forms_type_check(mypy, tmp_path):
+    """Three arrays give arrays (a pair with jacobian=True), a table of columns gives a
+    FrictionTable: each form has one type, so F[:, 0] and table.Fx_N need no narrowing."""
+    use = tmp_path / "use_tables.py"
+    use.write_text(
+        "import numpy as np\n"
+        "import contensou as c\n"
+        "patch = c.ContactPatch(radius_m=0.087, normal_load=4500.0, friction=0.3)\n"
+        "law = c.fractional_law_from_patch(patch)\n"
+        "F = c.fractional_resultants(law, [0.5, 1.0], 0.0, 10.0)\n"
+        "first: np.ndarray = F[:, 0]\n"
+        "G, J = c.fractional_resultants(law, 0.5, 0.0, 10.0, jacobian=True)\n"
+        "cols = {'vx_mps': [0.5], 'vy_mps': [0.0], 'omega_radps': [10.0]}\n"
+        "t = c.fractional_resultants(law, cols)\n"
+        "fx: np.ndarray = t.Fx_N\n"
+        "frame = c.exact_resultants(patch, cols).to_frame()\n"
+        "e: np.ndarray = c.exact_resultants(patch, 0.5, 0.0, 10.0).error\n"
+        "wrong: np.ndarray = c.fractional_resultants(law, cols)\n")
+    run = mypy(str(use))
+    # Only the last line is an error: a table's result is a FrictionTable, not an array.
+    errors = [line for line in run.stdout.splitlines() if ": error:" in line]
+    assert len(errors) == 1 and "use_tables.py:13:" in errors[0], run.stdout + run.stderr

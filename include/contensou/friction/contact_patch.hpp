@@ -2,6 +2,7 @@
 #pragma once
 
 #include <cmath>
+#include <limits>
 #include <optional>
 
 #include "contensou/friction/pressure_profile.hpp"
@@ -42,13 +43,34 @@ T friction_at(const SlipSpeedFriction<T>& law, const T& w) {
 
 // Everything the exact model needs: sigma = p* p(rho) (1 + kx x/R + ky y/R) on a disk of radius
 // R, orthotropic Coulomb friction diag(f, kappa f) (seed eq. 1), f optionally f(w).
+//
+// A patch is made from what a multibody model knows, the normal load N:
+//   ContactPatch::from_normal_load(R, N, profile, f)   p* = N / (2 pi R^2 A^1) derived,
+// or from the reference pressure p* by setting the fields. R, p* and f start unset (NaN): a
+// default-constructed patch is refused by validate() (and so by everything that uses it) until
+// they are set. ContactPatch::seed_tire() is the tire of the seed.
 struct ContactPatch {
-  double radius_m = 0.087;               // R [m]
-  double reference_pressure_pa = 2.1e5;  // p* [Pa]
-  double friction = 0.3;                 // f (longitudinal)
-  double kappa = 1.0;                    // lateral / longitudinal friction ratio
-  PressureProfile profile;               // shape p(rho) and shift kx, ky
+  static constexpr double kUnset = std::numeric_limits<double>::quiet_NaN();
+
+  double radius_m = kUnset;               // R [m]
+  double reference_pressure_pa = kUnset;  // p* [Pa]; from_normal_load derives it from N
+  double friction = kUnset;               // f (longitudinal)
+  double kappa = 1.0;                     // lateral / longitudinal friction ratio
+  PressureProfile profile;                // shape p(rho) and shift kx, ky (uniform by default)
   std::optional<SlipSpeedFriction<double>> slip_speed_friction;  // replaces `friction` if set
+
+  // The patch of radius R [m] carrying the normal load N [N] with the pressure shape
+  // `profile`: p* = N / (2 pi R^2 A^1) (theory.md section 4; the shift kx, ky carries no load).
+  // Validated: throws InvalidArgument naming the bad argument, or the profile if A^1 <= 0.
+  static ContactPatch from_normal_load(double radius_m, double normal_load_n,
+                                       PressureProfile profile, double friction,
+                                       double kappa = 1.0);
+
+  // The tire of the seed (seed_tire_patch below).
+  static ContactPatch seed_tire();
+
+  // N = 2 pi R^2 p* A^1 [N] (theory.md section 4); validates the patch first.
+  double normal_load() const;
 };
 
 // The tire of the seed (Kireenkov & Zhavoronok 2020): R = 0.087 m (section 4), the Table 1
@@ -56,11 +78,11 @@ struct ContactPatch {
 // shift (set profile.kx = 0.14 for the rolling tire of seed eq. 10).
 ContactPatch seed_tire_patch();
 
-// Normal load N = 2 pi R^2 p* A^1 [N] (theory.md section 4).
+// Normal load N = 2 pi R^2 p* A^1 [N] (theory.md section 4); validates the patch first.
 double normal_load(const ContactPatch& patch);
 
-// Throws InvalidArgument naming the first bad field (radius, pressure, friction, kappa,
-// shift, slip-speed law), or the scales when they leave the doubles
+// Throws InvalidArgument naming the first bad field (an unset R, p* or f first, then radius,
+// pressure, friction, kappa, shift, slip-speed law), or the scales when they leave the doubles
 // (require_representable_scales).
 void validate(const ContactPatch& patch);
 

@@ -50,6 +50,7 @@
 #include "contensou/friction/impl/table_partition.hpp"
 #include "contensou/friction/impl/table_pieces.hpp"
 #include "contensou/friction/kinematics.hpp"
+#include "contensou/friction/resultant_errors.hpp"
 #include "contensou/friction/scalar.hpp"
 
 namespace contensou {
@@ -62,8 +63,8 @@ struct ExactOptions {
 template <class T = double>
 struct ExactResult {
   Resultants<T> resultants;
-  Resultants<double> error;  // estimated absolute error [N, N, N m]
-  int evaluations = 0;       // rays evaluated (outer integrand evaluations)
+  ResultantErrors error;  // estimated absolute error of each component [N, N, N m]
+  int evaluations = 0;    // rays evaluated (outer integrand evaluations)
   // true only if every component of `error` meets the requested tolerance (tol f N, tol f N R;
   // representation error and floor included); false if the estimate exceeds it (the interval
   // budget ran out, or the profile's representation alone is coarser than the tolerance).

@@ -58,7 +58,8 @@ MeasuredData diagram_kinematics(const DiagramSpec& spec);
 MeasuredData simulate_diagrams(const FractionalLaw<double>& law, const DiagramSpec& spec);
 MeasuredData simulate_diagrams(const ExactModel<double>& model, const DiagramSpec& spec);
 
-// Adds the spec's noise to every measured value, in place (deterministic for a seed).
+// Adds the spec's noise to every measured value, in place (deterministic for a seed, and the
+// same with every standard library: std::mt19937_64 and contensou/friction/random.hpp).
 void add_noise(MeasuredData& data, const DiagramSpec& spec);
 
 SimulatedNoise parse_noise(const std::string& name);  // throws InvalidArgument

@@ -14,6 +14,7 @@
 #include "contensou/friction/exact_model.hpp"
 #include "contensou/friction/impl/slip_speed_integrals.hpp"
 #include "contensou/friction/kinematics.hpp"
+#include "contensou/friction/resultant_errors.hpp"
 #include "contensou/friction/scalar.hpp"
 
 namespace contensou::detail {
@@ -35,18 +36,18 @@ ToleranceScale tolerance_scale(const ExactModel<T>& m, double requested) {
 
 // Whether an error estimate [N, N, N m] meets a tolerance relative to f N (forces) and f N R
 // (torque), scale_F = f N.
-inline bool within_tolerance(const Resultants<double>& e, double tol, double scale_F, double R) {
+inline bool within_tolerance(const ResultantErrors& e, double tol, double scale_F, double R) {
   return e.Fx <= tol * scale_F && e.Fy <= tol * scale_F && e.Mz <= tol * scale_F * R;
 }
 
-inline bool within_tolerance(const Resultants<double>& e, const ToleranceScale& s) {
+inline bool within_tolerance(const ResultantErrors& e, const ToleranceScale& s) {
   return within_tolerance(e, s.requested, s.scale_F, s.R);
 }
 
 // The representation's share: |p - representation| <= e (dimensionless) bounds the load error
 // by e p* f pi R^2 [N] (times R for the torque).
 template <class T>
-Resultants<double> representation_error_bound(const ExactModel<T>& m) {
+ResultantErrors representation_error_bound(const ExactModel<T>& m) {
   const double R = m.radius;
   const double repr =
       m.representation_error * value_of(m.pressure) * m.friction_scale * std::numbers::pi * R * R;
@@ -54,7 +55,7 @@ Resultants<double> representation_error_bound(const ExactModel<T>& m) {
 }
 
 // A dropped tail d [N] in the estimate: d on each force, d R on the torque.
-inline void add_dropped(Resultants<double>& e, double d, double R) {
+inline void add_dropped(ResultantErrors& e, double d, double R) {
   e.Fx += d;
   e.Fy += d;
   e.Mz += d * R;
@@ -105,8 +106,8 @@ std::size_t falling_profile_terms(const ExactModel<T>& m, double fall, double un
 // The outer rule's tolerances [integrand units]: the share of tol f N (f N R) that the terms
 // already in the estimate e and the floor leave, at least half of it (a representation error
 // beyond half the tolerance cannot converge).
-inline std::array<double, 3> outer_tolerances(const Resultants<double>& e, double floor,
-                                              double unit, const ToleranceScale& s) {
+inline std::array<double, 3> outer_tolerances(const ResultantErrors& e, double floor, double unit,
+                                              const ToleranceScale& s) {
   auto room = [&](double used, double scale) {
     const double budget = s.tol * s.scale_F * scale;
     return budget > 0.0 ? std::clamp(1.0 - used / budget, 0.5, 1.0) : 1.0;
@@ -137,7 +138,7 @@ struct SpinBudget {
 // panels converge down to ~3e-9 (101-point table), and below that still report a 100x smaller
 // estimate.
 template <class T>
-SpinBudget spin_budget(const ExactModel<T>& m, const ToleranceScale& s, Resultants<double>& e) {
+SpinBudget spin_budget(const ExactModel<T>& m, const ToleranceScale& s, ResultantErrors& e) {
   const double R = m.radius, tol = s.tol;
   const double unit = tol * m.load_area * (m.slip_speed ? m.friction_scale : 1.0);
   const double share = 1.0 / (20.0 * std::numbers::pi);

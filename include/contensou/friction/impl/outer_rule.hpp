@@ -258,7 +258,7 @@ AdaptiveResult<T, 3> integrate_about_centre(const ExactModel<T>& m, const Kinema
 // inside the integrals), and its error estimate with the floor added to e.
 template <class T>
 void add_outer_result(const ExactModel<T>& m, const AdaptiveResult<T, 3>& res, double floor,
-                      Resultants<T>& r, Resultants<double>& e) {
+                      Resultants<T>& r, ResultantErrors& e) {
   const double R = m.radius;
   const T factor = -(m.slip_speed ? T(1.0) : m.friction) * m.pressure;
   r.Fx = factor * res.value[0];

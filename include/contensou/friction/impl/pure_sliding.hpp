@@ -153,7 +153,7 @@ Resultants<T> sliding_to_first_order(const ExactModel<T>& m, const Kinematics<T>
 
 // The first order's remainder in the estimate: twice its bound, 2 c eps^2 f N on the forces
 // (on top of the representation's), and that times R on the torque.
-inline void add_first_order_remainder(Resultants<double>& e, double remainder, double eps,
+inline void add_first_order_remainder(ResultantErrors& e, double remainder, double eps,
                                       const ToleranceScale& s) {
   e.Fx += 2.0 * remainder * eps * eps * s.scale_F;
   e.Fy = e.Fx;
