@@ -3,7 +3,7 @@
 (tests/python/doc_blocks.py says how), as a user would from the repository root: in a fresh
 folder holding `data/` (the repository's) and `build/apps/` (the apps under test), with
 `bash -eu -o pipefail`. A block that calls anything else fails here, so it must be a fragment.
-Usage: doc_shell_blocks.py SOURCE_DIR CONTENSOU_IDENTIFY CONTENSOU_SHIMMY CONTENSOU_ENGINE_COEFFICIENTS
+Usage: doc_shell_blocks.py SOURCE_DIR APP...  (contensou-identify, -shimmy, -engine-coefficients)
 """
 
 from __future__ import annotations
@@ -37,7 +37,8 @@ for doc in documents(root):
             ran += 1
             print(f"{where}: exit {r.returncode} in {time.monotonic() - start:.1f} s")
             if r.returncode != 0:
-                failures.append(f"{where}: exit {r.returncode}\n{b.code}{r.stdout[-2000:]}{r.stderr[-2000:]}")
+                tail = r.stdout[-2000:] + r.stderr[-2000:]
+                failures.append(f"{where}: exit {r.returncode}\n{b.code}{tail}")
 if ran == 0:
     failures.append("no shell block found: the README's app quick starts are missing")
 for f in failures:

@@ -1,7 +1,8 @@
 """The documentation runs as written: every ```python block of README.md and docs/*.md (from the
-repository root, the blocks of one file in order in one namespace), every code block is run by
-some test or marked as a fragment, fences are closed, and the links between the pages resolve.
-Which test runs which block: tests/python/doc_blocks.py."""
+repository root, the blocks of one file in order in one namespace; what they print must appear
+in the page), every code block is run by some test or marked as a fragment, fences are closed,
+and the links between the pages resolve. Which test runs which block: tests/python/doc_blocks.py.
+"""
 
 from __future__ import annotations
 
@@ -27,7 +28,7 @@ def _source(code: str) -> str:
 
 
 @pytest.mark.parametrize("doc", WITH_PYTHON, ids=[d.name for d in WITH_PYTHON])
-def test_python_blocks_run(doc: Path, monkeypatch):
+def test_python_blocks_run(doc: Path, monkeypatch, capsys):
     monkeypatch.chdir(ROOT)
     namespace: dict = {"__name__": "__doc_block__"}
     for b in blocks(doc):
@@ -37,6 +38,10 @@ def test_python_blocks_run(doc: Path, monkeypatch):
             pytest.importorskip("mujoco", reason="MuJoCo is not installed in this Python")
         # Line numbers in a traceback are the file's.
         exec(compile("\n" * b.line + _source(b.code), str(doc), "exec"), namespace)
+    printed = [line for line in capsys.readouterr().out.splitlines() if line.strip()]
+    text = doc.read_text(encoding="utf-8")
+    missing = [line for line in printed if line not in text]
+    assert not missing, f"{doc.name} does not show what its blocks print: {missing}"
     if doc.name == "README.md":  # the Python quick start's shapes, as its comments say
         assert namespace["r"].resultants.shape == (201, 2, 3)
         assert namespace["E"].shape == (201, 2, 3) and namespace["dE"].shape == (201, 2, 3, 3)
@@ -57,7 +62,8 @@ def test_every_code_block_is_run_or_a_fragment():
         for b in blocks(doc):  # raises on an unclosed fence
             if b.fragment or b.lang in OUTPUT:
                 continue
-            runs = b.lang in RUN and not (b.lang == "cpp" and (doc.name != "README.md" or "int main" not in b.code))
+            quick_start = doc.name == "README.md" and "int main" in b.code
+            runs = b.lang in RUN and (b.lang != "cpp" or quick_start)
             if not runs:
                 loose.append(f"{doc.relative_to(ROOT)}:{b.line}: ```{b.lang or '(no language)'}")
     assert not loose, (
