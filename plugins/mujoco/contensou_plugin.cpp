@@ -73,7 +73,7 @@
 //     scales as w = N S u, S = diag(1, 1, R)): metric G = S A S, u_t = -G^-1 S s_free / N.
 // At rest under a constant load the trial is the previous step's wrench (J qacc = 0 there), so
 // a load inside C is a fixed point: the same wrench, the same qacc, the twist stays 0.
-// What stays approximate (README "Creep"): N and the non-friction forces lag one step; the
+// What stays approximate (docs/mujoco.md, "Creep"): N and the non-friction forces lag one step; the
 // projection is per pair (the other pairs enter through the previous step); the estimate
 // assumes qvel+ = qvel + h qacc with the same M (Euler without implicit damping).
 //

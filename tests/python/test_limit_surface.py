@@ -73,7 +73,7 @@ def test_moreau_jean_step_keeps_a_loaded_body_at_rest_and_the_ellipsoid_agrees()
     w = np.array([0.3 * fN, 0.4 * fN, 0.2 * fN * e.torsional_length])
     assert e.gauge(w).value == pytest.approx(math.sqrt(0.09 + 0.16 + 0.04), rel=1e-12)
     err = s.ellipsoid_error(e, 12, 12)
-    assert 0.03 < err.max_radial_error < 0.08  # 6.9 % on the fine grid (README)
+    assert 0.03 < err.max_radial_error < 0.08  # 6.9 % on the fine grid (docs/accuracy.md)
 
 
 def test_orthotropic_surface_has_kappa_times_the_force_across():

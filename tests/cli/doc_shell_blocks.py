@@ -1,0 +1,46 @@
+#!/usr/bin/env python3
+"""Runs every ```sh and ```bash block of README.md and docs/*.md that is not marked as a fragment
+(tests/python/doc_blocks.py says how), as a user would from the repository root: in a fresh
+folder holding `data/` (the repository's) and `build/apps/` (the apps under test), with
+`bash -eu -o pipefail`. A block that calls anything else fails here, so it must be a fragment.
+Usage: doc_shell_blocks.py SOURCE_DIR APP...  (contensou-identify, -shimmy, -engine-coefficients)
+"""
+
+from __future__ import annotations
+
+import os
+import subprocess
+import sys
+import tempfile
+import time
+from pathlib import Path
+
+root = Path(sys.argv[1]).resolve()
+apps = [Path(a).resolve() for a in sys.argv[2:]]
+sys.path.insert(0, str(root / "tests" / "python"))
+from doc_blocks import blocks, documents  # noqa: E402
+
+failures, ran = [], 0
+for doc in documents(root):
+    for b in blocks(doc):
+        if b.lang not in ("sh", "bash") or b.fragment:
+            continue
+        where = f"{doc.relative_to(root)}:{b.line}"
+        with tempfile.TemporaryDirectory() as tmp:
+            os.symlink(root / "data", Path(tmp) / "data")
+            (Path(tmp) / "build" / "apps").mkdir(parents=True)
+            for app in apps:
+                os.symlink(app, Path(tmp) / "build" / "apps" / app.name)
+            start = time.monotonic()
+            r = subprocess.run(["bash", "-eu", "-o", "pipefail", "-c", b.code], cwd=tmp,
+                               capture_output=True, text=True, timeout=300)
+            ran += 1
+            print(f"{where}: exit {r.returncode} in {time.monotonic() - start:.1f} s")
+            if r.returncode != 0:
+                tail = r.stdout[-2000:] + r.stderr[-2000:]
+                failures.append(f"{where}: exit {r.returncode}\n{b.code}{tail}")
+if ran == 0:
+    failures.append("no shell block found: the README's app quick starts are missing")
+for f in failures:
+    print("FAIL", f)
+sys.exit(1 if failures else 0)
