@@ -199,8 +199,8 @@ void bind_identification(nb::module_& m) {
   // Ceres logs through glog: quiet, as contensou-identify without --verbose.
   FLAGS_minloglevel = google::GLOG_FATAL;
   bind_request(m);
-  m.def("_identify", &identify, "path"_a.none(), "source"_a, "names"_a, "columns"_a, "renames"_a,
-        "request"_a);
+  m.def("_identify", &identify, "path"_a.none(), "source"_a, "names"_a, "columns"_a,
+        "renames"_a.none(), "request"_a);
 }
 
 }  // namespace contensou::python

@@ -100,7 +100,7 @@ void validate(const IdentifyRequest& r) {
 std::optional<double> load_from_profile(const IdentifyRequest& r, ProfileChoice& profile) {
   if (r.profile.empty()) return std::nullopt;
   try {
-    profile = choose_profile(r.profile, r.profile_smoothing, r.profile_clip);
+    profile = choose_profile(r.profile, r.profile_smoothing, r.profile_clip, r.style);
   } catch (const ParseError&) {
     throw;
   } catch (const std::runtime_error& e) {
