@@ -2,11 +2,11 @@
 // connector or a logging slip): found in a fit's residual, named, and left out of the fit that
 // is reported, so that its parameters and intervals are those of the clean rows.
 //
-// The rule (documented in docs/identification.md): in each channel, the residual e_i = y_i - model_i of a
-// row is compared with the median of those of its four neighbours in file order (two before,
-// two after, where the channel was measured) that are in its regime (same spin sense, sliding
-// direction within 0.2 rad, v/omega within a factor 3; or all at rest), d_i = e_i - median; a
-// row with fewer than two such neighbours is not judged. A smooth misfit of the model (a missing
+// The rule (documented in docs/identification.md): in each channel, the residual e_i = y_i -
+// model_i of a row is compared with the median of those of its four neighbours in file order (two
+// before, two after, where the channel was measured) that are in its regime (same spin sense,
+// sliding direction within 0.2 rad, v/omega within a factor 3; or all at rest), d_i = e_i - median;
+// a row with fewer than two such neighbours is not judged. A smooth misfit of the model (a missing
 // effect) hardly changes from one row to the next and cancels in d; an isolated glitch does not.
 // The robust noise scale at the value is sigma = 1.4826 median|d| / 1.14 over the 16 values up
 // to it and over the 16 from it on, the larger (local, because noise changes along a file: it
