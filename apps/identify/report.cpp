@@ -71,7 +71,7 @@ bool write_loop_plots(const std::string& dir, const MeasuredData& data,
           (st.removed    ? "removed"
            : st.accepted ? "accepted"
                          : "rejected") +
-          "'\n";
+          "' noenhanced\n";  // effect names hold underscores, not subscripts
     gp += "set logscale x\nset format x '10^{%L}'\nset grid\nset key top right opaque box\n";
     gp += "set xlabel 'psi = v / (omega R) [-]'\n";
     for (int c = 0; c < kChannels; ++c) {
