@@ -245,7 +245,7 @@ def exact_resultants(
     force = np.empty((n, 3))
     error = np.empty((n, 3))
     converged = np.empty(n, dtype=bool)
-    _core._exact_loop(model, x, y, w, force, error, converged, float(tolerance), _check_threads(threads))
+    _core._exact_loop(model, (x, y, w), force, error, converged, float(tolerance), _check_threads(threads))
     if table:
         return FrictionTable(force, index, error=error, converged=converged)
     return ExactResults(

@@ -4,6 +4,7 @@
 #include <nanobind/stl/optional.h>
 #include <nanobind/stl/pair.h>
 #include <nanobind/stl/string.h>
+#include <nanobind/stl/tuple.h>
 #include <nanobind/stl/vector.h>
 
 #include <chrono>
@@ -31,9 +32,14 @@ const char* shape_kind(const PressureProfile& p) {
       p.shape);
 }
 
-void exact_loop(const ExactModel<double>& model, InArray vx, InArray vy, InArray omega,
-                OutArray2 force, OutArray2 error, nb::ndarray<bool, nb::ndim<1>, nb::c_contig> conv,
+// kinematics = (vx, vy, omega), flat arrays of one length n; outputs (n, 3), (n, 3) and (n,).
+void exact_loop(const ExactModel<double>& model,
+                const std::tuple<InArray, InArray, InArray>& kinematics, OutArray2 force,
+                OutArray2 error, nb::ndarray<bool, nb::ndim<1>, nb::c_contig> conv,
                 double tolerance, unsigned threads) {
+  const InArray& vx = std::get<0>(kinematics);
+  const InArray& vy = std::get<1>(kinematics);
+  const InArray& omega = std::get<2>(kinematics);
   const std::size_t n = force.shape(0);
   check_lengths(vx, vy, omega, n);
   if (force.shape(1) != 3 || error.shape(0) != n || error.shape(1) != 3 || conv.shape(0) != n)
@@ -345,8 +351,8 @@ void bind_laws(nb::module_& m) {
 }
 
 void bind_loops(nb::module_& m) {
-  m.def("_exact_loop", &exact_loop, "model"_a, "vx"_a, "vy"_a, "omega"_a, "force"_a, "error"_a,
-        "converged"_a, "tolerance"_a, "threads"_a);
+  m.def("_exact_loop", &exact_loop, "model"_a, "kinematics"_a, "force"_a, "error"_a, "converged"_a,
+        "tolerance"_a, "threads"_a);
   m.def("_fractional_loop", &fractional_loop, "law"_a, "vx"_a, "vy"_a, "omega"_a, "force"_a,
         "jacobian"_a.none(), "threads"_a);
   m.def("_cpp_loop_exact", &cpp_loop_exact, "model"_a, "vx"_a, "vy"_a, "omega"_a,
