@@ -246,3 +246,41 @@ TEST(Interrupt, AStoppedExactLawBuildLeavesNothingAndBuildsAgain) {
   EXPECT_THROW(cache.laws(false, [] { return true; }), Interrupted);
   EXPECT_EQ(cache.laws(false).size(), 3u);
 }
+
+// --- Bounds: a parameter the data press against its bound ---------------------------------
+
+// The seed tire (kx = 0.14) fitted with the parametric profile (three basis shapes): its
+// weight b1 goes to its bound -0.45. The bounded fit must end at the optimum, whose oracle is
+// the same fit with b1 fixed at -0.45 (an unconstrained problem): the same cost, the same
+// parameters. Ceres' trust region alone crawled along the bound (its radius shrinking at every
+// clipped step) and stopped short: on 1,000 points 12 units of -2 log L above the optimum.
+TEST(FitBounds, ReachesTheOptimumWithAParameterOnItsBound) {
+  ContactPatch patch = seed_tire_patch();
+  patch.profile.kx = 0.14;
+  DiagramSpec s;
+  s.radius_m = 0.087;
+  s.points = 300;
+  s.noise_level = 0.01;
+  const MeasuredData data = simulate_diagrams(make_exact_model(patch), s);
+  IdentificationOptions o;
+  o.radius_m = 0.087;
+  ModelSpec spec = base_spec_for(data, o);
+  spec.exact_only = true;
+  spec.free[kA] = spec.free[kM0] = spec.free[kMShape] = spec.free[kShapeBlend] = false;
+  spec.value[kShapeBlend] = 1.0;
+  spec.free[kProfileB1] = spec.free[kProfileB2] = true;
+  NoiseSettings noise = noise_settings_for(o);
+  noise.given = std::array<double, 3>{15.0, 1.0, 1.0};  // one weighting for both fits
+  const FitReport bounded = fit_model(data, spec, noise);
+  ASSERT_TRUE(bounded.converged) << bounded.solver_summary;
+  ASSERT_EQ(bounded.parameter("profile_b1")->value, -0.45) << "the bound is not active here";
+  ModelSpec on_bound = spec;
+  on_bound.free[kProfileB1] = false;
+  on_bound.value[kProfileB1] = -0.45;
+  const FitReport oracle = fit_model(data, on_bound, noise);
+  EXPECT_NEAR(bounded.chi2, oracle.chi2, 1e-7 * oracle.chi2);
+  for (const char* name : {"F0_N", "kx", "profile_b2"})
+    EXPECT_NEAR(bounded.parameter(name)->value, oracle.parameter(name)->value,
+                1e-5 * std::abs(oracle.parameter(name)->value))
+        << name;
+}
