@@ -93,6 +93,29 @@ std::array<double, kChannels> channel_magnitudes(const MeasuredData& d, double r
   return peak;
 }
 
+// The forces a fit is made for: the data's force scale (the largest |Fx|, |Fy| and |Mz| / R)
+// in [1e-6, 1e8] N. Outside it fixed thresholds stop treating the parameters alike (the
+// positivity bounds of F0 and M0 at 1e-12, Ceres' step tolerance relative to the norm of all
+// parameters together, the rank test of the Jacobian's columns): on the bundled set scaled by
+// 1e-20 or 1e9 the fits went wrong without a word. Data of zero force have nothing to fit.
+void check_force_scale(const MeasuredData& data, double radius_m) {
+  constexpr double kLowest = 1e-6, kHighest = 1e8;  // [N]
+  double force = 0.0;
+  for (int c = 0; c < kChannels; ++c)
+    force = std::max(force, channel_peak(data, c) / (c == 2 ? radius_m : 1.0));
+  const std::string where = data.source.empty() ? std::string("data") : data.source;
+  if (force == 0.0)
+    throw InvalidArgument(where, "every measured Fx, Fy and Mz zero",
+                          "there is no friction to fit");
+  if (force < kLowest || force > kHighest)
+    throw InvalidArgument(
+        where, "largest measured force " + format_value(force) + " N",
+        "outside the range a fit is made for, " + format_value(kLowest) + " to " +
+            format_value(kHighest) +
+            " N (|Mz| / R counted as a force, R = " + format_value(radius_m) +
+            " m): check the units of the force columns (kN read as N, say) and of the radius");
+}
+
 // Smallest noise scale estimated from the scatter: 1e-6 of the channel's magnitude (additive),
 // 1e-6 (relative). Below it the weights would come from rounding, not from noise.
 constexpr double kNoiseFloor = 1e-6;
@@ -411,6 +434,7 @@ FitSetup prepare_fit(const MeasuredData& data, const ModelSpec& spec, const Nois
                           "too little data: the fit needs at least " + std::to_string(needed) +
                               " (" + std::to_string(s.p_free) + " free parameters + " +
                               std::to_string(scales) + " estimated noise scales + 1)");
+  check_force_scale(data, spec.radius_m);
   s.peak = channel_magnitudes(data, spec.radius_m);
   for (int c = 0; c < kChannels; ++c) s.floor_rel[c] = 0.05 * s.peak[c];
   for (int i = 0; i < K; ++i)

@@ -284,3 +284,59 @@ TEST(FitBounds, ReachesTheOptimumWithAParameterOnItsBound) {
                 1e-5 * std::abs(oracle.parameter(name)->value))
         << name;
 }
+
+// --- Force scale: the same fit in any unit inside the range, a clear refusal outside -------
+
+namespace {
+
+MeasuredData scaled_forces(MeasuredData d, double k) {
+  for (MeasuredPoint& p : d.points)
+    for (auto& f : p.force)
+      if (f) *f *= k;
+  return d;
+}
+
+}  // namespace
+
+// The fractional law's a, m, kx are ratios: the same for the data in N, mN or kN, and F0, M0
+// scale with the data. Outside 1e-6 to 1e8 N the fit is refused, naming the range (there, on
+// the bundled set scaled by 1e-20 or 1e9, fits went wrong without a word); zero forces too.
+TEST(FitForceScale, SameFitInAnyUnitInsideTheRangeAndARefusalOutside) {
+  ContactPatch patch = seed_tire_patch();
+  patch.profile.kx = 0.14;
+  DiagramSpec s;
+  s.radius_m = 0.087;
+  s.points = 40;
+  s.noise_level = 0.01;
+  const MeasuredData data = simulate_diagrams(fractional_law_from_patch(patch), s);
+  IdentificationOptions o;
+  o.radius_m = 0.087;
+  const FitReport base = fit_fractional_law(data, o);
+  for (double k : {1e-8, 1e-3, 1e4}) {
+    const FitReport f = fit_fractional_law(scaled_forces(data, k), o);
+    for (const char* name : {"a", "m", "kx"})
+      EXPECT_NEAR(f.parameter(name)->value, base.parameter(name)->value,
+                  1e-4 * std::abs(base.parameter(name)->value))
+          << name << " at " << k;
+    for (const char* name : {"F0_N", "M0_Nm"})
+      EXPECT_NEAR(f.parameter(name)->value / k, base.parameter(name)->value,
+                  1e-4 * base.parameter(name)->value)
+          << name << " at " << k;
+  }
+  for (double k : {1e-12, 1e6, 1e250}) {
+    try {
+      fit_fractional_law(scaled_forces(data, k), o);
+      ADD_FAILURE() << "forces scaled by " << k << " were fitted";
+    } catch (const InvalidArgument& e) {
+      EXPECT_NE(std::string(e.what()).find("outside the range a fit is made for, 1e-06 to 1e+08 N"),
+                std::string::npos)
+          << e.what();
+    }
+  }
+  try {
+    fit_fractional_law(scaled_forces(data, 0.0), o);
+    ADD_FAILURE() << "zero forces were fitted";
+  } catch (const InvalidArgument& e) {
+    EXPECT_NE(std::string(e.what()).find("no friction to fit"), std::string::npos) << e.what();
+  }
+}
