@@ -201,10 +201,15 @@ class LandingResult:
     def shimmy(self) -> bool:
         return bool(self.metrics["shimmy"])
 
-    def to_dataframe(self) -> Any:
+    def to_frame(self) -> Any:
+        """The history as a pandas DataFrame, one column per name in ``columns`` (SI units)."""
         import pandas as pd  # type: ignore[import-untyped]  # optional
 
         return pd.DataFrame(self.history, columns=self.columns)
+
+    def to_dataframe(self) -> Any:
+        """The same as ``to_frame()`` (the name of the friction results), kept for old code."""
+        return self.to_frame()
 
 
 def simulate_landing(

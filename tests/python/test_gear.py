@@ -125,6 +125,10 @@ def test_landing_equals_the_apps_histories_and_metrics(app_run, model):
     # The app writes 9 significant digits.
     np.testing.assert_allclose(r.history, app, rtol=6e-9, atol=1e-300)
     np.testing.assert_array_equal(r.t, r["t_s"])
+    frame = r.to_frame()  # the friction results' name; to_dataframe() the same
+    assert list(frame.columns) == r.columns
+    np.testing.assert_array_equal(frame["t_s"].to_numpy(), r["t_s"])
+    assert r.to_dataframe().equals(frame)
     summary = json.loads((out / "summary.json").read_text())["models"][model]
     m = r.metrics
     assert m["shimmy"] == summary["shimmy"]
