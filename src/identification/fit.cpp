@@ -71,8 +71,38 @@ ceres::Problem::EvaluateOptions evaluate_options() {
   return o;
 }
 
-// Derivatives in passes of 8 parameters (ceres::Jet<double, 8>).
+// Derivatives in passes of 8 parameters (ceres::Jet<double, 8>), for more than 8 active.
 using PointCost = ceres::DynamicAutoDiffCostFunction<PointResidual, 8>;
+
+// Up to 8 active parameters (every fit of the closed loop but the largest): the derivatives in
+// one pass of ceres::Jet<double, 8> on the stack. The same arithmetic as PointCost's first pass
+// (the unused dual parts are zero), without its allocations and copies.
+class PointCostOnePass final : public ceres::CostFunction {
+ public:
+  static constexpr int kWidth = 8;
+  PointCostOnePass(PointResidual* f, int parameters, int residuals) : f_(f) {
+    set_num_residuals(residuals);
+    mutable_parameter_block_sizes()->push_back(parameters);
+  }
+  bool Evaluate(double const* const* x, double* r, double** jacobian) const override {
+    if (!jacobian || !jacobian[0]) return (*f_)(x, r);
+    using Jet = ceres::Jet<double, kWidth>;
+    const int n = parameter_block_sizes()[0], m = num_residuals();
+    std::array<Jet, kWidth> p;
+    for (int j = 0; j < n; ++j) p[j] = Jet(x[0][j], j);
+    const Jet* packed = p.data();
+    std::array<Jet, kChannels> out;
+    if (!(*f_)(&packed, out.data())) return false;
+    for (int i = 0; i < m; ++i) {
+      r[i] = out[i].a;
+      for (int j = 0; j < n; ++j) jacobian[0][i * n + j] = out[i].v[j];
+    }
+    return true;
+  }
+
+ private:
+  std::unique_ptr<PointResidual> f_;
+};
 
 double channel_peak(const MeasuredData& d, int c) {
   double m = 0.0;
@@ -193,9 +223,15 @@ int add_points(ceres::Problem& problem, const MeasuredData& data, const ModelSpe
       delete f;
       continue;
     }
-    auto* cost = new PointCost(f);
-    cost->AddParameterBlock(static_cast<int>(active.size()));
-    cost->SetNumResiduals(m);
+    ceres::CostFunction* cost = nullptr;
+    if (static_cast<int>(active.size()) <= PointCostOnePass::kWidth) {
+      cost = new PointCostOnePass(f, static_cast<int>(active.size()), m);
+    } else {
+      auto* dynamic = new PointCost(f);
+      dynamic->AddParameterBlock(static_cast<int>(active.size()));
+      dynamic->SetNumResiduals(m);
+      cost = dynamic;
+    }
     ceres::LossFunction* loss = nullptr;
     if (wt.loss == RobustLoss::huber) loss = new ceres::HuberLoss(wt.loss_scale);
     if (wt.loss == RobustLoss::cauchy) loss = new ceres::CauchyLoss(wt.loss_scale);
