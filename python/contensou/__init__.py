@@ -19,7 +19,7 @@ part left out raises ``ImportError`` naming what it needs. The MuJoCo plugin:
 ``contensou.mujoco``.
 """
 
-from typing import TYPE_CHECKING, Any
+import typing as _typing
 
 from . import _build, _core, _parts, _signatures
 from ._core import (
@@ -87,7 +87,8 @@ __all__ = [
     "uniform_profile",
 ]
 
-# The names of the optional parts, each from its module.
+# The names of the optional parts, each from its module (literal lists in __all__ below, for
+# type checkers; tests/python/test_package.py checks that the two agree).
 _OPTIONAL = {
     "identification": ["IdentificationResult", "LoopStep", "Parameter", "identify"],
     "gear": [
@@ -100,11 +101,11 @@ _OPTIONAL = {
         "stability_map_native",
     ],
 }
-if TYPE_CHECKING or "identification" in _build.PARTS:
+if _typing.TYPE_CHECKING or "identification" in _build.PARTS:
     from .identification import IdentificationResult, LoopStep, Parameter, identify
 
-    __all__ += _OPTIONAL["identification"]
-if TYPE_CHECKING or "gear" in _build.PARTS:
+    __all__ += ["IdentificationResult", "LoopStep", "Parameter", "identify"]
+if _typing.TYPE_CHECKING or "gear" in _build.PARTS:
     from .gear import (
         LandingConfig,
         LandingResult,
@@ -115,11 +116,19 @@ if TYPE_CHECKING or "gear" in _build.PARTS:
         stability_map_native,
     )
 
-    __all__ += _OPTIONAL["gear"]
+    __all__ += [
+        "LandingConfig",
+        "LandingResult",
+        "MapAxis",
+        "StabilityMapResult",
+        "simulate_landing",
+        "stability_map",
+        "stability_map_native",
+    ]
 
-if not TYPE_CHECKING:  # for the type checker every name above exists
+if not _typing.TYPE_CHECKING:  # for the type checker every name above exists
 
-    def __getattr__(name: str) -> Any:
+    def __getattr__(name: str) -> _typing.Any:
         """A name of a part the build left out: ImportError naming what that part needs."""
         for part, names in _OPTIONAL.items():
             if name in names:

@@ -8,9 +8,10 @@ from . import _build
 
 def missing(part: str) -> ImportError:
     needs = _build.MISSING.get(part, "its dependencies")
+    them = "them" if needs.count("(Debian:") > 1 else "it"
     return ImportError(
         f"contensou.{part} is not in this installation of contensou: its build did not find "
-        f"{needs}. Install that, then build contensou again from its source (pip install "
+        f"{needs}. Install {them}, then build contensou again from its source (pip install "
         "--force-reinstall <the source>); the friction functions work without it."
     )
 

@@ -31,6 +31,13 @@ def test_this_build_has_every_part():
     assert callable(contensou.identify) and callable(contensou.stability_map)
 
 
+def test_names_of_the_optional_parts_are_exported():
+    optional = [n for names in contensou._OPTIONAL.values() for n in names]
+    assert set(optional) <= set(contensou.__all__)
+    assert all(hasattr(contensou, n) for n in contensou.__all__)
+    assert len(set(contensou.__all__)) == len(contensou.__all__)
+
+
 @pytest.mark.parametrize("part,package", [("identification", "libceres-dev"),
                                           ("gear", "libsundials-dev")])
 def test_a_part_left_out_raises_import_error_naming_the_package(monkeypatch, part, package):
