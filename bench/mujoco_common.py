@@ -22,18 +22,26 @@ GRAVITY = 9.81
 
 
 def plugin_path() -> Path:
-    """The built plugin: $CONTENSOU_MUJOCO_PLUGIN, or <build>/plugins/mujoco/ (CONTENSOU_BUILD_DIR
-    or ./build)."""
+    """The plugin: $CONTENSOU_MUJOCO_PLUGIN (another build's libcontensou_mujoco.so, e.g.
+    build/plugins/mujoco/), or the one in the installed package (contensou.mujoco)."""
     if "CONTENSOU_MUJOCO_PLUGIN" in os.environ:
         return Path(os.environ["CONTENSOU_MUJOCO_PLUGIN"])
-    build = Path(os.environ.get("CONTENSOU_BUILD_DIR", ROOT / "build"))
-    return build / "plugins" / "mujoco" / "libcontensou_mujoco.so"
+    import contensou.mujoco
+
+    return contensou.mujoco.plugin_path()
 
 
 _loaded: set[str] = set()
 
 
 def load_plugin(mujoco) -> None:
+    """Loads plugin_path() once. MuJoCo keeps one plugin per name: one process loads either
+    $CONTENSOU_MUJOCO_PLUGIN or the package's, not both."""
+    if "CONTENSOU_MUJOCO_PLUGIN" not in os.environ:
+        import contensou.mujoco
+
+        contensou.mujoco.load_plugin()
+        return
     path = plugin_path()
     if not path.exists():
         raise FileNotFoundError(f"{path} is missing: build it (scripts/setup.sh)")

@@ -2,7 +2,8 @@
 # (mujoco-core puts include/mujoco/*.h and libmujoco.so.<version> next to mujoco/__init__.py).
 #
 # Hints: MuJoCo_ROOT (a directory holding include/mujoco/mujoco.h and libmujoco.so*), or
-# MuJoCo_PYTHON (an interpreter that can `import mujoco`; default: the project's .venv).
+# MuJoCo_PYTHON (an interpreter that can find the package `mujoco`; default: the project's .venv;
+# the package is located, not imported, so that its own dependencies need not be there).
 # Result: MuJoCo_FOUND, MuJoCo_VERSION, MuJoCo_INCLUDE_DIR, MuJoCo_LIBRARY, MuJoCo_LIBRARY_DIR
 # and the imported target MuJoCo::MuJoCo.
 if(NOT MuJoCo_ROOT)
@@ -11,7 +12,8 @@ if(NOT MuJoCo_ROOT)
   endif()
   if(MuJoCo_PYTHON)
     execute_process(
-      COMMAND "${MuJoCo_PYTHON}" -c "import os, mujoco; print(os.path.dirname(mujoco.__file__))"
+      COMMAND "${MuJoCo_PYTHON}" -c
+              "import importlib.util as u; print(u.find_spec('mujoco').submodule_search_locations[0])"
       OUTPUT_VARIABLE _mujoco_dir OUTPUT_STRIP_TRAILING_WHITESPACE
       RESULT_VARIABLE _mujoco_rc ERROR_QUIET)
     if(_mujoco_rc EQUAL 0 AND IS_DIRECTORY "${_mujoco_dir}")

@@ -48,11 +48,12 @@ cmake -S . -B build -G Ninja -DCMAKE_BUILD_TYPE=Release \
 cmake --build build --parallel
 
 # The Python package in .venv: the extension (scikit-build-core, nanobind; warnings as errors
-# with CONTENSOU_WERROR=ON), linked against the libraries just built (installed into
-# build/prefix) rather than compiling them a second time.
+# with CONTENSOU_WERROR=ON) and the MuJoCo plugin (against .venv's mujoco), linked against the
+# libraries just built (installed into build/prefix) rather than compiling them a second time,
+# in build/python, kept between runs (a plain pip install builds in a temporary folder).
 cmake --install build --prefix build/prefix >/dev/null
 CONTENSOU_WERROR="${CONTENSOU_WERROR:-OFF}" .venv/bin/python -m pip install --quiet \
-  --disable-pip-version-check --no-build-isolation \
+  --disable-pip-version-check --no-build-isolation --config-settings=build-dir=build/python \
   --config-settings=cmake.define.CONTENSOU_PREBUILT_PREFIX="$PWD/build/prefix" .
 .venv/bin/python -c "import contensou; print('python: contensou', contensou.__version__, 'in .venv')"
 echo

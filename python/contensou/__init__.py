@@ -12,9 +12,16 @@ The loops run in C++ (the extension ``contensou._core``) with the GIL released.
 The friction functions take three arrays vx, vy, omega or one DataFrame (or mapping) with the
 columns vx_mps, vy_mps, omega_radps, whose result is labelled Fx_N, Fy_N, Mz_Nm
 (``FrictionTable.to_frame()``). Bad input raises ``ValueError`` with the C++ library's message.
+
+The friction part needs nothing but Eigen to build; identification (Ceres) and the gear
+(SUNDIALS) are in the package when their libraries were found at build time, and a name of a
+part left out raises ``ImportError`` naming what it needs. The MuJoCo plugin:
+``contensou.mujoco``.
 """
 
-from . import _core, _signatures
+import typing as _typing
+
+from . import _build, _core, _parts, _signatures
 from ._core import (
     ContactPatch,
     ContactStep,
@@ -45,16 +52,6 @@ from .friction import (
     fractional_resultants,
     shape_values,
 )
-from .gear import (
-    LandingConfig,
-    LandingResult,
-    MapAxis,
-    StabilityMapResult,
-    simulate_landing,
-    stability_map,
-    stability_map_native,
-)
-from .identification import IdentificationResult, LoopStep, Parameter, identify
 
 __version__: str = _core.version  # the CMake project's version
 
@@ -69,17 +66,10 @@ __all__ = [
     "ExactResults",
     "FractionalLaw",
     "FrictionTable",
-    "IdentificationResult",
-    "LandingConfig",
-    "LandingResult",
     "LimitSurface",
-    "LoopStep",
-    "MapAxis",
-    "Parameter",
     "PressureProfile",
     "Projection",
     "SlipSpeedFriction",
-    "StabilityMapResult",
     "__version__",
     "cosine_series_profile",
     "exact_law_resultants",
@@ -88,15 +78,59 @@ __all__ = [
     "fractional_law_from_patch",
     "fractional_resultants",
     "hertz_profile",
-    "identify",
     "read_profile_csv",
     "seed_tire_patch",
     "seed_tire_profile",
     "shape_values",
-    "simulate_landing",
     "smoothed_profile",
-    "stability_map",
-    "stability_map_native",
     "tabulated_profile",
     "uniform_profile",
 ]
+
+# The names of the optional parts, each from its module (literal lists in __all__ below, for
+# type checkers; tests/python/test_package.py checks that the two agree).
+_OPTIONAL = {
+    "identification": ["IdentificationResult", "LoopStep", "Parameter", "identify"],
+    "gear": [
+        "LandingConfig",
+        "LandingResult",
+        "MapAxis",
+        "StabilityMapResult",
+        "simulate_landing",
+        "stability_map",
+        "stability_map_native",
+    ],
+}
+if _typing.TYPE_CHECKING or "identification" in _build.PARTS:
+    from .identification import IdentificationResult, LoopStep, Parameter, identify
+
+    __all__ += ["IdentificationResult", "LoopStep", "Parameter", "identify"]
+if _typing.TYPE_CHECKING or "gear" in _build.PARTS:
+    from .gear import (
+        LandingConfig,
+        LandingResult,
+        MapAxis,
+        StabilityMapResult,
+        simulate_landing,
+        stability_map,
+        stability_map_native,
+    )
+
+    __all__ += [
+        "LandingConfig",
+        "LandingResult",
+        "MapAxis",
+        "StabilityMapResult",
+        "simulate_landing",
+        "stability_map",
+        "stability_map_native",
+    ]
+
+if not _typing.TYPE_CHECKING:  # for the type checker every name above exists
+
+    def __getattr__(name: str) -> _typing.Any:
+        """A name of a part the build left out: ImportError naming what that part needs."""
+        for part, names in _OPTIONAL.items():
+            if name in names:
+                raise _parts.missing(part)
+        raise AttributeError(f"module 'contensou' has no attribute {name!r}")

@@ -20,7 +20,9 @@ from typing import Any, Iterator, Mapping, NamedTuple, Optional, Sequence, Union
 
 import numpy as np
 
-from . import _core
+from . import _core, _parts
+
+_parts.require("gear")  # ImportError naming SUNDIALS when the build left it out
 
 MODELS = ("coupled", "decoupled", "von_schlippe")
 

@@ -16,7 +16,9 @@ from typing import Any, Dict, Mapping, Optional, Union
 
 import numpy as np
 
-from . import _core
+from . import _core, _parts
+
+_parts.require("identification")  # ImportError naming Ceres when the build left it out
 
 COLUMNS = ("vx_mps", "vy_mps", "omega_radps", "Fx_N", "Fy_N", "Mz_Nm", "Fz_N", "t_s")
 CHANNELS = ("Fx_N", "Fy_N", "Mz_Nm")

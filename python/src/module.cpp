@@ -30,6 +30,12 @@ NB_MODULE(_core, m) {
   contensou::python::bind_friction(m);
   contensou::python::bind_exact_law(m);
   contensou::python::bind_limit_surface(m);
+  // identification (Ceres) and gear (SUNDIALS) are in the build when their libraries' dependencies
+  // were found (python/CMakeLists.txt); contensou/_build.py lists them.
+#ifdef CONTENSOU_PYTHON_IDENTIFICATION
   contensou::python::bind_identification(m);
+#endif
+#ifdef CONTENSOU_PYTHON_GEAR
   contensou::python::bind_gear(m);
+#endif
 }

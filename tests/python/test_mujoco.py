@@ -1,6 +1,7 @@
-"""The MuJoCo plugin (plugins/mujoco) driven by the `mujoco` Python module, and the engine
-coefficient converter. Oracles: the library's own resultants at the plugin's state (through the
-Python package; for the exact law the adaptive integrator, within the law's tolerance),
+"""The MuJoCo plugin (plugins/mujoco) of the installed package (contensou.mujoco.load_plugin();
+$CONTENSOU_MUJOCO_PLUGIN loads another build's) driven by the `mujoco` Python module, and the
+engine coefficient converter. Oracles: the library's own resultants at the plugin's state
+(through the Python package; for the exact law the adaptive integrator, within the law's tolerance),
 MuJoCo's mj_applyFT for the mapping to generalised forces, the closed forms of theory.md
 section 3 (the sliding disk's fixed point 0.6530, integrated by RK4 for the stopping time),
 (2/3) f N R at pure spin, and for the set-valued law MuJoCo's dense mass matrix and Jacobian
@@ -38,7 +39,7 @@ STICK, ITERATIONS, HISTORY, STATE = 9, 10, 33, 34  # STATE: numbers a pair
 @pytest.fixture(scope="module", autouse=True)
 def plugin():
     path = mc.plugin_path()
-    assert path.exists(), f"{path} is missing: scripts/setup.sh builds it when MuJoCo is found"
+    assert path.exists(), f"{path} is missing: pip install builds it when MuJoCo is found"
     mc.load_plugin(mujoco)
 
 
