@@ -54,6 +54,7 @@ sed -e 's/\[[^]]*\]//' python/requirements.txt >"$work/constraints.txt"
 
 step "ldd and the quick starts, LD_LIBRARY_PATH empty"
 cd "$root"  # the quick starts read data/ from the root; contensou is the venv's, not python/
+export WHEEL_CHECK_REFERENCE="$work/reference.json"
 "$venv_python" - <<'EOF'
 import os
 import re
@@ -121,6 +122,16 @@ for name in ("libsundials_cvode", "libglog", "libcholmod"):
 mujocos = {m for m in after if Path(m).name.startswith("libmujoco.so")}
 assert mujocos == {str((site / "mujoco").resolve() / f"libmujoco.so.{contensou.mujoco.built_against()}")}, mujocos
 print(f"quick starts ran with {len(bundled)} bundled libraries and mujoco's libmujoco")
+
+# The full package's numbers, which the friction-only build below must repeat.
+import json
+
+patch = contensou.seed_tire_patch()
+exact = contensou.exact_resultants(contensou.ExactModel(patch), 0.5, 0.0, 10.0, tolerance=1e-10)
+law = contensou.fractional_law_from_patch(patch)
+reference = {"exact": [float(v) for v in exact.resultants],
+             "fractional": [float(v) for v in contensou.fractional_resultants(law, 0.5, 0.0, 10.0)]}
+Path(os.environ["WHEEL_CHECK_REFERENCE"]).write_text(json.dumps(reference))
 EOF
 
 step "friction only, from a read-only copy of the tree"
@@ -149,19 +160,24 @@ echo "read-only copy: $before files, unchanged by pip install"
 
 step "friction only: the package without identification and gear"
 "$venv_python" - <<'EOF'
+import json
+import os
+
 import numpy as np
 
 import contensou as c
 
 assert c._build.PARTS == ("friction",), c._build.PARTS
+# The same numbers as the full package's (the same library, built without the other parts).
+reference = json.load(open(os.environ["WHEEL_CHECK_REFERENCE"]))
 patch = c.seed_tire_patch()
 r = c.exact_resultants(c.ExactModel(patch), 0.5, 0.0, 10.0, tolerance=1e-10)
-assert abs(r.resultants[0] - -810.100) < 1e-3, r.resultants
+assert np.allclose(r.resultants, reference["exact"], rtol=1e-14, atol=0), (r.resultants, reference)
 law = c.ExactLaw(patch)
 E = c.exact_law_resultants(law, 0.5, 0.0, 10.0)
 assert np.allclose(E, r.resultants, rtol=0, atol=1e-6 * 1360), (E, r.resultants)
 F = c.fractional_resultants(c.fractional_law_from_patch(patch), 0.5, 0.0, 10.0)
-assert abs(F[0] - -670.504) < 1e-3, F
+assert np.allclose(F, reference["fractional"], rtol=1e-14, atol=0), (F, reference)
 assert c.LimitSurface(patch).project([2000.0, 0.0, 10.0], np.eye(3)).converged
 from contensou.engines import engine_coefficients
 
