@@ -149,16 +149,21 @@ std::vector<std::string> scenarios_to_run(const Options& o) {
   return names;
 }
 
+// The config step: the named gear, then the file (--config), then --set.
+ShimmyConfig configuration(const Options& o) {
+  ShimmyConfig config;
+  config.gear_name = o.gear;
+  config.gear = gear_config_by_name(o.gear);
+  if (!o.config_path.empty()) config = read_shimmy_config(o.config_path, o.gear);
+  return apply_overrides(config, o.overrides);
+}
+
 int run(const Options& o) {
   if (o.print_keys) {
     std::cout << config_keys_markdown();
     return 0;
   }
-  ShimmyConfig config;
-  config.gear_name = o.gear;
-  config.gear = gear_config_by_name(o.gear);
-  if (!o.config_path.empty()) config = read_shimmy_config(o.config_path, o.gear);
-  config = apply_overrides(config, o.overrides);
+  const ShimmyConfig config = configuration(o);
   if (o.print_config) {
     std::cout << to_json(config).dump(2) << '\n';
     return 0;
