@@ -72,7 +72,7 @@ int print_and_write(const FitArgs& a, const Identification& run, const ReportInp
   if (!run.loop) {
     std::printf("%s %s: fractional law (seed eqs. 5-7)\n%s", kName, kVersion,
                 fit_report_text(info, run.fit).c_str());
-    if (!a.plots_dir.empty() && app::write_plots(a.plots_dir, data, run.fit, a.request.radius_m))
+    if (!a.plots_dir.empty() && app::write_plots(a.plots_dir, data, run.fit))
       std::printf("pictures: %s/fit_*.png\n", a.plots_dir.c_str());
     if (!a.json_path.empty()) {
       write_file_atomically(a.json_path, fit_report_json(info, run.fit) + "\n");
@@ -83,8 +83,8 @@ int print_and_write(const FitArgs& a, const Identification& run, const ReportInp
   const ClosedLoopReport& loop = *run.loop;
   std::printf("%s %s\n%s", kName, kVersion, loop_report_text(info, loop).c_str());
   if (!a.plots_dir.empty()) {
-    const bool p = app::write_plots(a.plots_dir, data, loop.final_fit, a.request.radius_m);
-    const bool q = app::write_loop_plots(a.plots_dir, data, loop, a.request.radius_m);
+    const bool p = app::write_plots(a.plots_dir, data, loop.final_fit);
+    const bool q = app::write_loop_plots(a.plots_dir, data, loop);
     if (p && q)
       std::printf("pictures: %s/fit_*.png (final model), %s/loop_step_*.png\n", a.plots_dir.c_str(),
                   a.plots_dir.c_str());

@@ -41,9 +41,9 @@ const char* const kAxisLabel[kChannels] = {"Fx [N]", "Fy [N]", "Mz [N m]"};
 }  // namespace
 
 bool write_loop_plots(const std::string& dir, const MeasuredData& data,
-                      const ClosedLoopReport& loop, double radius_m) {
+                      const ClosedLoopReport& loop) {
   std::filesystem::create_directories(dir);
-  const std::vector<double> psi = sliding_spin_ratio(data, radius_m);
+  const std::vector<double>& psi = loop.final_fit.psi;  // every fit of the loop has the same data
   const std::vector<std::size_t> order = points_by_psi(psi);
   std::string gp =
       "set terminal pngcairo size 900,900 font ',10'\nset datafile separator ','\n"
@@ -57,11 +57,8 @@ bool write_loop_plots(const std::string& dir, const MeasuredData& data,
     text += "\n";
     for (std::size_t i : order) {
       text += fmt("%.10g", psi[i]);
-      for (int c = 0; c < kChannels; ++c) {
-        const std::optional<double>& y = data.points[i].force[c];
-        text += "," + cell(y ? std::optional(*y - st.fit_before.prediction[i].vector()(c)) : y) +
-                "," + cell(y ? std::optional(*y - st.fit_after.prediction[i].vector()(c)) : y);
-      }
+      for (int c = 0; c < kChannels; ++c)
+        text += "," + cell(st.fit_before.residual[i][c]) + "," + cell(st.fit_after.residual[i][c]);
       text += "\n";
     }
     write_file_atomically(dir + "/" + csv, text);
@@ -89,10 +86,9 @@ bool write_loop_plots(const std::string& dir, const MeasuredData& data,
   return run_gnuplot(dir, "loop", gp);
 }
 
-bool write_plots(const std::string& dir, const MeasuredData& data, const FitReport& fit,
-                 double radius_m) {
+bool write_plots(const std::string& dir, const MeasuredData& data, const FitReport& fit) {
   std::filesystem::create_directories(dir);
-  const std::vector<double> psi = sliding_spin_ratio(data, radius_m);
+  const std::vector<double>& psi = fit.psi;
   const std::vector<Resultants<double>>& model = fit.prediction;
   std::string csv = "psi,upsilon";  // then measured, fitted and residual, per channel
   for (int c = 0; c < kChannels; ++c)
@@ -101,11 +97,9 @@ bool write_plots(const std::string& dir, const MeasuredData& data, const FitRepo
   csv += "\n";
   for (std::size_t i : points_by_psi(psi)) {
     csv += fmt("%.10g", psi[i]) + "," + fmt("%.10g", 1.0 / psi[i]);
-    for (int c = 0; c < kChannels; ++c) {
-      const std::optional<double>& y = data.points[i].force[c];
-      const double m = model[i].vector()(c);
-      csv += "," + cell(y) + "," + fmt("%.10g", m) + "," + cell(y ? std::optional(*y - m) : y);
-    }
+    for (int c = 0; c < kChannels; ++c)
+      csv += "," + cell(data.points[i].force[c]) + "," + fmt("%.10g", model[i].vector()(c)) + "," +
+             cell(fit.residual[i][c]);
     csv += "\n";
   }
   write_file_atomically(dir + "/fit.csv", csv);

@@ -64,57 +64,78 @@ const MapCell* central_cell(const StabilityMap& m, Inside inside) {
   return best;
 }
 
-// One overlay: the boundaries of the maps `group` (indices into maps) and their labels.
-nlohmann::json write_overlay(const std::string& dir, const std::vector<StabilityMap>& maps,
-                             const std::vector<std::string>& bases, const std::vector<int>& group,
-                             const std::function<GearModel(ContactModel)>& model_of) {
-  const StabilityMap& first = maps[static_cast<std::size_t>(group.front())];
+// The region where every model of the group is stable.
+struct AllStable {
+  const std::vector<ComputedMap>* maps;
+  const StabilityMap* first;
+  const std::vector<int>* group;
+  bool operator()(const MapCell& c) const {
+    const std::size_t i = static_cast<std::size_t>(&c - first->cells.data());
+    for (int g : *group) {
+      const MapCell& d = (*maps)[static_cast<std::size_t>(g)].map.cells[i];
+      if (!d.valid || d.shimmy) return false;
+    }
+    return true;
+  }
+};
+
+Overlay analyse_overlay(const std::vector<ComputedMap>& maps, const std::vector<int>& group,
+                        const std::function<GearModel(ContactModel)>& model_of) {
+  Overlay o;
+  for (int g : group) {
+    const StabilityMap& m = maps[static_cast<std::size_t>(g)].map;
+    OverlayModel om;
+    om.map = g;
+    om.unstable = std::count_if(m.cells.begin(), m.cells.end(),
+                                [](const MapCell& c) { return c.valid && c.shimmy; });
+    om.label_cell = central_cell(m, [](const MapCell& cell) { return cell.valid && cell.shimmy; });
+    if (om.label_cell) {
+      GearModel model = model_of(m.contact);
+      *gear_parameter(model.config, m.x.parameter) = om.label_cell->x;
+      *gear_parameter(model.config, m.y.parameter) = om.label_cell->y;
+      om.source = feeding_source(model, m.phase);
+    }
+    o.models.push_back(om);
+  }
+  const StabilityMap& first = maps[static_cast<std::size_t>(group.front())].map;
+  o.stable_cell = central_cell(first, AllStable{&maps, &first, &group});
+  return o;
+}
+
+// One overlay: the boundaries of its maps and their labels.
+nlohmann::json write_overlay(const std::string& dir, const std::vector<ComputedMap>& maps,
+                             const std::vector<std::string>& bases, const Overlay& overlay) {
+  const StabilityMap& first = maps[static_cast<std::size_t>(overlay.models.front().map)].map;
   const std::string name = "overlay_" + short_name(first.x.parameter) + "_" +
                            short_name(first.y.parameter) + "_" + to_string(first.phase);
   std::ostringstream gp, labels, plots;
   gp.precision(10);
   nlohmann::json summary{{"png", name + ".png"}, {"phase", to_string(first.phase)}};
-  for (std::size_t k = 0; k < group.size(); ++k) {
-    const StabilityMap& m = maps[static_cast<std::size_t>(group[k])];
+  for (std::size_t k = 0; k < overlay.models.size(); ++k) {
+    const OverlayModel& om = overlay.models[k];
+    const StabilityMap& m = maps[static_cast<std::size_t>(om.map)].map;
     const std::string colour = kColours[k % 4];
-    const long unstable = std::count_if(m.cells.begin(), m.cells.end(),
-                                        [](const MapCell& c) { return c.valid && c.shimmy; });
-    std::string source;
-    if (const MapCell* c =
-            central_cell(m, [](const MapCell& cell) { return cell.valid && cell.shimmy; })) {
-      GearModel model = model_of(m.contact);
-      *gear_parameter(model.config, m.x.parameter) = c->x;
-      *gear_parameter(model.config, m.y.parameter) = c->y;
-      source = feeding_source(model, m.phase);
+    if (const MapCell* c = om.label_cell)
       labels << "set label " << k + 1 << " \"" << to_string(m.contact)
-             << " unstable: " << (source.empty() ? "?" : source) << "\" at " << c->x << "," << c->y
-             << " front center tc rgb '" << colour << "' offset 0,0.8 point pt 7 ps 1 lc rgb '"
-             << colour << "'\n";
-    }
+             << " unstable: " << (om.source.empty() ? "?" : om.source) << "\" at " << c->x << ","
+             << c->y << " front center tc rgb '" << colour
+             << "' offset 0,0.8 point pt 7 ps 1 lc rgb '" << colour << "'\n";
     // A model without a boundary has no points to plot: its key entry comes from NaN.
     plots << (k ? ", " : "");
-    if (unstable > 0)
-      plots << "'" << bases[static_cast<std::size_t>(group[k])] << "_boundary.csv' using \""
+    if (om.unstable > 0)
+      plots << "'" << bases[static_cast<std::size_t>(om.map)] << "_boundary.csv' using \""
             << m.x.parameter << "\":\"" << m.y.parameter << "\"";
     else
       plots << "NaN";
     plots << " with points pt 7 ps 0.5 lc rgb '" << colour << "' title '" << to_string(m.contact)
-          << ": unstable in " << unstable << " of " << m.cells.size() << " cells'";
+          << ": unstable in " << om.unstable << " of " << m.cells.size() << " cells'";
     summary["models"][to_string(m.contact)] = {
-        {"unstable_cells", unstable}, {"cells", m.cells.size()}, {"fed_by", source}};
+        {"unstable_cells", om.unstable}, {"cells", m.cells.size()}, {"fed_by", om.source}};
   }
   // The region where every model is stable, labelled at its centre.
-  const auto all_stable = [&](const MapCell& c) {
-    const std::size_t i = static_cast<std::size_t>(&c - first.cells.data());
-    for (int g : group) {
-      const MapCell& d = maps[static_cast<std::size_t>(g)].cells[i];
-      if (!d.valid || d.shimmy) return false;
-    }
-    return true;
-  };
-  if (const MapCell* c = central_cell(first, all_stable))
-    labels << "set label " << group.size() + 1 << " \"stable in every model\" at " << c->x << ","
-           << c->y << " center front\n";
+  if (const MapCell* c = overlay.stable_cell)
+    labels << "set label " << overlay.models.size() + 1 << " \"stable in every model\" at " << c->x
+           << "," << c->y << " center front\n";
   gp << "set terminal pngcairo noenhanced size 820,680 font ',10'\nset output '" << name
      << ".png'\nset datafile separator ','\nset datafile columnheaders\n"
      << "set title \"stability boundaries, " << to_string(first.phase)
@@ -131,18 +152,26 @@ nlohmann::json write_overlay(const std::string& dir, const std::vector<Stability
 
 }  // namespace
 
-nlohmann::json write_boundary_overlays(const std::string& dir,
-                                       const std::vector<StabilityMap>& maps,
-                                       const std::vector<std::string>& bases,
-                                       const std::function<GearModel(ContactModel)>& model_of) {
+std::vector<Overlay> analyse_overlays(const std::vector<ComputedMap>& maps,
+                                      const std::function<GearModel(ContactModel)>& model_of) {
   std::map<std::string, std::vector<int>> groups;
-  for (std::size_t i = 0; i < maps.size(); ++i)
-    if (maps[i].linear)
-      groups[maps[i].x.parameter + "|" + maps[i].y.parameter + "|" + to_string(maps[i].phase)]
-          .push_back(static_cast<int>(i));
-  nlohmann::json out = nlohmann::json::array();
+  for (std::size_t i = 0; i < maps.size(); ++i) {
+    const StabilityMap& m = maps[i].map;
+    if (m.linear)
+      groups[m.x.parameter + "|" + m.y.parameter + "|" + to_string(m.phase)].push_back(
+          static_cast<int>(i));
+  }
+  std::vector<Overlay> out;
   for (const auto& [key, group] : groups)
-    if (group.size() >= 2) out.push_back(write_overlay(dir, maps, bases, group, model_of));
+    if (group.size() >= 2) out.push_back(analyse_overlay(maps, group, model_of));
+  return out;
+}
+
+nlohmann::json write_boundary_overlays(const std::string& dir, const std::vector<ComputedMap>& maps,
+                                       const std::vector<std::string>& bases,
+                                       const std::vector<Overlay>& overlays) {
+  nlohmann::json out = nlohmann::json::array();
+  for (const Overlay& o : overlays) out.push_back(write_overlay(dir, maps, bases, o));
   return out;
 }
 

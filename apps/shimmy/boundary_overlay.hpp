@@ -10,6 +10,7 @@
 
 #include "contensou/gear/landing_gear.hpp"
 #include "contensou/gear/stability_map.hpp"
+#include "simulate.hpp"
 
 namespace contensou::app {
 
@@ -18,13 +19,30 @@ namespace contensou::app {
 // "fore-aft (gear walk)" or "" if nothing does.
 std::string feeding_source(const GearModel& model, StabilityPhase phase);
 
-// For each group of eigenvalue maps in `maps` with the same axes and phase and at least two
-// models, writes overlay_<x>_<y>_<phase>.png (and .gp) in `dir`, reading the maps' boundary
-// CSVs (base names in `bases`, parallel to `maps`); `model_of(contact)` gives the model whose
-// parameters the maps varied. Returns a summary per overlay.
-nlohmann::json write_boundary_overlays(const std::string& dir,
-                                       const std::vector<StabilityMap>& maps,
+// One overlay: the eigenvalue maps of several models with the same axes and phase. For each,
+// its unstable cells, the unstable cell nearest the region's centre (nullptr if none) and what
+// feeds the mode there; and the cell nearest the centre of the region stable in every model.
+struct OverlayModel {
+  int map = 0;  // index into the maps
+  long unstable = 0;
+  const MapCell* label_cell = nullptr;
+  std::string source;  // feeding_source at label_cell ("" if none)
+};
+struct Overlay {
+  std::vector<OverlayModel> models;
+  const MapCell* stable_cell = nullptr;
+};
+
+// Groups the eigenvalue maps in `maps` by axes and phase (groups of at least two models) and
+// analyses each group; `model_of(contact)` gives the model whose parameters the maps varied.
+// The overlays point into `maps`.
+std::vector<Overlay> analyse_overlays(const std::vector<ComputedMap>& maps,
+                                      const std::function<GearModel(ContactModel)>& model_of);
+
+// Writes overlay_<x>_<y>_<phase>.png (and .gp) in `dir` for each overlay, reading the maps'
+// boundary CSVs (base names in `bases`, parallel to `maps`). Returns a summary per overlay.
+nlohmann::json write_boundary_overlays(const std::string& dir, const std::vector<ComputedMap>& maps,
                                        const std::vector<std::string>& bases,
-                                       const std::function<GearModel(ContactModel)>& model_of);
+                                       const std::vector<Overlay>& overlays);
 
 }  // namespace contensou::app

@@ -12,6 +12,7 @@
 #include "contensou/identification/lab_columns.hpp"
 #include "contensou/identification/measured_data.hpp"
 #include "contensou/identification/outliers.hpp"
+#include "contensou/identification/profile_choice.hpp"
 #include "contensou/identification/report.hpp"
 #include "contensou/identification/report_text.hpp"
 #include "contensou/identification/simulation.hpp"

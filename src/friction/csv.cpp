@@ -165,11 +165,11 @@ std::optional<double> CsvTable::number(const CsvRow& row, int col) const {
   return v;
 }
 
-std::string CsvTable::closest_column(const std::string& name,
-                                     const std::vector<std::string>& exclude) const {
+std::string closest_name(const std::vector<std::string>& names, const std::string& name,
+                         const std::vector<std::string>& exclude) {
   std::string best;
   std::size_t best_d = 3;
-  for (const std::string& h : header) {
+  for (const std::string& h : names) {
     if (h.empty() || h == name || std::find(exclude.begin(), exclude.end(), h) != exclude.end())
       continue;
     const std::size_t d =
@@ -180,6 +180,11 @@ std::string CsvTable::closest_column(const std::string& name,
     }
   }
   return best;
+}
+
+std::string CsvTable::closest_column(const std::string& name,
+                                     const std::vector<std::string>& exclude) const {
+  return closest_name(header, name, exclude);
 }
 
 CsvTable parse_csv(const std::string& text_in, const std::string& name) {

@@ -1,7 +1,5 @@
 #include "contensou/identification/closed_loop.hpp"
 
-#include "contensou/identification/report_text.hpp"
-
 #include <Eigen/QR>
 #include <algorithm>
 #include <cmath>
@@ -236,7 +234,7 @@ std::vector<CandidateScore> score_candidates(const MeasuredData& data, const Loo
                                              std::vector<Eigen::VectorXd>* directions) {
   ModelSpec scoring = st.spec;
   if (!st.spec.uses_exact()) scoring.free[kShapeBlend] = true;
-  const NoiseScales scales = noise_scales_of(st.fit);
+  const NoiseScales scales = st.fit.noise_scales();
   build_laws(scoring, noise.stop);
   Eigen::VectorXd r;
   Eigen::MatrixXd J;
@@ -311,7 +309,7 @@ LoopStep test_extension(const MeasuredData& data, const LoopState& cur, const Lo
   trial.threshold = threshold;
   trial.bic_before = cur.fit.bic;
   trial.bic_after = ext.fit.bic;
-  const NoiseScales scales = noise_scales_of(cur.fit);
+  const NoiseScales scales = cur.fit.noise_scales();
   trial.cv_before = cv_error(data, cur.spec, cur.theta, scales, loop.folds);
   trial.cv_after = cv_error(data, ext.spec, ext.theta, scales, loop.folds);
   const bool lr_ok = trial.lr_p_value < trial.threshold;
@@ -454,6 +452,14 @@ std::string step_label(int step) {
 }
 
 }  // namespace
+
+bool step_fit_failed(const LoopStep& st) {
+  // The noise step reweights the values: its unweighted error may rise.
+  if (st.effect == kNoiseGrowthEffect) return false;
+  // The extended model contains the one before it, so at its optimum the error cannot be
+  // larger; a relative 1e-6 allows for the solvers' tolerances.
+  return st.error_after > st.error_before * (1.0 + 1e-6) + 1e-12;
+}
 
 // The loop of the header: base fit; then per step score, rank, fit and test the candidates
 // (of those that pass, the lowest BIC is accepted; close alternatives are named); then prune.

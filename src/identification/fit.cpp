@@ -338,7 +338,7 @@ const char* noise_model_name(NoiseModel model) {
 }
 
 NoiseScales noise_scales_of(const FitReport& fit) {
-  return {fit.noise_model, fit.noise_scale, fit.noise_slope};
+  return fit.noise_scales();
 }
 
 const ParameterEstimate* FitReport::parameter(const std::string& name) const {
@@ -356,8 +356,11 @@ std::vector<Resultants<double>> predict(const FractionalLaw<double>& law,
   return out;
 }
 
+// The sliding-spin ratio psi = |v| / u with v = (vx, vy) and u = |omega| R (seed eqs. 12-13;
+// theory.md sections 1 and 4); infinity for pure sliding (u = 0).
 std::vector<double> sliding_spin_ratio(const MeasuredData& data, double radius_m) {
   std::vector<double> psi;
+  psi.reserve(data.points.size());
   for (const MeasuredPoint& p : data.points) {
     const double v = std::hypot(p.kinematics.vx, p.kinematics.vy);
     const double u = std::abs(p.kinematics.omega) * radius_m;
@@ -923,6 +926,12 @@ void report_quality(const FitSetup& s, const Solution& sol, FitReport& report) {
       sub_pred.push_back(sol.prediction[i]);
     }
   report.prediction = sol.prediction;
+  report.psi = sliding_spin_ratio(s.data, s.spec.radius_m);
+  report.residual.resize(s.data.points.size());
+  for (std::size_t i = 0; i < s.data.points.size(); ++i)
+    for (int c = 0; c < kChannels; ++c)
+      if (const std::optional<double>& y = s.data.points[i].force[c])
+        report.residual[i][c] = *y - sol.prediction[i].vector()(c);
   report.noise_model = s.noise.model;
   report.noise_scale = sol.scale;
   report.noise_slope = sol.slope;
@@ -938,7 +947,7 @@ void report_quality(const FitSetup& s, const Solution& sol, FitReport& report) {
     for (int c = 0; c < kChannels; ++c) {
       if (!s.data.points[i].force[c]) continue;
       const double sc =
-          value_scale(noise_scales_of(report), c, sol.prediction[i].vector()(c), s.floor_rel[c]);
+          value_scale(report.noise_scales(), c, sol.prediction[i].vector()(c), s.floor_rel[c]);
       log_det += std::log(2.0 * std::numbers::pi * sc * sc);
     }
   }

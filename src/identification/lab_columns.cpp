@@ -7,6 +7,7 @@
 #include <cstdlib>
 #include <stdexcept>
 
+#include "contensou/friction/csv.hpp"
 #include "contensou/friction/error.hpp"
 
 namespace contensou {
@@ -262,6 +263,72 @@ std::string format_factor(double x) {
   return buf;
 }
 
+const std::vector<std::string> kKnownColumns = {"vx_mps", "vy_mps", "omega_radps", "Fx_N",
+                                                "Fy_N",   "Mz_Nm",  "Fz_N",        "t_s"};
+
+// " (did you mean 'x'?)" for the header's cell closest to name, or "".
+std::string did_you_mean(const LabHeader& in, const std::string& name) {
+  const std::string close = closest_name(in.header, name, kKnownColumns);
+  return close.empty() ? "" : " (did you mean '" + close + "'?)";
+}
+
+bool header_looks_like_data(const LabHeader& in) {
+  return std::all_of(in.header.begin(), in.header.end(), [](const std::string& h) {
+    char* end = nullptr;
+    std::strtod(h.c_str(), &end);
+    return !h.empty() && *end == '\0';
+  });
+}
+
+// The index of the header cell `name`; ParseError if two cells have it (as CsvTable::column).
+int header_index(const LabHeader& in, const std::string& name) {
+  int found = -1;
+  for (std::size_t i = 0; i < in.header.size(); ++i) {
+    if (in.header[i] != name) continue;
+    if (found >= 0)
+      throw ParseError(in.file, in.header_line, static_cast<int>(i + 1),
+                       "duplicate column '" + name + "' (columns " + std::to_string(found + 1) +
+                           " and " + std::to_string(i + 1) + ")");
+    found = static_cast<int>(i);
+  }
+  return found;
+}
+
+// A column of the file that is not read but looks like a misspelt known column (or the same
+// quantity in another unit) while that column is absent: the data would be silently lost.
+void refuse_near_misses(const LabHeader& in, const LabColumns& cols) {
+  std::vector<std::string> read = kKnownColumns;  // not suggested: the columns read anyway
+  for (const LabColumn& c : cols.column)
+    if (c.present()) read.push_back(in.header[static_cast<std::size_t>(c.index)]);
+  for (int q = 0; q < kMeasuredQuantities; ++q) {
+    if (cols.column[q].present()) continue;
+    const std::string k = kQuantities[q].si_column;
+    const std::string close = closest_name(in.header, k, read);
+    if (close.empty()) continue;
+    const int col = header_index(in, close);
+    throw ParseError(in.file, in.header_line, 0,
+                     "column '" + close + "' (" + std::to_string(col + 1) +
+                         ") is not a column this reader knows: did you mean '" + k +
+                         "'? (columns: vx_mps, vy_mps, omega_radps, Fx_N, Fy_N, Mz_Nm, Fz_N, t_s, "
+                         "or the same with a unit: 'vx [km/h]', omega_rpm; or map it: " +
+                         rename_option(kQuantities[q].name, "NAME", in.style) + ")");
+  }
+}
+
+// A missing required column, a near miss, no channel: refused naming the header line.
+void require_columns(const LabHeader& in, const LabColumns& cols) {
+  for (MeasuredQuantity q : {MeasuredQuantity::vx, MeasuredQuantity::vy, MeasuredQuantity::omega})
+    if (!cols[q].present())
+      throw ParseError(in.file, in.header_line, 0,
+                       std::string("missing required column '") + si_column_name(q) + "'" +
+                           did_you_mean(in, si_column_name(q)) + " (or give its name: " +
+                           rename_option(quantity_name(q), "NAME", in.style) + ")");
+  refuse_near_misses(in, cols);
+  if (!cols[MeasuredQuantity::Fx].present() && !cols[MeasuredQuantity::Fy].present() &&
+      !cols[MeasuredQuantity::Mz].present())
+    throw ParseError(in.file, in.header_line, 0, "no measured channel (need Fx_N, Fy_N or Mz_Nm)");
+}
+
 }  // namespace
 
 const char* quantity_name(MeasuredQuantity q) {
@@ -346,6 +413,16 @@ LabColumns resolve_lab_columns(const LabHeader& in, const ColumnRenames& renames
   out.units_row = first_row_holds_units(out, in);
   if (out.units_row) apply_units_row(out, in);
   return out;
+}
+
+LabColumns resolve_measured_columns(const LabHeader& in, const ColumnRenames& renames) {
+  if (header_looks_like_data(in))
+    throw ParseError(in.file, in.header_line, 0,
+                     "the first row holds numbers, not column names: the file needs a header row "
+                     "(vx_mps,vy_mps,omega_radps and at least one of Fx_N,Fy_N,Mz_Nm)");
+  const LabColumns cols = resolve_lab_columns(in, renames);
+  require_columns(in, cols);
+  return cols;
 }
 
 }  // namespace contensou

@@ -21,63 +21,6 @@ int MeasuredData::count(int channel) const {
 
 namespace {
 
-const std::vector<std::string> kKnownColumns = {"vx_mps", "vy_mps", "omega_radps", "Fx_N",
-                                                "Fy_N",   "Mz_Nm",  "Fz_N",        "t_s"};
-
-// " (did you mean 'x'?)" for the header's column closest to name, or "".
-std::string did_you_mean(const CsvTable& t, const std::string& name) {
-  const std::string close = t.closest_column(name, kKnownColumns);
-  return close.empty() ? "" : " (did you mean '" + close + "'?)";
-}
-
-bool header_looks_like_data(const CsvTable& t) {
-  return std::all_of(t.header.begin(), t.header.end(), [](const std::string& h) {
-    char* end = nullptr;
-    std::strtod(h.c_str(), &end);
-    return !h.empty() && *end == '\0';
-  });
-}
-
-// A column of the file that is not read but looks like a misspelt known column (or the same
-// quantity in another unit) while that column is absent: the data would be silently lost.
-void refuse_near_misses(const CsvTable& t, const LabColumns& cols, KeyStyle style) {
-  std::vector<std::string> read = kKnownColumns;  // not suggested: the columns read anyway
-  for (const LabColumn& c : cols.column)
-    if (c.present()) read.push_back(t.header[static_cast<std::size_t>(c.index)]);
-  for (int q = 0; q < kMeasuredQuantities; ++q) {
-    if (cols.column[q].present()) continue;
-    const std::string k = si_column_name(static_cast<MeasuredQuantity>(q));
-    const std::string close = t.closest_column(k, read);
-    if (close.empty()) continue;
-    const int col = t.column(close);
-    throw ParseError(
-        t.file, t.header_line, 0,
-        "column '" + close + "' (" + std::to_string(col + 1) +
-            ") is not a column this reader knows: did you mean '" + k +
-            "'? (columns: vx_mps, vy_mps, omega_radps, Fx_N, Fy_N, Mz_Nm, Fz_N, t_s, "
-            "or the same with a unit: 'vx [km/h]', omega_rpm; or map it: " +
-            rename_option(quantity_name(static_cast<MeasuredQuantity>(q)), "NAME", style) + ")");
-  }
-}
-
-}  // namespace
-
-namespace {
-
-// A missing required column, a near miss, no channel: refused naming the header line.
-void require_columns(const CsvTable& t, const LabColumns& cols, KeyStyle style) {
-  for (MeasuredQuantity q : {MeasuredQuantity::vx, MeasuredQuantity::vy, MeasuredQuantity::omega})
-    if (!cols[q].present())
-      throw ParseError(t.file, t.header_line, 0,
-                       std::string("missing required column '") + si_column_name(q) + "'" +
-                           did_you_mean(t, si_column_name(q)) + " (or give its name: " +
-                           rename_option(quantity_name(q), "NAME", style) + ")");
-  refuse_near_misses(t, cols, style);
-  if (!cols[MeasuredQuantity::Fx].present() && !cols[MeasuredQuantity::Fy].present() &&
-      !cols[MeasuredQuantity::Mz].present())
-    throw ParseError(t.file, t.header_line, 0, "no measured channel (need Fx_N, Fy_N or Mz_Nm)");
-}
-
 // A cell of a column in SI (nullopt when empty or the column is absent).
 std::optional<double> si_value(const CsvTable& t, const CsvRow& row, const LabColumn& c) {
   if (!c.present()) return std::nullopt;
@@ -93,14 +36,11 @@ std::optional<double> si_value(const CsvTable& t, const CsvRow& row, const LabCo
 
 MeasuredData measured_data_from_table(const CsvTable& t, const ColumnRenames& renames,
                                       KeyStyle style) {
-  if (header_looks_like_data(t))
-    throw ParseError(t.file, t.header_line, 0,
-                     "the first row holds numbers, not column names: the file needs a header row "
-                     "(vx_mps,vy_mps,omega_radps and at least one of Fx_N,Fy_N,Mz_Nm)");
+  // Every check of the header (names, units, renames, required and misspelt columns) is
+  // lab_columns'; the table is read here only for its cells' numbers.
   const LabHeader header{t.header,      t.rows.empty() ? nullptr : &t.rows.front().cells, t.file,
                          t.header_line, t.rows.empty() ? 0 : t.rows.front().line,         style};
-  const LabColumns cols = resolve_lab_columns(header, renames);
-  require_columns(t, cols, style);
+  const LabColumns cols = resolve_measured_columns(header, renames);
   MeasuredData data;
   data.source = t.file;
   data.column_notes = cols.notes();

@@ -248,14 +248,6 @@ std::vector<std::string> fit_warnings(const FitReport& fit) {
   return w;
 }
 
-bool step_fit_failed(const LoopStep& st) {
-  // The noise step reweights the values: its unweighted error may rise.
-  if (st.effect == kNoiseGrowthEffect) return false;
-  // The extended model contains the one before it, so at its optimum the error cannot be
-  // larger; a relative 1e-6 allows for the solvers' tolerances.
-  return st.error_after > st.error_before * (1.0 + 1e-6) + 1e-12;
-}
-
 std::string fit_report_text(const ReportInput& input, const FitReport& fit) {
   std::string s = input_text(input) + parameters_text(fit) + channels_text(fit);
   s += "\nfit: chi2 = " + fmt("%.4g", fit.chi2) + " on " + std::to_string(fit.degrees_of_freedom) +

@@ -122,6 +122,11 @@ TEST(Csv, SuggestsTheClosestColumn) {
   EXPECT_EQ(t.closest_column("omega_radps"), "omega_rpm");  // same quantity, other unit
   EXPECT_EQ(t.closest_column("Fx_N"), "Fx_n");
   EXPECT_EQ(t.closest_column("Mz_Nm"), "");
+  // The table's suggestion is closest_name over its header (the measured-data reader's checks
+  // call closest_name on the header cells directly).
+  EXPECT_EQ(closest_name(t.header, "omega_radps"), "omega_rpm");
+  EXPECT_EQ(closest_name(t.header, "omega_radps", {"omega_rpm"}), "");  // excluded
+  EXPECT_EQ(closest_name({}, "Fx_N"), "");
 }
 
 TEST(Csv, MissingFileIsAnError) {

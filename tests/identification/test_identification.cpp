@@ -2,7 +2,9 @@
 
 #include "seed_tire_law.hpp"
 
+#include <cmath>
 #include <fstream>
+#include <optional>
 #include <random>
 
 #include "contensou/friction/error.hpp"
@@ -285,4 +287,39 @@ TEST(MeasuredData, RoundTripAndErrors) {
   EXPECT_EQ(error_line("vx_mps,vy_mps,omega_radps,Fx_N\n1,,3,4\n"), std::pair(2, 2));
   EXPECT_EQ(error_line("vx_mps,vy_mps,omega_radps,Fx_N\n1,2,3,4\n1,2,3,inf\n"), std::pair(3, 4));
   EXPECT_EQ(error_line("vx_mps,vy_mps,omega_radps,Fx_N,Fz_N\n1,2,3,4,-1\n").first, 2);
+}
+
+// The fit's result carries what a report reads, per data point: psi = |v| / (|omega| R)
+// (infinity for pure sliding) and the residual y - yhat of each measured channel.
+TEST(Identification, ResultCarriesPsiAndResidualsPerPoint) {
+  const FractionalLaw<double> law = tire_truth();
+  DiagramSpec s;
+  s.radius_m = law.radius;
+  s.noise_level = 0.01;
+  MeasuredData d = simulate_diagrams(law, s);
+  d.points[3].force[1].reset();  // Fy not measured there
+  MeasuredPoint slide = d.points[5];
+  slide.kinematics.omega = 0.0;  // pure sliding
+  d.points.push_back(slide);
+  const FitReport r = fit_fractional_law(d, tire_options(NoiseModel::additive));
+  ASSERT_EQ(r.psi.size(), d.points.size());
+  ASSERT_EQ(r.residual.size(), d.points.size());
+  EXPECT_EQ(r.psi, sliding_spin_ratio(d, law.radius));
+  for (std::size_t i = 0; i < d.points.size(); ++i) {
+    const Kinematics<double>& k = d.points[i].kinematics;
+    if (k.omega == 0.0) {
+      EXPECT_TRUE(std::isinf(r.psi[i]));
+    } else {
+      EXPECT_NEAR(r.psi[i], std::hypot(k.vx, k.vy) / (std::abs(k.omega) * law.radius),
+                  1e-15 * r.psi[i]);
+    }
+    for (int c = 0; c < kChannels; ++c) {
+      const std::optional<double>& y = d.points[i].force[c];
+      ASSERT_EQ(r.residual[i][c].has_value(), y.has_value()) << i << " " << c;
+      if (y) {
+        EXPECT_EQ(*r.residual[i][c], *y - r.prediction[i].vector()(c));
+      }
+    }
+  }
+  EXPECT_FALSE(r.residual[3][1].has_value());
 }

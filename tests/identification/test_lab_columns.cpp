@@ -202,3 +202,33 @@ TEST(LabColumns, TheLoadComesFromTheFzColumnInAnyUnit) {
   const std::string bad = error_of("vx_mps,vy_mps,omega_radps,Fx_N,Fz_kN\n1,0,3,4,-1\n");
   EXPECT_NE(bad.find(":2: column 'Fz_kN' (5): -1000 must be positive"), std::string::npos) << bad;
 }
+
+// The checks of a measured-diagram header are lab_columns' alone (resolve_measured_columns):
+// on header cells, without a CSV table, with the messages the file reader gives.
+TEST(LabColumns, MeasuredHeaderChecksNeedNoTable) {
+  const auto refusal = [](const std::vector<std::string>& cells) {
+    try {
+      resolve_measured_columns(LabHeader{cells, nullptr, "h.csv", 3, 0});
+    } catch (const ParseError& e) {
+      return std::string(e.what());
+    }
+    return std::string("no error");
+  };
+  EXPECT_NE(refusal({"1", "2", "3"}).find("h.csv:3: the first row holds numbers"),
+            std::string::npos);
+  const std::string missing = refusal({"vx_mps", "vy_mps", "omga_radps", "Fx_N"});
+  EXPECT_NE(missing.find("missing required column 'omega_radps' (did you mean 'omga_radps'?)"),
+            std::string::npos)
+      << missing;
+  const std::string miss = refusal({"vx_mps", "vy_mps", "omega_radps", "Fxx_N", "Fy_N"});
+  EXPECT_NE(miss.find("column 'Fxx_N' (4) is not a column this reader knows: did you mean "
+                      "'Fx_N'?"),
+            std::string::npos)
+      << miss;
+  EXPECT_NE(refusal({"vx_mps", "vy_mps", "omega_radps", "t_s"}).find("no measured channel"),
+            std::string::npos);
+  const LabColumns ok = resolve_measured_columns(
+      LabHeader{{"t_s", "vx_mps", "vy_mps", "omega_radps", "Mz [N mm]"}, nullptr, "h.csv", 1, 0});
+  EXPECT_EQ(ok[MeasuredQuantity::Mz].index, 4);
+  EXPECT_DOUBLE_EQ(ok[MeasuredQuantity::Mz].to_si, 1e-3);
+}

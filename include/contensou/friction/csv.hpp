@@ -40,12 +40,16 @@ struct CsvTable {
   // "source: row N (index N-1): column 'name' (n): message").
   ParseError cell_error(int line, int column, const std::string& message) const;
 
-  // The header's column whose name is closest to `name` (same name in another case, at most
-  // two edits, or the same stem before '_', i.e. another unit), or "" if none is close.
-  // Columns named in `exclude` (those the caller reads anyway) are not suggested.
+  // The header's column whose name is closest to `name` (closest_name over the header).
   std::string closest_column(const std::string& name,
                              const std::vector<std::string>& exclude = {}) const;
 };
+
+// The one of `names` closest to `name` (same name in another case, at most two edits, or the
+// same stem before '_', i.e. another unit), or "" if none is close. Names in `exclude` (those
+// the caller reads anyway), empty names and `name` itself are not suggested.
+std::string closest_name(const std::vector<std::string>& names, const std::string& name,
+                         const std::vector<std::string>& exclude = {});
 
 // Reads and validates the whole file. Throws ParseError (file:line: message) for a missing or
 // unreadable file, a missing header, a wrong number of cells, an unterminated quote.

@@ -98,6 +98,11 @@ struct ClosedLoopReport {
   bool structure_remains = false;                 // the final residual is still not white
 };
 
+// A loop step whose extended fit ends worse than the model it extends (which it nests): its
+// optimiser failed, so the step says nothing about the effect (the loop retries such a step
+// from other starts; the reports flag it).
+bool step_fit_failed(const LoopStep& step);
+
 // Throws what fit_model throws, and Interrupted when options.stop asks (polled between the
 // stages and inside every fit).
 ClosedLoopReport close_the_loop(const MeasuredData& data, const IdentificationOptions& options,

@@ -86,13 +86,24 @@ struct ChannelDiagnostics {
   bool white = true;
 };
 
+// The noise scales of a fit: its model and the per-channel constants.
+struct NoiseScales {
+  NoiseModel model = NoiseModel::additive;
+  std::array<double, kChannels> scale{};  // s_c (a_c of affine noise)
+  std::array<double, kChannels> slope{};  // b_c of affine noise
+};
+
 struct FitReport {
   std::vector<ParameterEstimate> parameters;   // F0_N, a, M0_Nm, m, kx, then f if N is known
   std::vector<std::string> correlation_names;  // free, determined parameters
   Eigen::MatrixXd correlation;
-  std::vector<ChannelDiagnostics> channels;    // measured channels only
-  FractionalLaw<double> law;                   // the fitted law (base model)
-  std::vector<Resultants<double>> prediction;  // model at each data point
+  std::vector<ChannelDiagnostics> channels;  // measured channels only
+  FractionalLaw<double> law;                 // the fitted law (base model)
+  // At each data point (all points of the data, also those a subset fit did not use):
+  std::vector<Resultants<double>> prediction;  // the model
+  std::vector<double> psi;                     // psi = |v| / (|omega| R) (sliding_spin_ratio)
+  // y - yhat per channel (Fx, Fy, Mz; nullopt where the channel was not measured).
+  std::vector<std::array<std::optional<double>, kChannels>> residual;
   NoiseModel noise_model = NoiseModel::additive;
   std::array<double, kChannels> noise_scale{};  // s_c (a_c of affine noise)
   std::array<double, kChannels> noise_slope{};  // b_c of affine noise (0 otherwise)
@@ -110,6 +121,7 @@ struct FitReport {
   std::string solver_summary;
 
   const ParameterEstimate* parameter(const std::string& name) const;
+  NoiseScales noise_scales() const { return {noise_model, noise_scale, noise_slope}; }
 };
 
 // Fits the fractional law to the data. Throws InvalidArgument for a non-positive radius or
@@ -148,12 +160,7 @@ FitReport fit_model(const MeasuredData& data, const ModelSpec& spec, const Noise
 int measured_values_needed(const MeasuredData& data, const ModelSpec& spec,
                            const NoiseSettings& noise);
 
-// The noise scales of a fit: its model and the per-channel constants.
-struct NoiseScales {
-  NoiseModel model = NoiseModel::additive;
-  std::array<double, kChannels> scale{};  // s_c (a_c of affine noise)
-  std::array<double, kChannels> slope{};  // b_c of affine noise
-};
+// The noise scales of a fit (FitReport::noise_scales()).
 NoiseScales noise_scales_of(const FitReport& fit);
 
 // Weighted residuals r and their Jacobian J with respect to all kModelParameters parameters
@@ -170,7 +177,8 @@ NoiseSettings noise_settings_for(const IdentificationOptions& options);
 // Predictions of a law at the data's kinematics.
 std::vector<Resultants<double>> predict(const FractionalLaw<double>& law, const MeasuredData& data);
 
-// psi = |v| / (|omega| R) of each point (infinity for pure sliding).
+// psi = |v| / (|omega| R) of each point (infinity for pure sliding). A fit carries it for its
+// data (FitReport::psi): a report reads it there.
 std::vector<double> sliding_spin_ratio(const MeasuredData& data, double radius_m);
 
 // Residual diagnostics of each measured channel for given predictions.

@@ -77,4 +77,11 @@ struct LabHeader {
 // for one quantity, a units row that disagrees with the header, a rename naming no column.
 LabColumns resolve_lab_columns(const LabHeader& in, const ColumnRenames& renames = {});
 
+// The columns of measured diagrams (measured_data.hpp), every check of the header in one place:
+// resolve_lab_columns, and before it a header of numbers (no header row), after it a missing
+// required column (vx, vy, omega; with "did you mean" the closest header cell), a column that
+// looks like a misspelt known one while that one is absent (its data would be lost silently),
+// and no measured channel (Fx, Fy, Mz). Throws ParseError naming the file and the header line.
+LabColumns resolve_measured_columns(const LabHeader& in, const ColumnRenames& renames = {});
+
 }  // namespace contensou

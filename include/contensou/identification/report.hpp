@@ -1,6 +1,6 @@
 // The identification report as JSON: the schema written by contensou-identify --json, shared
-// by the app and the Python package (contensou.identify(...).to_json()), and the choice of a
-// pressure profile by name or CSV path that both offer.
+// by the app and the Python package (contensou.identify(...).to_json()). It reads the results
+// of the fit and the loop and the description of the input (ProfileChoice: profile_choice.hpp).
 #pragma once
 
 #include <optional>
@@ -12,6 +12,7 @@
 #include "contensou/identification/fit.hpp"
 #include "contensou/identification/key_style.hpp"
 #include "contensou/identification/outliers.hpp"
+#include "contensou/identification/profile_choice.hpp"
 
 namespace contensou {
 
@@ -38,19 +39,6 @@ std::string fit_report_json(const ReportInput& input, const FitReport& base, int
 // model and errors before and after.
 std::string loop_report_json(const ReportInput& input, const ClosedLoopReport& loop,
                              int indent = 2);
-
-// A pressure profile given as a built-in name (uniform, hertz, seed-tire) or a CSV path
-// (rho,pressure_Pa). With smoothing > 0 a CSV is fitted by a Chebyshev series in rho^2 of that
-// many terms instead of interpolated; a CSV that dips below zero is refused unless clip.
-// Throws std::runtime_error naming the option (--profile, --profile-smoothing) and the file.
-struct ProfileChoice {
-  PressureProfile profile;
-  std::optional<double> reference_pressure;  // from a CSV profile
-  std::string description;
-  std::optional<double> rms_residual_pa, max_residual_pa;  // of a smoothing fit
-};
-ProfileChoice choose_profile(const std::string& spec, int smoothing = 0, bool clip = false,
-                             KeyStyle style = KeyStyle::command_line);
 
 // The report's description of a run: the file (or source), the data's point and value counts,
 // the radius, the load and the profile as chosen.

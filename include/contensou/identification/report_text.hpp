@@ -22,10 +22,6 @@ inline constexpr int kFewDegreesOfFreedomPerScale = 10;
 // for the noise scales, parameters the data do not determine, a solver that did not converge.
 std::vector<std::string> fit_warnings(const FitReport& fit);
 
-// A loop step whose extended fit ends worse than the model it extends (which it nests): its
-// optimiser failed, so the step says nothing about the effect.
-bool step_fit_failed(const LoopStep& step);
-
 // The loop's outcome in plain words: what the data show, what was tried and not needed, what
 // limits the fit.
 std::string loop_summary(const ClosedLoopReport& loop);
