@@ -254,14 +254,25 @@ TEST(Interrupt, AStoppedExactLawBuildLeavesNothingAndBuildsAgain) {
 // the same fit with b1 fixed at -0.45 (an unconstrained problem): the same cost, the same
 // parameters. Ceres' trust region alone crawled along the bound (its radius shrinking at every
 // clipped step) and stopped short: on 1,000 points 12 units of -2 log L above the optimum.
-TEST(FitBounds, ReachesTheOptimumWithAParameterOnItsBound) {
+namespace {
+
+// The seed tire rolling (kx = 0.14): its diagrams at `points` points, 1 % noise, from the exact
+// integrals or the fractional law.
+MeasuredData rolling_seed_tire_diagrams(int points, bool exact) {
   ContactPatch patch = seed_tire_patch();
   patch.profile.kx = 0.14;
   DiagramSpec s;
   s.radius_m = 0.087;
-  s.points = 300;
+  s.points = points;
   s.noise_level = 0.01;
-  const MeasuredData data = simulate_diagrams(make_exact_model(patch), s);
+  return exact ? simulate_diagrams(make_exact_model(patch), s)
+               : simulate_diagrams(fractional_law_from_patch(patch), s);
+}
+
+}  // namespace
+
+TEST(FitBounds, ReachesTheOptimumWithAParameterOnItsBound) {
+  const MeasuredData data = rolling_seed_tire_diagrams(300, true);
   IdentificationOptions o;
   o.radius_m = 0.087;
   ModelSpec spec = base_spec_for(data, o);
@@ -302,13 +313,7 @@ MeasuredData scaled_forces(MeasuredData d, double k) {
 // scale with the data. Outside 1e-6 to 1e8 N the fit is refused, naming the range (there, on
 // the bundled set scaled by 1e-20 or 1e9, fits went wrong without a word); zero forces too.
 TEST(FitForceScale, SameFitInAnyUnitInsideTheRangeAndARefusalOutside) {
-  ContactPatch patch = seed_tire_patch();
-  patch.profile.kx = 0.14;
-  DiagramSpec s;
-  s.radius_m = 0.087;
-  s.points = 40;
-  s.noise_level = 0.01;
-  const MeasuredData data = simulate_diagrams(fractional_law_from_patch(patch), s);
+  const MeasuredData data = rolling_seed_tire_diagrams(40, false);
   IdentificationOptions o;
   o.radius_m = 0.087;
   const FitReport base = fit_fractional_law(data, o);

@@ -42,6 +42,16 @@ def seconds_until_interrupted(call) -> float:
     return time.monotonic() - start
 
 
+@pytest.fixture(autouse=True)
+def python_handles_sigint():
+    """Python's own SIGINT handler for each test: a process started in the background by a
+    non-interactive shell (a CI runner's `cmd &`) inherits SIGINT ignored, and Python then keeps
+    it ignored, so no KeyboardInterrupt would ever come."""
+    previous = signal.signal(signal.SIGINT, signal.default_int_handler)
+    yield
+    signal.signal(signal.SIGINT, previous)
+
+
 @pytest.fixture(scope="module")
 def rows_600(identify_app, tmp_path_factory) -> str:
     """600 rows of the seed tire from the exact integrals (the closed loop: 5 to 10 s)."""
