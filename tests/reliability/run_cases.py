@@ -1,7 +1,10 @@
 #!/usr/bin/env python3
-"""Runs the hostile cases of cases.txt against the apps (ctest reliability.cases).
+"""Runs the hostile cases of the case tables against the apps (ctest reliability.cases).
 
-    run_cases.py CASES IDENTIFY SHIMMY ENGINES DATA_DIR
+    run_cases.py DATA_DIR NAME=PATH... CASES...
+
+NAME=PATH names a tool the commands call as {NAME} (identify, shimmy, engines, model_error, ...);
+CASES are case tables or folders of them (every *.txt inside, in name order).
 
 Each case runs in a fresh temporary folder with a 120 s limit; a case fails when its exit status
 is not the expected class, its output does not match, its `then` test fails, or anything looks
@@ -67,21 +70,37 @@ def run_case(case, tools):
     return None
 
 
+def case_files(paths):
+    files = []
+    for p in paths:
+        if os.path.isdir(p):
+            files += sorted(os.path.join(p, f) for f in os.listdir(p) if f.endswith(".txt"))
+        else:
+            files.append(p)
+    return files
+
+
 def main():
-    if len(sys.argv) != 6:
+    if len(sys.argv) < 3:
         sys.exit(__doc__)
-    cases_path, identify, shimmy, engines, data_dir = map(os.path.abspath, sys.argv[1:])
+    data_dir = os.path.abspath(sys.argv[1])
+    tools, tables = {}, []
+    for arg in sys.argv[2:]:
+        name, eq, path = arg.partition("=")
+        if eq and re.fullmatch(r"[a-z_]+", name):
+            tools[name] = shlex.quote(os.path.abspath(path))
+        else:
+            tables.append(os.path.abspath(arg))
     data = os.path.join(data_dir, "seed_tire_diagrams.csv")
-    tools = {"identify": shlex.quote(identify), "shimmy": shlex.quote(shimmy),
-             "engines": shlex.quote(engines), "data": shlex.quote(data),
-             "fit": f"{shlex.quote(data)} --radius 0.087 --no-loop"}
+    tools.update({"data": shlex.quote(data), "fit": f"{shlex.quote(data)} --radius 0.087 --no-loop"})
+    cases = [(f, c) for f in case_files(tables) for c in parse(f)]
     failed = 0
-    for case in parse(cases_path):
+    for path, case in cases:
         problem = run_case(case, tools)
-        print(f"{'FAIL' if problem else 'ok  '} {case[1]} (line {case[0]})"
+        print(f"{'FAIL' if problem else 'ok  '} {case[1]} ({os.path.basename(path)}:{case[0]})"
               + (f": {problem}" if problem else ""), flush=True)
         failed += problem is not None
-    print(f"{failed} of {len(parse(cases_path))} cases failed" if failed else "all cases hold")
+    print(f"{failed} of {len(cases)} cases failed" if failed else f"all {len(cases)} cases hold")
     return 1 if failed else 0
 
 
