@@ -184,11 +184,12 @@ nlohmann::json loop_report(const ReportInput& info, const ClosedLoopReport& loop
 }  // namespace
 
 std::string fit_report_json(const ReportInput& input, const FitReport& base, int indent) {
-  return fit_report(input, base).dump(indent);
+  return fit_report(input, base).dump(indent, ' ', false, nlohmann::json::error_handler_t::replace);
 }
 
 std::string loop_report_json(const ReportInput& input, const ClosedLoopReport& loop, int indent) {
-  return loop_report(input, loop).dump(indent);
+  return loop_report(input, loop)
+      .dump(indent, ' ', false, nlohmann::json::error_handler_t::replace);
 }
 
 ReportInput describe_run(const std::string& file, const MeasuredData& data, double radius_m,
