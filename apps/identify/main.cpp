@@ -204,7 +204,9 @@ void add_fit_options(CLI::App& app, FitArgs& a, FitOptionHandles& h) {
   app.add_option("--columns", a.columns,
                  "read columns under other names: QUANTITY=COLUMN,... with QUANTITY one of vx, "
                  "vy, omega, Fx, Fy, Mz, Fz, t; a unit in the name ('Speed [km/h]') or a units "
-                 "row is converted");
+                 "row is converted; extra=COLUMN keeps a column that looks like a channel as a "
+                 "recorded variable, ignore=COLUMN leaves it out (every other numeric column is "
+                 "kept as a recorded variable and listed in the report)");
   app.add_option(opt("fix"), a.fixes, key_help("fix"));
   app.add_option(opt("loss"), r.loss, key_help("loss"));
   app.add_option(opt("loss_scale"), r.loss_scale, key_help("loss_scale"));
