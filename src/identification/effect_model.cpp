@@ -2,6 +2,8 @@
 
 #include "contensou/friction/error.hpp"
 
+#include <algorithm>
+#include <cmath>
 #include <limits>
 
 namespace contensou {
@@ -27,7 +29,17 @@ constexpr ParameterInfo kInfo[kModelParameters] = {{"F0_N", "N", 0.0},
                                                    {"crosstalk_Mz_from_Fy", "m", 0.0},
                                                    {"shape_blend", "1", 0.0},
                                                    {"profile_b1", "1", 0.0},
-                                                   {"profile_b2", "1", 0.0}};
+                                                   {"profile_b2", "1", 0.0},
+                                                   {"slip_angle_offset_rad", "rad", 0.0},
+                                                   {"spin_offset_radps", "rad/s", 0.0},
+                                                   {"patch_growth_q", "1", 0.0},
+                                                   {"friction_scale", "1", 1.0},
+                                                   {"friction_b1_1", "1", 0.0},
+                                                   {"friction_b2_1", "1", 0.0},
+                                                   {"friction_b1_2", "1", 0.0},
+                                                   {"friction_b2_2", "1", 0.0},
+                                                   {"friction_b1_3", "1", 0.0},
+                                                   {"friction_b2_3", "1", 0.0}};
 }  // namespace
 
 const ParameterInfo& parameter_info(int index) {
@@ -64,9 +76,54 @@ ParameterBounds parameter_bounds(int index) {
       return {-0.95, 0.95};
     case kShapeBlend:
       return {0.0, 1.0};
+    case kSlipAngleOffset:
+      return {-0.2, 0.2};  // 11 degrees: beyond, a rig is not misaligned but mislabelled
+    case kPatchGrowth:
+      return {-0.5, 2.0};
+    case kDependence1:
+    case kDependence2:
+    case kDependence3:
+      return {-0.8, 0.8};  // with |b2| <= 0.19: the factor stays above 0.01 for |z| <= 1
+    case kDependence1Curve:
+    case kDependence2Curve:
+    case kDependence3Curve:
+      return {-0.19, 0.19};
     default:
       return {-inf, inf};
   }
+}
+
+int dependence_parameter(int slot, bool curve) {
+  return kDependence1 + 2 * slot + (curve ? 1 : 0);
+}
+
+double Covariate::value(const MeasuredPoint& p) const {
+  switch (kind) {
+    case Kind::load:
+      return p.normal_load ? *p.normal_load : std::numeric_limits<double>::quiet_NaN();
+    case Kind::time:
+      return p.time ? *p.time : std::numeric_limits<double>::quiet_NaN();
+    case Kind::order:
+      return static_cast<double>(p.source) * 4294967296.0 + static_cast<double>(p.line);
+    case Kind::recorded:
+      break;
+  }
+  return recorded >= 0 && recorded < static_cast<int>(p.recorded.size())
+             ? p.recorded[static_cast<std::size_t>(recorded)]
+             : std::numeric_limits<double>::quiet_NaN();
+}
+
+double Covariate::scaled(const MeasuredPoint& p) const {
+  const double x = value(p);
+  return std::isfinite(x) && half_range > 0.0 ? std::clamp((x - mid) / half_range, -1.0, 1.0) : 0.0;
+}
+
+PointConditions conditions_of(const ModelSpec& s, const MeasuredPoint& p) {
+  PointConditions c;
+  if (s.reference_load_n && p.normal_load) c.load_ratio = *p.normal_load / *s.reference_load_n;
+  for (int j = 0; j < kDependenceSlots; ++j)
+    if (s.dependence[j]) c.z[j] = s.dependence[j]->scaled(p);
+  return c;
 }
 
 int offset_parameter(int channel) {

@@ -28,6 +28,7 @@ constexpr int K = kModelParameters;
 struct PointResidual {
   const ModelSpec* spec;
   Kinematics<double> k;
+  PointConditions conditions;
   std::array<double, kChannels> y{};
   std::array<double, kChannels> w{};  // 0 = not measured
   std::array<int, kChannels> slot{};  // residual index of each measured channel
@@ -43,7 +44,7 @@ struct PointResidual {
     for (std::size_t j = 0; j < active->size(); ++j) theta[(*active)[j]] = packed[0][j];
     Resultants<T> f;
     try {
-      f = evaluate_model(*spec, theta.data(), k);
+      f = evaluate_model(*spec, theta.data(), k, conditions);
     } catch (const InvalidArgument&) {
       return false;  // a parameter outside the model's domain: Ceres rejects the step
     }
@@ -207,9 +208,15 @@ int add_points(ceres::Problem& problem, const MeasuredData& data, const ModelSpe
   for (std::size_t i = 0; i < data.points.size(); ++i) {
     if (!use.empty() && !use[i]) continue;
     const MeasuredPoint& pt = data.points[i];
-    auto* f = new PointResidual{
-        &spec, pt.kinematics, {},           {},
-        {},    &active,       &theta_const, static_cast<int>(i) == wt.failing_point};
+    auto* f = new PointResidual{&spec,
+                                pt.kinematics,
+                                conditions_of(spec, pt),
+                                {},
+                                {},
+                                {},
+                                &active,
+                                &theta_const,
+                                static_cast<int>(i) == wt.failing_point};
     int m = 0;
     for (int c = 0; c < kChannels; ++c) {
       if (!pt.force[c]) continue;
@@ -245,7 +252,8 @@ std::vector<Resultants<double>> evaluate_all(const ModelSpec& spec, const double
                                              const MeasuredData& d) {
   std::vector<Resultants<double>> out;
   out.reserve(d.points.size());
-  for (const MeasuredPoint& p : d.points) out.push_back(evaluate_model(spec, theta, p.kinematics));
+  for (const MeasuredPoint& p : d.points)
+    out.push_back(evaluate_model(spec, theta, p.kinematics, conditions_of(spec, p)));
   return out;
 }
 
@@ -1012,7 +1020,8 @@ void weighted_jacobian(const MeasuredData& data, const ModelSpec& spec,
   std::vector<int> active;
   for (int i = 0; i < K; ++i)
     if (spec.free[i] || spec.value[i] != parameter_info(i).null_value || i <= kKx ||
-        (i >= kKy && i <= kXMzFy) || i == kShapeBlend)
+        (i >= kKy && i <= kXMzFy) || i == kShapeBlend ||
+        (i >= kSlipAngleOffset && i <= kFrictionScale))
       active.push_back(i);
   std::vector<double> packed(active.size());
   for (std::size_t j = 0; j < active.size(); ++j) packed[j] = theta[active[j]];

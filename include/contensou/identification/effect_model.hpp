@@ -4,6 +4,15 @@
 //   y_c = yhat_c + offset_c + sum_{d != c} g_{c<-d} yhat_d                     (rig effects)
 //   yhat = (1 - lambda) law(F0, a, M0, m, kx, ky, kappa, beta, w_s)
 //          + lambda exact(F0, kx, ky, kappa, beta, w_s; profile)               (shape blend)
+// at each row's own load and conditions:
+//   F0_i = F0 rho_i phi_i, M0_i = M0 rho_i^(1 + q) phi_i, R_i = R rho_i^q,  rho_i = N_i / N_ref
+//   (pressure in proportion to the load at fixed radius for q = 0; a patch that grows with the
+//   load, R = R0 (N/N0)^q, for q != 0), and friction that follows recorded variables X_j,
+//   phi_i = s prod_j (1 + b_j1 T1(z_ij) + b_j2 T2(z_ij)), z_ij = X_j of the row scaled to [-1, 1]
+//   over the data (T1(z) = z, T2(z) = 2 z^2 - 1; s = 1, a fixed scale whose derivative gives
+//   the score of any X);
+// at the rig's kinematics: vy + vx tan(delta) (a slip-angle offset delta of the rig) and
+// omega + omega_0 (a spin offset).
 // Friction falling with slip speed: f(w) = f (1 - beta (1 - exp(-w / w_s))) (beta = 0: none);
 // at the effective speed w_eff = (v^2 + (2u/3)^2)^(1/2) (the mean local slip speed of a
 // spinning uniform patch), or, with speed_in_exact, at the local slip speed w inside the
@@ -47,7 +56,43 @@ enum ModelParameter : int {
   kShapeBlend,
   kProfileB1,
   kProfileB2,  // shape
+  kSlipAngleOffset,
+  kSpinOffset,     // the rig's kinematics
+  kPatchGrowth,    // q of R = R0 (N / N0)^q
+  kFrictionScale,  // s: fixed at 1 (its Jacobian column scores friction_dependence)
+  kDependence1,
+  kDependence1Curve,
+  kDependence2,
+  kDependence2Curve,
+  kDependence3,
+  kDependence3Curve,  // b_j1, b_j2 of the friction_dependence slots
   kModelParameters
+};
+
+// How many recorded variables friction may follow at once (friction_dependence slots).
+inline constexpr int kDependenceSlots = 3;
+int dependence_parameter(int slot, bool curve);  // kDependence1 + 2 slot (+ 1)
+
+// A variable friction may follow: the normal load, the time (or the row order when the data
+// have no time), or a recorded column of the data (measured_data.hpp), scaled to [-1, 1] over
+// the data: z = (x - mid) / half_range.
+struct Covariate {
+  enum class Kind { load, time, order, recorded };
+  Kind kind = Kind::recorded;
+  int recorded = -1;  // index into MeasuredData::recorded (Kind::recorded)
+  std::string name;   // for reports: "Fz_N", "t_s", "row order", "T [degC]"
+  std::string unit;   // SI unit of the values ("N", "s", "K"; "" for the order)
+  double mid = 0.0, half_range = 1.0;
+  // The variable at a row (NaN where the row has none).
+  double value(const MeasuredPoint& p) const;
+  // z at a row: 0 (the middle) where the row has no value.
+  double scaled(const MeasuredPoint& p) const;
+};
+
+// What the model needs of a row besides its kinematics.
+struct PointConditions {
+  double load_ratio = 1.0;  // rho = N_i / N_ref (1 where the row has no load)
+  std::array<double, kDependenceSlots> z{};
 };
 
 // Name, unit and null value of each parameter.
@@ -84,6 +129,14 @@ struct ModelSpec {
   std::array<double, kModelParameters> value{};  // their values (start or fixed)
   double exact_tolerance = 1e-6;                 // relative to f N: far below any measurement noise
   double regularization_speed = 1e-6;
+  // The reference load N_ref of rho_i = N_i / N_ref (the rows' Fz): F0 and M0 are at it. Unset:
+  // every row at the one load normal_load_n (rho = 1).
+  std::optional<double> reference_load_n;
+  // The variable of each friction_dependence slot (unset: the slot is not used).
+  std::array<std::optional<Covariate>, kDependenceSlots> dependence;
+  // Derivatives with respect to the rig's kinematics and the patch's growth are wanted at their
+  // null values too (the score test's Jacobian): the kinematics are differentiated always.
+  bool differentiate_kinematics = false;
 
   bool uses_exact() const { return exact_only || free[kShapeBlend] || value[kShapeBlend] != 0.0; }
 };
@@ -95,9 +148,14 @@ ModelSpec base_model_spec(double radius_m, std::optional<double> normal_load_n);
 template <class T>
 FractionalLaw<T> fractional_law_of(const ModelSpec& spec, const T* theta);
 
-// Evaluates the model at kinematics k with parameters theta (all kModelParameters of them).
+// A row's conditions under a spec (its load ratio and scaled variables).
+PointConditions conditions_of(const ModelSpec& spec, const MeasuredPoint& p);
+
+// Evaluates the model at kinematics k with parameters theta (all kModelParameters of them), at
+// a row's conditions (default: the reference load, every variable in the middle).
 template <class T>
-Resultants<T> evaluate_model(const ModelSpec& spec, const T* theta, const Kinematics<double>& k);
+Resultants<T> evaluate_model(const ModelSpec& spec, const T* theta, const Kinematics<double>& k,
+                             const PointConditions& conditions = {});
 
 }  // namespace contensou
 

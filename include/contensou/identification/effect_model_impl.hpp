@@ -46,23 +46,50 @@ FractionalLaw<T> fractional_law_of(const ModelSpec& s, const T* th) {
   return law;
 }
 
+namespace detail {
+
+// The friction factor of a row, s rho prod_j (1 + b_j1 T1(z_j) + b_j2 T2(z_j)) (effect_model.hpp).
 template <class T>
-Resultants<T> evaluate_model(const ModelSpec& s, const T* th, const Kinematics<double>& k) {
+T friction_factor(const ModelSpec& s, const T* th, const PointConditions& c) {
+  T phi = th[kFrictionScale] * c.load_ratio;
+  for (int j = 0; j < kDependenceSlots; ++j) {
+    if (!s.dependence[j]) continue;
+    const double z = c.z[j];
+    phi *= 1.0 + th[dependence_parameter(j, false)] * z +
+           th[dependence_parameter(j, true)] * (2.0 * z * z - 1.0);
+  }
+  return phi;
+}
+
+// The effective slip speed (v^2 + (2u/3)^2)^(1/2), u = |omega| R: the mean local slip speed of
+// a spinning uniform patch.
+template <class K>
+K effective_speed(const Kinematics<K>& k, double R) {
+  using std::abs;
   using std::sqrt;
+  const K u = abs(k.omega) * R;
+  return sqrt(k.vx * k.vx + k.vy * k.vy + (2.0 * u / 3.0) * (2.0 * u / 3.0));
+}
+
+// The friction part of the model (before the rig's offsets and crosstalk) at kinematics k of
+// scalar K (double, or T when the rig's kinematics or the patch's growth are differentiated),
+// with friction factor phi; the patch's radius is R g (the torque scales with g, u = omega R g
+// is in k already).
+template <class T, class K>
+Resultants<T> friction_part(const ModelSpec& s, const T* th, const Kinematics<K>& k, const T& phi,
+                            const T& g) {
   const double R = s.radius_m;
   const T lambda = s.exact_only ? T(1.0) : th[kShapeBlend];
   Resultants<T> y{T(0.0), T(0.0), T(0.0)};
   if (!s.exact_only) {
     FractionalLaw<T> law = fractional_law_of(s, th);
-    const double u = std::abs(k.omega) * R;
-    const double w_eff = std::sqrt(k.vx * k.vx + k.vy * k.vy + (2.0 * u / 3.0) * (2.0 * u / 3.0));
-    const T phi = detail::speed_factor(th[kSpeedDrop], th[kSpeedRef], T(w_eff));
-    law.F0 *= phi;
-    law.M0 *= phi;
-    law.Mk *= phi;
+    const T speed = phi * speed_factor(th[kSpeedDrop], th[kSpeedRef], T(effective_speed(k, R)));
+    law.F0 *= speed;
+    law.M0 *= speed;
+    law.Mk *= speed;
     const Resultants<T> r = fractional_resultants(law, Kinematics<T>{T(k.vx), T(k.vy), T(k.omega)});
     const T wl = 1.0 - lambda;
-    y = {wl * r.Fx, wl * r.Fy, wl * r.Mz};
+    y = {wl * r.Fx, wl * r.Fy, wl * r.Mz * g};
   }
   if (s.uses_exact()) {
     // The exact law of the profile (exact_law_cache.hpp): one law, or the parametric profile's
@@ -87,29 +114,56 @@ Resultants<T> evaluate_model(const ModelSpec& s, const T* th, const Kinematics<d
     }
     Resultants<T> r{T(0.0), T(0.0), T(0.0)};
     for (std::size_t i = 0; i < laws.size(); ++i) {
-      const Resultants<T> ri = exact_law_resultants(laws[i], p, k);
+      const auto ri = exact_law_resultants(laws[i], p, k);
       r.Fx += coef[i] * ri.Fx;
       r.Fy += coef[i] * ri.Fy;
       r.Mz += coef[i] * ri.Mz;
     }
     // Without f(w) inside the integrals, the friction falls at the effective slip speed.
-    T phi(1.0);
-    if (!s.speed_in_exact) {
-      const double u = std::abs(k.omega) * R;
-      const double w_eff = std::sqrt(k.vx * k.vx + k.vy * k.vy + 4.0 * u * u / 9.0);
-      phi = detail::speed_factor(th[kSpeedDrop], th[kSpeedRef], T(w_eff));
-    }
-    y.Fx += lambda * phi * r.Fx;
-    y.Fy += lambda * phi * r.Fy;
-    y.Mz += lambda * phi * r.Mz;
+    T speed = phi;
+    if (!s.speed_in_exact)
+      speed *= speed_factor(th[kSpeedDrop], th[kSpeedRef], T(effective_speed(k, R)));
+    y.Fx += lambda * speed * r.Fx;
+    y.Fy += lambda * speed * r.Fy;
+    y.Mz += lambda * speed * r.Mz * g;
+  }
+  return y;
+}
+
+// Whether the rig's kinematics or the patch's growth take part (else the measured kinematics
+// are used as doubles: the model's cost without them).
+inline bool kinematics_vary(const ModelSpec& s, const PointConditions& c) {
+  return s.differentiate_kinematics || s.free[kSlipAngleOffset] ||
+         s.value[kSlipAngleOffset] != 0.0 || s.free[kSpinOffset] || s.value[kSpinOffset] != 0.0 ||
+         (c.load_ratio != 1.0 && (s.free[kPatchGrowth] || s.value[kPatchGrowth] != 0.0));
+}
+
+}  // namespace detail
+
+template <class T>
+Resultants<T> evaluate_model(const ModelSpec& s, const T* th, const Kinematics<double>& k,
+                             const PointConditions& c) {
+  using std::pow;
+  using std::tan;
+  const T phi = detail::friction_factor(s, th, c);
+  Resultants<T> y;
+  if (!detail::kinematics_vary(s, c)) {
+    y = detail::friction_part(s, th, k, phi, T(1.0));
+  } else {
+    // The rig's kinematics: vy + vx tan(delta), omega + omega_0; the patch R g with
+    // g = rho^q, so u = omega R g and the torque arm scales with g.
+    const T g = c.load_ratio == 1.0 ? T(1.0) : pow(T(c.load_ratio), th[kPatchGrowth]);
+    const Kinematics<T> kt{T(k.vx), T(k.vy) + T(k.vx) * tan(th[kSlipAngleOffset]),
+                           (T(k.omega) + th[kSpinOffset]) * g};
+    y = detail::friction_part(s, th, kt, phi, g);
   }
   // Rig: offsets and crosstalk.
   const T base[3] = {y.Fx, y.Fy, y.Mz};
   T out[3];
-  for (int c = 0; c < 3; ++c) {
-    out[c] = base[c] + th[offset_parameter(c)];
+  for (int ch = 0; ch < 3; ++ch) {
+    out[ch] = base[ch] + th[offset_parameter(ch)];
     for (int d = 0; d < 3; ++d)
-      if (d != c) out[c] += th[crosstalk_parameter(c, d)] * base[d];
+      if (d != ch) out[ch] += th[crosstalk_parameter(ch, d)] * base[d];
   }
   return {out[0], out[1], out[2]};
 }

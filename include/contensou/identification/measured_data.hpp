@@ -22,6 +22,7 @@ struct MeasuredPoint {
   std::optional<double> normal_load;                   // Fz_N
   std::optional<double> time;                          // t_s
   int line = 0;                                        // line in the file (0 if synthetic)
+  int source = 0;  // the file it came from: index into MeasuredData::sources
   // The recorded columns' values (MeasuredData::recorded, in order), in their SI unit; NaN
   // where the cell is empty.
   std::vector<double> recorded;
@@ -40,7 +41,10 @@ struct RecordedVariable {
 };
 
 struct MeasuredData {
-  std::string source;  // file name or description
+  std::string source;  // file name or description (of all the files, when several)
+  // The files the points came from (one, or several fitted together): point.source indexes it.
+  // Empty for data made in memory; source then names them.
+  std::vector<std::string> sources;
   std::vector<MeasuredPoint> points;
   // How columns under other names or units were read ("omega_radps from 'omega [rpm]' ...,
   // x 0.1047 to rad/s"), for the report; empty for a file in the SI names.
