@@ -48,7 +48,8 @@ int main(int argc, char** argv) {
   double radius = 0.0, friction = 0.0;
   bool json = false;
   app.add_option("--profile", profile, "pressure profile: uniform, hertz or seed-tire")
-      ->capture_default_str();
+      ->capture_default_str()
+      ->check(contensou::app::one_of({"uniform", "hertz", "seed-tire"}));
   app.add_option("--radius", radius, "patch radius R [m]")->required();
   app.add_option("--friction", friction, "friction coefficient f")->required();
   app.add_flag("--json", json, "print JSON instead of the table");

@@ -38,13 +38,16 @@ MeasuredData measured_data_from_table(const CsvTable& t, const ColumnRenames& re
                                       KeyStyle style) {
   // Every check of the header (names, units, renames, required and misspelt columns) is
   // lab_columns'; the table is read here only for its cells' numbers.
-  const LabHeader header{t.header,      t.rows.empty() ? nullptr : &t.rows.front().cells, t.file,
-                         t.header_line, t.rows.empty() ? 0 : t.rows.front().line,         style};
+  const std::vector<std::string> first_row =
+      t.rows.empty() ? std::vector<std::string>{} : t.rows.front().cells.strings();
+  const LabHeader header{t.header,      t.rows.empty() ? nullptr : &first_row,    t.file,
+                         t.header_line, t.rows.empty() ? 0 : t.rows.front().line, style};
   const LabColumns cols = resolve_measured_columns(header, renames);
   MeasuredData data;
   data.source = t.file;
   data.column_notes = cols.notes();
   const LabColumn& fz = cols[MeasuredQuantity::Fz];
+  data.points.reserve(t.rows.size());
   for (std::size_t r = cols.units_row ? 1 : 0; r < t.rows.size(); ++r) {
     const CsvRow& row = t.rows[r];
     MeasuredPoint p;
