@@ -342,8 +342,11 @@ void TableBuilder::add_row() {
   const std::string& name = table_.file;
   if (table_.rows.size() >= limits_.max_rows)
     throw ParseError(name, lineno_, 0,
-                     "more than " + std::to_string(limits_.max_rows) +
-                         " data rows, the reader's limit: split the file or thin its rows");
+                     std::to_string(limits_.max_rows + 1) + " rows of data or more: " +
+                         (limits_.rows_advice.empty()
+                              ? "past the reader's limit of " + std::to_string(limits_.max_rows) +
+                                    " rows; split the file or thin its rows"
+                              : limits_.rows_advice));
   CsvRow row{lineno_, CsvCells(fields_)};
   memory_ += kRowOverhead + row.cells.heap_bytes();
   if (memory_ > limits_.max_memory_bytes)

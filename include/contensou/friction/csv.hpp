@@ -60,6 +60,9 @@ struct CsvLimits {
   std::size_t max_lines = 100'000'000;                     // lines, comments and blank ones too
   std::size_t max_memory_bytes = std::size_t{1} << 30;     // the rows in memory (1 GiB)
   std::uint64_t max_input_bytes = std::uint64_t{4} << 30;  // bytes read, comments included (4 GiB)
+  // What the message past max_rows says to do ("" for: past the reader's limit of N, split the
+  // file or thin its rows).
+  std::string rows_advice;
 };
 
 struct CsvTable {
