@@ -7,6 +7,7 @@
 #include <cstdio>
 #include <exception>
 #include <iostream>
+#include <new>
 
 #include "cli.hpp"
 #include "coefficients.hpp"
@@ -91,6 +92,10 @@ int main(int argc, char** argv) {
     std::printf("\nsnippets:\n");
     for (const auto& r : rows) std::printf("  %s: %s\n", r.engine.c_str(), r.snippet.c_str());
     return contensou::app::finish_output(0);
+  } catch (const std::bad_alloc&) {
+    std::cerr << "contensou-engine-coefficients: error: out of memory computing the coefficients "
+                 "(the machine's memory or ulimit -v)\n";
+    return contensou::app::kExitFailure;
   } catch (const std::exception& e) {
     std::cerr << "contensou-engine-coefficients: " << e.what() << "\n";
     return contensou::app::kExitFailure;
