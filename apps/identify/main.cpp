@@ -454,7 +454,7 @@ int main(int argc, char** argv) {
     if (lock && status == 0) lock->commit();  // an earlier run's plots not redrawn are removed
     return app::finish_output(status);
   } catch (const app::UsageError& e) {
-    std::fprintf(stderr, "%s: error: %s\nRun with --help for more information.\n", kName, e.what());
+    std::fprintf(stderr, "%s: error: %s\n", kName, e.what());
     return app::kExitUsage;
   } catch (const std::bad_alloc&) {
     std::fprintf(stderr, "%s: error: out of memory (the machine's memory or ulimit -v)\n", kName);
