@@ -47,7 +47,6 @@ MeasuredData measured_data_from_table(const CsvTable& t, const ColumnRenames& re
   data.source = t.file;
   data.column_notes = cols.notes();
   const LabColumn& fz = cols[MeasuredQuantity::Fz];
-  data.points.reserve(t.rows.size());
   for (std::size_t r = cols.units_row ? 1 : 0; r < t.rows.size(); ++r) {
     const CsvRow& row = t.rows[r];
     MeasuredPoint p;
