@@ -57,8 +57,9 @@ ContactPatch named_patch(const std::string& profile, double radius, double frict
   if (!(std::isfinite(radius) && radius >= 1e-100 && radius <= 1e100))
     throw InvalidArgument("--radius", format_value(radius),
                           "must be a positive number [m] within 1e-100 ... 1e100");
-  if (!(std::isfinite(friction) && friction > 0))
-    throw InvalidArgument("--friction", format_value(friction), "must be a positive number");
+  if (!(friction > 0 && friction <= 100.0))
+    throw InvalidArgument("--friction", format_value(friction),
+                          "must lie in (0, 100] (a friction coefficient)");
   PressureProfile shape;
   if (profile == "uniform")
     shape = uniform_profile();

@@ -7,6 +7,7 @@
 #include <cstdio>
 #include <exception>
 #include <iostream>
+#include <new>
 
 #include "cli.hpp"
 #include "coefficients.hpp"
@@ -48,7 +49,8 @@ int main(int argc, char** argv) {
   double radius = 0.0, friction = 0.0;
   bool json = false;
   app.add_option("--profile", profile, "pressure profile: uniform, hertz or seed-tire")
-      ->capture_default_str();
+      ->capture_default_str()
+      ->check(contensou::app::one_of({"uniform", "hertz", "seed-tire"}));
   app.add_option("--radius", radius, "patch radius R [m]")->required();
   app.add_option("--friction", friction, "friction coefficient f")->required();
   app.add_flag("--json", json, "print JSON instead of the table");
@@ -90,6 +92,10 @@ int main(int argc, char** argv) {
     std::printf("\nsnippets:\n");
     for (const auto& r : rows) std::printf("  %s: %s\n", r.engine.c_str(), r.snippet.c_str());
     return contensou::app::finish_output(0);
+  } catch (const std::bad_alloc&) {
+    std::cerr << "contensou-engine-coefficients: error: out of memory computing the coefficients "
+                 "(the machine's memory or ulimit -v)\n";
+    return contensou::app::kExitFailure;
   } catch (const std::exception& e) {
     std::cerr << "contensou-engine-coefficients: " << e.what() << "\n";
     return contensou::app::kExitFailure;

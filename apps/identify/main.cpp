@@ -4,9 +4,11 @@
 #include <glog/logging.h>
 
 #include <CLI/CLI.hpp>
+#include <charconv>
 #include <chrono>
 #include <cstdio>
 #include <filesystem>
+#include <new>
 #include <optional>
 #include <sstream>
 
@@ -28,10 +30,49 @@ namespace {
 
 constexpr const char* kName = "contensou-identify";
 
+// The bounds of `simulate`: at most this many points in all (the directions' sweeps together),
+// refused before any work; a million rows is a long rig recording, and the file it writes
+// (about 72 bytes a row) is read back by every reader well within their limits.
+constexpr long long kMaxSimulatedPoints = 1'000'000;
+constexpr std::size_t kMaxDirections = 1000;
+
+// Runs `f`; memory exhausted becomes an error naming what was being done ("fitting the 1000000
+// rows of big.csv"), not a bare std::bad_alloc.
+template <class F>
+auto within_memory(const std::string& what, F&& f) -> decltype(f()) {
+  try {
+    return f();
+  } catch (const std::bad_alloc&) {
+    throw std::runtime_error("out of memory " + what +
+                             ": too large for this machine's memory (or its limit, ulimit -v)");
+  }
+}
+
+// A finite number in [lo, hi], or an error naming the option, the value and the range.
+void require_in(const std::string& option, double v, double lo, double hi,
+                const std::string& unit = "") {
+  if (v >= lo && v <= hi) return;
+  throw InvalidArgument(option, format_value(v),
+                        "must lie in [" + format_value(lo) + ", " + format_value(hi) + "]" +
+                            (unit.empty() ? "" : " " + unit));
+}
+
+// A number from the text of an option's value, or a usage error naming the option.
+double number_of(const std::string& option, const std::string& text) {
+  double v = 0.0;
+  const char* end = text.data() + text.size();
+  const auto r = std::from_chars(text.data(), end, v);
+  if (r.ec == std::errc::result_out_of_range)
+    throw InvalidArgument(option, text, "is beyond the range of a double");
+  if (r.ec != std::errc() || r.ptr != end)
+    throw app::UsageError(option + " " + text + ": '" + text + "' is not a number");
+  return v;
+}
+
 std::pair<std::string, double> parse_fix(const std::string& s) {
   const auto eq = s.find('=');
   if (eq == std::string::npos || eq == 0)
-    throw std::runtime_error("--fix " + s + ": expected NAME=VALUE, e.g. --fix a=1.03");
+    throw app::UsageError("--fix " + s + ": expected NAME=VALUE, e.g. --fix a=1.03");
   const std::string value = s.substr(eq + 1);
   std::size_t used = 0;
   double v = 0.0;
@@ -40,8 +81,9 @@ std::pair<std::string, double> parse_fix(const std::string& s) {
   } catch (const std::exception&) {
     used = 0;
   }
-  if (used != value.size() || !std::isfinite(v))
-    throw std::runtime_error("--fix " + s + ": '" + value + "' is not a finite number");
+  if (used != value.size())
+    throw app::UsageError("--fix " + s + ": '" + value + "' is not a number");
+  if (!std::isfinite(v)) throw InvalidArgument("--fix " + s.substr(0, eq), value, "must be finite");
   return {s.substr(0, eq), v};
 }
 
@@ -98,11 +140,29 @@ int print_and_write(const FitArgs& a, const Identification& run, const ReportInp
 }
 
 int run_fit(FitArgs a, app::OutputFolder* plots) {
-  for (const std::string& f : a.fixes) a.request.fix.insert(parse_fix(f));
+  for (const std::string& f : a.fixes) {
+    const auto [name, value] = parse_fix(f);
+    const std::vector<std::string> names = {"F0_N", "a", "M0_Nm", "m", "kx"};
+    if (std::find(names.begin(), names.end(), name) == names.end()) {
+      const std::string close = closest_name(names, name);
+      throw app::UsageError("--fix " + name + ": no such parameter (use F0_N, a, M0_Nm, m or kx" +
+                            (close.empty() ? ")" : "; did you mean " + close + "?)"));
+    }
+    const auto [it, inserted] = a.request.fix.emplace(name, value);
+    if (!inserted)
+      throw app::UsageError("--fix " + name + " given twice (" + format_value(it->second) +
+                            " and " + format_value(value) + "): fix each parameter once");
+  }
   show_progress(a.request, a.progress);
-  MeasuredData data = read_measured_csv(a.data_path, parse_column_renames(a.columns));
-  const IdentifyRun run = identify(data, a.request);
-  return print_and_write(a, run.result, run.input, plots);
+  validate(a.request);  // the options' ranges before the data are read
+  const ColumnRenames renames = parse_column_renames(a.columns);
+  MeasuredData data = within_memory("reading " + a.data_path,
+                                    [&] { return read_measured_csv(a.data_path, renames); });
+  const IdentifyRun run =
+      within_memory("fitting the " + std::to_string(data.points.size()) + " rows of " + a.data_path,
+                    [&] { return identify(data, a.request); });
+  return within_memory("writing the report",
+                       [&] { return print_and_write(a, run.result, run.input, plots); });
 }
 
 struct SimulateArgs {
@@ -118,9 +178,110 @@ struct SimulateArgs {
   std::vector<double> offset;
   std::vector<double> directions;
   std::vector<std::string> crosstalk;
+  std::string seed = "1";  // read here: CLI11 would clamp 2^64 to 2^64 - 1 without a word
 };
 
+// The seed: a whole number in [0, 2^64 - 1].
+std::uint64_t parse_seed(const std::string& text) {
+  std::uint64_t v = 0;
+  const char* end = text.data() + text.size();
+  const auto r = std::from_chars(text.data(), end, v);
+  if (r.ec == std::errc::result_out_of_range)
+    throw InvalidArgument("--seed", text, "must lie in [0, 18446744073709551615] (2^64 - 1)");
+  if (r.ec != std::errc() || r.ptr != end)
+    throw app::UsageError("--seed " + text +
+                          ": not a whole number (one in [0, 18446744073709551615])");
+  return v;
+}
+
+// The patch's options, each within its range (finite answers: the forces stay far from
+// overflow); the shift and the profile are checked by validate(ContactPatch).
+void check_patch_options(const SimulateArgs& a) {
+  require_in("--radius", a.radius, 1e-9, 1e3, "m");
+  if (a.pressure) require_in("--pressure", *a.pressure, 1e-3, 1e12, "Pa");
+  require_in("--friction", a.friction, 1e-9, 100.0, "(a friction coefficient)");
+  require_in("--kx", a.kx, -1.0, 1.0);
+  require_in("--ky", a.ky, -1.0, 1.0);
+  require_in("--kappa", a.kappa, 1e-3, 1e3);
+  require_in("--speed-drop", a.speed_drop, -0.9, 0.95);
+  require_in("--speed-ref", a.speed_ref, 1e-3, 1e6, "m/s");
+}
+
+// The sweep's options, each within its range, and the size of the run before it starts.
+void check_sweep_options(const SimulateArgs& a) {
+  const DiagramSpec& s = a.spec;
+  require_in("--points", s.points, 1, static_cast<double>(kMaxSimulatedPoints));
+  if (a.directions.size() > kMaxDirections)
+    throw InvalidArgument("--directions", std::to_string(a.directions.size()) + " directions",
+                          "at most " + std::to_string(kMaxDirections));
+  const long long total = static_cast<long long>(s.points) *
+                          static_cast<long long>(std::max<std::size_t>(1, a.directions.size()));
+  if (total > kMaxSimulatedPoints)
+    throw InvalidArgument("--points x --directions", std::to_string(total) + " points",
+                          "at most " + std::to_string(kMaxSimulatedPoints) + " in all");
+  require_in("--psi-min", s.psi_min, 1e-9, 1e9);
+  require_in("--psi-max", s.psi_max, s.psi_min, 1e9, "(from --psi-min)");
+  require_in("--spin-speed", s.spin_speed_mps, 1e-9, 1e4, "m/s");
+  require_in("--direction", s.direction_rad, -1e3, 1e3, "rad");
+  for (double d : a.directions) require_in("--directions", d, -1e3, 1e3, "rad");
+  require_in("--noise-level", s.noise_level, 0.0, 100.0);
+  require_in("--noise-growth", s.noise_growth, 0.0, 100.0);
+  require_in("--time-step", s.time_step_s, 0.0, 1e6, "s (0: no t_s column)");
+  for (double o : a.offset) require_in("--offset", o, -1e12, 1e12, "N or N m");
+  require_in("--periodic", s.rig.periodic_amplitude_n, -1e12, 1e12, "N");
+}
+
+// --crosstalk C<-D=VALUE into the rig's matrix.
+void add_crosstalk(const std::string& x, RigEffects& rig) {
+  const auto arrow = x.find("<-"), eq = x.find('=');
+  int ci = -1, di = -1;
+  if (arrow != std::string::npos && eq != std::string::npos && eq > arrow)
+    for (int k = 0; k < kChannels; ++k) {
+      if (x.substr(0, arrow) == kChannelColumns[k]) ci = k;
+      if (x.substr(arrow + 2, eq - arrow - 2) == kChannelColumns[k]) di = k;
+    }
+  if (ci < 0 || di < 0 || ci == di)
+    throw app::UsageError("--crosstalk " + x + ": expected e.g. Mz_Nm<-Fx_N=0.002");
+  const double v = number_of("--crosstalk " + x.substr(0, eq), x.substr(eq + 1));
+  require_in("--crosstalk " + x.substr(0, eq), v, -10.0, 10.0);
+  rig.crosstalk[ci][di] = v;
+}
+
+// Every simulated value finite (a last check: the options' ranges are meant to ensure it).
+void check_finite(const MeasuredData& d) {
+  for (const MeasuredPoint& p : d.points)
+    for (int c = 0; c < kChannels; ++c)
+      if (p.force[c] && !std::isfinite(*p.force[c]))
+        throw std::runtime_error(std::string("the simulated ") + kChannelColumns[c] +
+                                 " is not finite: the options are too extreme together");
+}
+
+// One sweep a sliding direction, one after another in time.
+MeasuredData simulate_sweeps(const SimulateArgs& a, const ContactPatch& patch) {
+  MeasuredData d;
+  d.points.reserve(static_cast<std::size_t>(a.spec.points) * a.directions.size());
+  const std::uint64_t seed = a.spec.seed;
+  for (std::size_t k = 0; k < a.directions.size(); ++k) {
+    DiagramSpec sweep = a.spec;
+    sweep.direction_rad = a.directions[k];
+    sweep.seed = seed + 1000 * k;
+    MeasuredData part = a.model == "exact"
+                            ? simulate_diagrams(make_exact_model(patch), sweep)
+                            : simulate_diagrams(fractional_law_from_patch(patch), sweep);
+    for (MeasuredPoint& point : part.points) {
+      if (point.time) *point.time += static_cast<double>(k) * sweep.points * sweep.time_step_s;
+      d.points.push_back(point);
+    }
+  }
+  return d;
+}
+
 int run_simulate(SimulateArgs a) {
+  a.spec.seed = parse_seed(a.seed);
+  check_patch_options(a);
+  check_sweep_options(a);
+  a.spec.noise = parse_noise(a.noise);
+  for (const std::string& x : a.crosstalk) add_crosstalk(x, a.spec.rig);
   const ProfileChoice p = choose_profile(a.profile);
   ContactPatch patch;
   patch.radius_m = a.radius;
@@ -137,35 +298,13 @@ int run_simulate(SimulateArgs a) {
   if (a.offset.size() == 3) a.spec.rig.offset = {a.offset[0], a.offset[1], a.offset[2]};
   validate(patch);
   a.spec.radius_m = a.radius;
-  a.spec.noise = parse_noise(a.noise);
   // One sweep per sliding direction, one after another in time.
   if (a.directions.empty()) a.directions = {a.spec.direction_rad};
-  for (const std::string& x : a.crosstalk) {
-    const auto arrow = x.find("<-"), eq = x.find('=');
-    int ci = -1, di = -1;
-    if (arrow != std::string::npos && eq != std::string::npos && eq > arrow)
-      for (int k = 0; k < kChannels; ++k) {
-        if (x.substr(0, arrow) == kChannelColumns[k]) ci = k;
-        if (x.substr(arrow + 2, eq - arrow - 2) == kChannelColumns[k]) di = k;
-      }
-    if (ci < 0 || di < 0 || ci == di)
-      throw std::runtime_error("--crosstalk " + x + ": expected e.g. Mz_Nm<-Fx_N=0.002");
-    a.spec.rig.crosstalk[ci][di] = std::stod(x.substr(eq + 1));
-  }
-  MeasuredData d;
-  const std::uint64_t seed = a.spec.seed;
-  for (std::size_t k = 0; k < a.directions.size(); ++k) {
-    DiagramSpec sweep = a.spec;
-    sweep.direction_rad = a.directions[k];
-    sweep.seed = seed + 1000 * k;
-    MeasuredData part = a.model == "exact"
-                            ? simulate_diagrams(make_exact_model(patch), sweep)
-                            : simulate_diagrams(fractional_law_from_patch(patch), sweep);
-    for (MeasuredPoint& point : part.points) {
-      if (point.time) *point.time += static_cast<double>(k) * sweep.points * sweep.time_step_s;
-      d.points.push_back(point);
-    }
-  }
+  const long long total =
+      static_cast<long long>(a.spec.points) * static_cast<long long>(a.directions.size());
+  MeasuredData d = within_memory("simulating " + std::to_string(total) + " points",
+                                 [&] { return simulate_sweeps(a, patch); });
+  check_finite(d);
   std::ostringstream c;
   c << "simulated by " << kName << " " << kVersion << ": " << a.model << " model, profile "
     << a.profile << ", R = " << a.radius << " m, p* = " << patch.reference_pressure_pa
@@ -175,7 +314,8 @@ int run_simulate(SimulateArgs a) {
   if (a.spec.noise == SimulatedNoise::load_cell) c << " growth " << a.spec.noise_growth;
   c << ", seed " << a.spec.seed << ", psi in [" << a.spec.psi_min << ", " << a.spec.psi_max
     << "], u = omega R = " << a.spec.spin_speed_mps << " m/s";
-  write_measured_csv(a.out, d, c.str());
+  within_memory("writing " + std::to_string(total) + " points to " + a.out,
+                [&] { write_measured_csv(a.out, d, c.str()); });
   std::printf("wrote %s: %zu points (N = %.1f N)\n", a.out.c_str(), d.points.size(),
               normal_load(patch));
   return 0;
@@ -208,9 +348,10 @@ void add_fit_options(CLI::App& app, FitArgs& a, FitOptionHandles& h) {
                  "recorded variable, ignore=COLUMN leaves it out (every other numeric column is "
                  "kept as a recorded variable and listed in the report)");
   app.add_option(opt("fix"), a.fixes, key_help("fix"));
-  app.add_option(opt("loss"), r.loss, key_help("loss"));
+  app.add_option(opt("loss"), r.loss, key_help("loss"))->check(app::one_of(key_choices("loss")));
   app.add_option(opt("loss_scale"), r.loss_scale, key_help("loss_scale"));
-  app.add_option(opt("noise_model"), r.noise_model, key_help("noise_model"));
+  app.add_option(opt("noise_model"), r.noise_model, key_help("noise_model"))
+      ->check(app::one_of(key_choices("noise_model")));
   app.add_option(opt("noise_scale"), r.noise_scale, key_help("noise_scale"))->delimiter(',');
   app.add_flag("--no-loop", h.no_loop, "fit the fractional law only; do not close the loop");
   app.add_option(opt("alpha"), r.alpha, key_help("alpha"));
@@ -245,8 +386,10 @@ CLI::App* add_simulate_options(CLI::App& app, SimulateArgs& sim) {
   simulate->add_option("--ky", sim.ky, "pressure shift along y");
   simulate->add_option("--kappa", sim.kappa, "lateral/longitudinal friction ratio");
   simulate->add_option("--model", sim.model, "exact integrals or fractional law")
-      ->check(CLI::IsMember({"exact", "fractional"}));
-  simulate->add_option("--points", sim.spec.points, "number of points");
+      ->check(app::one_of({"exact", "fractional"}));
+  simulate->add_option(
+      "--points", sim.spec.points,
+      "number of points (at most " + std::to_string(kMaxSimulatedPoints) + " in all directions)");
   simulate->add_option("--psi-min", sim.spec.psi_min, "smallest psi = v/(omega R)");
   simulate->add_option("--psi-max", sim.spec.psi_max, "largest psi");
   simulate->add_option("--spin-speed", sim.spec.spin_speed_mps, "u = omega R [m/s]");
@@ -255,14 +398,17 @@ CLI::App* add_simulate_options(CLI::App& app, SimulateArgs& sim) {
       ->add_option("--directions", sim.directions,
                    "several sweeps, one per sliding direction [rad], e.g. 0,1.5708")
       ->delimiter(',');
-  simulate->add_option("--noise", sim.noise,
-                       "none|relative-uniform|relative-gaussian|additive-gaussian|load-cell");
+  simulate
+      ->add_option("--noise", sim.noise,
+                   "none|relative-uniform|relative-gaussian|additive-gaussian|load-cell")
+      ->check(app::one_of(
+          {"none", "relative-uniform", "relative-gaussian", "additive-gaussian", "load-cell"}));
   simulate->add_option("--noise-level", sim.spec.noise_level,
                        "noise amplitude (relative; of the channel's peak for additive-gaussian "
                        "and the constant part a of load-cell)");
   simulate->add_option("--noise-growth", sim.spec.noise_growth,
                        "load-cell noise: sigma = level max|y| + growth |y|");
-  simulate->add_option("--seed", sim.spec.seed, "random seed");
+  simulate->add_option("--seed", sim.seed, "random seed, a whole number in [0, 2^64 - 1]");
   simulate->add_option("--time-step", sim.spec.time_step_s, "t_s step between points [s]");
   simulate->add_option("--speed-drop", sim.speed_drop,
                        "friction falls by this fraction with slip speed (inside the integrals)");
@@ -303,16 +449,21 @@ int main(int argc, char** argv) {
   google::InitGoogleLogging(argv[0]);
   try {
     if (simulate->parsed()) return app::finish_output(run_simulate(sim));
-    if (a.data_path.empty()) throw std::runtime_error("no data file given (see --help)");
-    if (h.radius->count() == 0)
-      throw std::runtime_error("--radius is required (patch radius in m)");
+    if (a.data_path.empty()) throw app::UsageError("no data file given (see --help)");
+    if (h.radius->count() == 0) throw app::UsageError("--radius is required (patch radius in m)");
     std::optional<app::OutputFolder> plots;
     if (!a.plots_dir.empty()) plots.emplace(a.plots_dir);  // before the fit: a second run stops
     const int status = run_fit(a, plots ? &*plots : nullptr);
     if (plots && status == 0) plots->commit();  // an earlier run's plots not redrawn are removed
     return app::finish_output(status);
+  } catch (const app::UsageError& e) {
+    std::fprintf(stderr, "%s: error: %s\n", kName, e.what());
+    return app::kExitUsage;
+  } catch (const std::bad_alloc&) {
+    std::fprintf(stderr, "%s: error: out of memory (the machine's memory or ulimit -v)\n", kName);
+    return app::kExitFailure;
   } catch (const std::exception& e) {
     std::fprintf(stderr, "%s: error: %s\n", kName, e.what());
-    return 1;
+    return app::kExitFailure;
   }
 }

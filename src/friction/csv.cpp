@@ -8,7 +8,10 @@
 #include <cstring>
 #include <filesystem>
 #include <fstream>
-#include <sstream>
+#include <limits>
+#include <memory>
+#include <new>
+#include <stdexcept>
 
 namespace contensou {
 namespace {
@@ -17,26 +20,8 @@ bool is_space(char c) {
   return c == ' ' || c == '\t' || c == '\r';
 }
 
-// Lines split at LF, CRLF or a lone CR.
-std::vector<std::string> split_lines(const std::string& text) {
-  std::vector<std::string> lines;
-  std::string cur;
-  for (std::size_t i = 0; i < text.size(); ++i) {
-    const char c = text[i];
-    if (c == '\n' || c == '\r') {
-      lines.push_back(cur);
-      cur.clear();
-      if (c == '\r' && i + 1 < text.size() && text[i + 1] == '\n') ++i;
-    } else {
-      cur += c;
-    }
-  }
-  if (!cur.empty()) lines.push_back(cur);
-  return lines;
-}
-
 // The separator of a table: the header's most frequent of ',', ';', tab outside quotes.
-char sniff_separator(const std::string& header) {
+char sniff_separator(std::string_view header) {
   int n[3] = {0, 0, 0};
   bool quoted = false;
   for (char c : header) {
@@ -52,9 +37,9 @@ char sniff_separator(const std::string& header) {
 }
 
 // The fields of a line: separated by `sep` outside double quotes, trimmed, unquoted.
-std::vector<std::string> split_fields(const std::string& line, char sep, const std::string& file,
-                                      int lineno) {
-  std::vector<std::string> out;
+void split_fields(std::string_view line, char sep, const std::string& file, int lineno,
+                  std::vector<std::string>& out) {
+  out.clear();
   std::size_t i = 0;
   const std::size_t n = line.size();
   while (true) {
@@ -88,11 +73,10 @@ std::vector<std::string> split_fields(const std::string& line, char sep, const s
       while (end > start && is_space(line[end - 1])) --end;
       field = line.substr(start, end - start);
     }
-    out.push_back(field);
+    out.push_back(std::move(field));
     if (i >= n) break;
     ++i;  // the separator
   }
-  return out;
 }
 
 std::string lower(std::string s) {
@@ -187,68 +171,312 @@ std::string CsvTable::closest_column(const std::string& name,
   return closest_name(header, name, exclude);
 }
 
-CsvTable parse_csv(const std::string& text_in, const std::string& name) {
-  CsvTable table;
-  table.file = name;
-  std::string text = text_in;
-  if (text.compare(0, 3, "\xEF\xBB\xBF") == 0) text.erase(0, 3);  // UTF-8 byte-order mark
-  if (text.size() >= 2 &&
-      ((text[0] == '\xFF' && text[1] == '\xFE') || (text[0] == '\xFE' && text[1] == '\xFF')))
-    throw ParseError(name, 1, 1, "the file is UTF-16; save it as UTF-8 (or plain ASCII) CSV");
-  const std::vector<std::string> lines = split_lines(text);
-  int lineno = 0;
-  std::size_t width = 0;  // header columns up to the last named one
-  for (const std::string& line : lines) {
-    ++lineno;
-    if (const std::size_t nul = line.find('\0'); nul != std::string::npos)
-      throw ParseError(name, lineno, static_cast<int>(nul + 1),
-                       "a NUL byte: not a text file (or a corrupt one)");
-    std::size_t lead = 0;
-    while (lead < line.size() && is_space(line[lead])) ++lead;
-    if (lead == line.size() || line[lead] == '#') continue;
-    if (table.header.empty()) {
-      table.separator = sniff_separator(line);
-      std::vector<std::string> names = split_fields(line, table.separator, name, lineno);
-      width = names.size();
-      while (width > 0 && names[width - 1].empty()) --width;  // trailing empty columns
-      if (width == 0) throw ParseError(name, lineno, 1, "header row without a column name");
-      names.resize(width);
-      table.header = names;
-      table.header_line = lineno;
-      continue;
-    }
-    std::vector<std::string> fields = split_fields(line, table.separator, name, lineno);
-    // Cells past the header's last named column must be empty (trailing separators).
-    for (std::size_t k = width; k < fields.size(); ++k)
-      if (!fields[k].empty())
-        throw ParseError(name, lineno, 0,
-                         "cell " + std::to_string(k + 1) + " ('" + fields[k] +
-                             "') lies beyond the header's " + std::to_string(width) + " columns");
-    if (fields.size() > width) fields.resize(width);
-    // A line of separators only (a spreadsheet's empty row) is skipped.
-    if (std::all_of(fields.begin(), fields.end(), [](const std::string& f) { return f.empty(); }))
-      continue;
-    if (fields.size() < width)
-      throw ParseError(
-          name, lineno, 0,
-          "expected " + std::to_string(width) + " cells, found " + std::to_string(fields.size()));
-    table.rows.push_back({lineno, std::move(fields)});
-  }
-  if (table.header.empty()) throw ParseError(name, lineno, 0, "no header row (file is empty)");
-  return table;
+// --- CsvCells: [count][end of cell 0]...[end of cell count-1] as uint32, then the text.
+
+namespace {
+
+std::uint32_t load_u32(const char* p) {
+  std::uint32_t v = 0;
+  std::memcpy(&v, p, sizeof v);
+  return v;
 }
 
-CsvTable read_csv(const std::string& path) {
+void store_u32(char* p, std::uint32_t v) {
+  std::memcpy(p, &v, sizeof v);
+}
+
+// A block for cells of these texts (a row is at most CsvLimits::max_line_bytes, far below 4 GiB).
+std::unique_ptr<char[]> make_block(const std::vector<std::string_view>& cells) {
+  if (cells.empty()) return nullptr;
+  const std::size_t head = 4 * (cells.size() + 1);
+  std::size_t text = 0;
+  for (std::string_view c : cells) text += c.size();
+  if (head + text > std::numeric_limits<std::uint32_t>::max())
+    throw std::length_error("a CSV row of more than 4 GiB");
+  auto block = std::make_unique_for_overwrite<char[]>(head + text);
+  store_u32(block.get(), static_cast<std::uint32_t>(cells.size()));
+  std::size_t end = 0;
+  for (std::size_t i = 0; i < cells.size(); ++i) {
+    std::memcpy(block.get() + head + end, cells[i].data(), cells[i].size());
+    end += cells[i].size();
+    store_u32(block.get() + 4 * (i + 1), static_cast<std::uint32_t>(end));
+  }
+  return block;
+}
+
+std::vector<std::string_view> views_of(const std::vector<std::string>& cells) {
+  return {cells.begin(), cells.end()};
+}
+
+}  // namespace
+
+CsvCells::CsvCells(const std::vector<std::string>& cells) : block_(make_block(views_of(cells))) {}
+
+CsvCells::CsvCells(const CsvCells& other) {
+  if (!other.block_) return;
+  const std::size_t n = other.heap_bytes();
+  block_ = std::make_unique_for_overwrite<char[]>(n);
+  std::memcpy(block_.get(), other.block_.get(), n);
+}
+
+CsvCells& CsvCells::operator=(const CsvCells& other) {
+  if (this != &other) *this = CsvCells(other);
+  return *this;
+}
+
+std::size_t CsvCells::size() const {
+  return block_ ? load_u32(block_.get()) : 0;
+}
+
+std::size_t CsvCells::heap_bytes() const {
+  const std::size_t n = size();
+  return n == 0 ? 0 : 4 * (n + 1) + load_u32(block_.get() + 4 * n);
+}
+
+std::string_view CsvCells::view(std::size_t i) const {
+  const std::size_t n = size();
+  if (i >= n)
+    throw std::out_of_range("CSV cell " + std::to_string(i) + " of a row of " + std::to_string(n));
+  const char* p = block_.get();
+  const std::size_t begin = i == 0 ? 0 : load_u32(p + 4 * i), end = load_u32(p + 4 * (i + 1));
+  return {p + 4 * (n + 1) + begin, end - begin};
+}
+
+void CsvCells::push_back(std::string_view cell) {
+  std::vector<std::string_view> cells;
+  for (std::size_t i = 0; i < size(); ++i) cells.push_back(view(i));
+  cells.push_back(cell);
+  block_ = make_block(cells);
+}
+
+std::vector<std::string> CsvCells::strings() const {
+  std::vector<std::string> out;
+  for (std::size_t i = 0; i < size(); ++i) out.emplace_back(view(i));
+  return out;
+}
+
+namespace {
+
+// What a row costs besides its block: its CsvRow in the table and the allocator's own header.
+constexpr std::size_t kRowOverhead = sizeof(CsvRow) + 16;
+
+// "1024 MiB" for whole mebibytes, else "1000 bytes".
+std::string mib(std::uint64_t bytes) {
+  if (bytes >= (1u << 20) && bytes % (1u << 20) == 0) return std::to_string(bytes >> 20) + " MiB";
+  return std::to_string(bytes) + " bytes";
+}
+
+// The table built a line at a time, with the row and memory bounds checked at each row.
+class TableBuilder {
+ public:
+  TableBuilder(const std::string& name, const CsvLimits& limits) : limits_(limits) {
+    table_.file = name;
+  }
+  int line_number() const { return lineno_; }
+  const CsvLimits& limits() const { return limits_; }
+  const std::string& name() const { return table_.file; }
+  std::size_t rows() const { return table_.rows.size(); }
+
+  void line(std::string_view line);
+
+  CsvTable finish() {
+    if (table_.header.empty())
+      throw ParseError(table_.file, lineno_, 0, "no header row (file is empty)");
+    return std::move(table_);
+  }
+
+ private:
+  void header(std::string_view line);
+  void add_row();
+
+  CsvTable table_;
+  const CsvLimits& limits_;
+  int lineno_ = 0;
+  std::size_t width_ = 0;  // header columns up to the last named one
+  std::size_t memory_ = 0;
+  std::vector<std::string> fields_;  // the current line's, reused
+};
+
+void TableBuilder::header(std::string_view line) {
+  const std::string& name = table_.file;
+  table_.separator = sniff_separator(line);
+  split_fields(line, table_.separator, name, lineno_, fields_);
+  width_ = fields_.size();
+  while (width_ > 0 && fields_[width_ - 1].empty()) --width_;  // trailing empty columns
+  if (width_ == 0) throw ParseError(name, lineno_, 1, "header row without a column name");
+  fields_.resize(width_);
+  table_.header = fields_;
+  table_.header_line = lineno_;
+}
+
+void TableBuilder::line(std::string_view line) {
+  if (static_cast<std::size_t>(lineno_) >= limits_.max_lines)
+    throw ParseError(table_.file, lineno_ + 1, 0,
+                     "more than " + std::to_string(limits_.max_lines) +
+                         " lines, the reader's limit (comments and blank lines included)");
+  ++lineno_;
+  std::size_t lead = 0;
+  while (lead < line.size() && is_space(line[lead])) ++lead;
+  if (lead == line.size() || line[lead] == '#') return;
+  if (table_.header.empty()) return header(line);
+  const std::string& name = table_.file;
+  split_fields(line, table_.separator, name, lineno_, fields_);
+  // Cells past the header's last named column must be empty (trailing separators).
+  for (std::size_t k = width_; k < fields_.size(); ++k)
+    if (!fields_[k].empty())
+      throw ParseError(name, lineno_, 0,
+                       "cell " + std::to_string(k + 1) + " ('" + fields_[k] +
+                           "') lies beyond the header's " + std::to_string(width_) + " columns");
+  if (fields_.size() > width_) fields_.resize(width_);
+  // A line of separators only (a spreadsheet's empty row) is skipped.
+  if (std::all_of(fields_.begin(), fields_.end(), [](const std::string& f) { return f.empty(); }))
+    return;
+  if (fields_.size() < width_)
+    throw ParseError(
+        name, lineno_, 0,
+        "expected " + std::to_string(width_) + " cells, found " + std::to_string(fields_.size()));
+  add_row();
+}
+
+void TableBuilder::add_row() {
+  const std::string& name = table_.file;
+  if (table_.rows.size() >= limits_.max_rows)
+    throw ParseError(name, lineno_, 0,
+                     std::to_string(limits_.max_rows + 1) + " rows of data or more: " +
+                         (limits_.rows_advice.empty()
+                              ? "past the reader's limit of " + std::to_string(limits_.max_rows) +
+                                    " rows; split the file or thin its rows"
+                              : limits_.rows_advice));
+  CsvRow row{lineno_, CsvCells(fields_)};
+  memory_ += kRowOverhead + row.cells.heap_bytes();
+  if (memory_ > limits_.max_memory_bytes)
+    throw ParseError(name, lineno_, 0,
+                     "the table takes more than " + mib(limits_.max_memory_bytes) +
+                         " of memory after " + std::to_string(table_.rows.size()) +
+                         " data rows, the reader's limit: split the file or leave out columns");
+  table_.rows.push_back(std::move(row));
+}
+
+// Splits a stream of blocks into lines (at LF, CRLF or a lone CR, also across blocks) for the
+// builder, checking each byte for NUL and each line's length as it goes.
+class LineSplitter {
+ public:
+  explicit LineSplitter(TableBuilder& builder) : b_(builder) {}
+  void feed(std::string_view block);
+  void finish() {
+    if (!pending_.empty()) b_.line(pending_);
+  }
+
+ private:
+  void start(std::string_view& block);
+  void take(std::string_view part, bool complete);
+  [[noreturn]] void too_long() const {
+    throw ParseError(b_.name(), b_.line_number() + 1, 0,
+                     "a line longer than " + std::to_string(b_.limits().max_line_bytes) +
+                         " bytes, the reader's limit: not a table of numbers (or no line ends)");
+  }
+
+  TableBuilder& b_;
+  std::string pending_;  // the start of a line the next block goes on with
+  bool started_ = false, skip_lf_ = false;
+  std::uint64_t read_ = 0;
+};
+
+// The start of the text: a UTF-8 byte-order mark is dropped, UTF-16 refused.
+void LineSplitter::start(std::string_view& block) {
+  started_ = true;
+  if (block.substr(0, 3) == "\xEF\xBB\xBF") block.remove_prefix(3);
+  if (block.size() >= 2 &&
+      ((block[0] == '\xFF' && block[1] == '\xFE') || (block[0] == '\xFE' && block[1] == '\xFF')))
+    throw ParseError(b_.name(), 1, 1, "the file is UTF-16; save it as UTF-8 (or plain ASCII) CSV");
+}
+
+void LineSplitter::take(std::string_view part, bool complete) {
+  if (pending_.size() + part.size() > b_.limits().max_line_bytes) too_long();
+  if (!complete) {
+    pending_.append(part);
+  } else if (pending_.empty()) {
+    b_.line(part);
+  } else {
+    pending_.append(part);
+    b_.line(pending_);
+    pending_.clear();
+  }
+}
+
+void LineSplitter::feed(std::string_view block) {
+  read_ += block.size();
+  if (read_ > b_.limits().max_input_bytes)
+    throw ParseError(
+        b_.name(), b_.line_number() + 1, 0,
+        "more than " + mib(b_.limits().max_input_bytes) + " read, the reader's limit for one file");
+  if (!started_) start(block);
+  std::size_t i = 0;
+  if (skip_lf_ && !block.empty() && block[0] == '\n') i = 1;  // the LF of a CRLF cut in two
+  skip_lf_ = false;
+  std::size_t begin = i;
+  for (; i < block.size(); ++i) {
+    const char c = block[i];
+    if (c == '\0')
+      throw ParseError(b_.name(), b_.line_number() + 1,
+                       static_cast<int>(pending_.size() + i - begin + 1),
+                       "a NUL byte: not a text file (or a corrupt one)");
+    if (c != '\n' && c != '\r') continue;
+    take(block.substr(begin, i - begin), true);
+    if (c == '\r') {
+      if (i + 1 == block.size())
+        skip_lf_ = true;
+      else if (block[i + 1] == '\n')
+        ++i;
+    }
+    begin = i + 1;
+  }
+  take(block.substr(begin), false);
+}
+
+// Memory exhausted while reading: an error naming the file and how far it got.
+[[noreturn]] void out_of_memory(const TableBuilder& b) {
+  throw ParseError(b.name(), b.line_number(), 0,
+                   "out of memory after " + std::to_string(b.rows()) +
+                       " data rows: the file is too large for this machine's memory (or its "
+                       "memory limit, ulimit -v)");
+}
+
+}  // namespace
+
+CsvTable parse_csv(const std::string& text, const std::string& name, const CsvLimits& limits) {
+  TableBuilder builder(name, limits);
+  try {
+    LineSplitter lines(builder);
+    lines.feed(text);
+    lines.finish();
+    return builder.finish();
+  } catch (const std::bad_alloc&) {
+    out_of_memory(builder);
+  }
+}
+
+CsvTable read_csv(const std::string& path, const CsvLimits& limits) {
   std::error_code ec;
   if (std::filesystem::is_directory(path, ec))
     throw ParseError(path, 0, 0, "is a folder, not a CSV file");
   std::ifstream in(path, std::ios::binary);
   if (!in)
     throw ParseError(path, 0, 0, std::string("cannot open file (") + std::strerror(errno) + ")");
-  std::ostringstream ss;
-  ss << in.rdbuf();
-  if (in.bad()) throw ParseError(path, 0, 0, "cannot read file");
-  return parse_csv(ss.str(), path);
+  TableBuilder builder(path, limits);
+  try {
+    LineSplitter lines(builder);
+    std::vector<char> block(std::size_t{1} << 16);
+    while (in) {
+      in.read(block.data(), static_cast<std::streamsize>(block.size()));
+      lines.feed(std::string_view(block.data(), static_cast<std::size_t>(in.gcount())));
+    }
+    if (in.bad()) throw ParseError(path, builder.line_number(), 0, "cannot read file");
+    lines.finish();
+    return builder.finish();
+  } catch (const std::bad_alloc&) {
+    out_of_memory(builder);
+  }
 }
 
 }  // namespace contensou

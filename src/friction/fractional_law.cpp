@@ -11,6 +11,12 @@ namespace contensou {
 
 void validate(const FractionalLaw<double>& p) {
   detail::check_law(p);
+  // The pressure p* p(rho) (1 + kx x/R + ky y/R) stays positive on the patch only for
+  // |(kx, ky)| < 1 (theory.md section 2, seed eq. 9), as validate(ContactPatch) requires.
+  const double k = std::hypot(p.kx, p.ky);
+  if (!(k < 1.0))
+    throw InvalidArgument("|(kx, ky)|", format_value(k),
+                          "the pressure shift must be < 1 so that the pressure stays positive");
 }
 
 namespace {

@@ -274,7 +274,10 @@ PressureProfile seed_tire_profile() {
 }
 
 ProfileTable read_profile_table(const std::string& path) {
-  const CsvTable table = read_csv(path);
+  CsvLimits limits;  // reading stops at the first row past the table's limit
+  limits.max_rows = kMaxProfilePoints;
+  limits.rows_advice = too_many_points_advice();
+  const CsvTable table = read_csv(path, limits);
   const int ir = table.column("rho"), ip = table.column("pressure_Pa");
   if (ir < 0 || ip < 0) {
     const std::string missing = ir < 0 ? "rho" : "pressure_Pa";
@@ -283,9 +286,6 @@ ProfileTable read_profile_table(const std::string& path) {
                      "missing column '" + missing + "' (need rho,pressure_Pa" +
                          (close.empty() ? "" : "; did you mean '" + close + "'?") + ")");
   }
-  if (table.rows.size() > kMaxProfilePoints)
-    throw ParseError(path, table.rows[kMaxProfilePoints].line, 0,
-                     std::to_string(table.rows.size()) + " rows: " + too_many_points_advice());
   ProfileTable out;
   for (const CsvRow& row : table.rows) {
     double v[2];

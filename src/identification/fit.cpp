@@ -315,6 +315,11 @@ ModelSpec base_spec_for(const MeasuredData& data, const IdentificationOptions& o
     if (i < 0 || i > kKx)
       throw InvalidArgument("fix", name, "unknown parameter (use F0_N, a, M0_Nm, m or kx)");
     require_finite(name.c_str(), value);
+    const ParameterBounds b = parameter_bounds(i);
+    if (!(value >= b.lower && value <= b.upper))
+      throw InvalidArgument("fix " + name, format_value(value),
+                            "must lie in [" + format_value(b.lower) + ", " + format_value(b.upper) +
+                                "], the fit's bounds for it");
     s.free[i] = false;
     s.value[i] = value;
   }
@@ -472,6 +477,10 @@ FitSetup prepare_fit(const MeasuredData& data, const ModelSpec& spec, const Nois
                           "every parameter is fixed, nothing is left to fit: leave one free");
   int scales = 0;
   for (int c = 0; c < kChannels; ++c) scales += s.counts[c] > 0 ? noise_parameters(noise) : 0;
+  if (noise.given)
+    for (double g : *noise.given)
+      if (!(g >= 1e-12 && g <= 1e12))  // chi^2 finite for forces up to 1e8 N
+        throw InvalidArgument("noise scale", format_value(g), "must lie in [1e-12, 1e12]");
   if (noise.given && noise.model == NoiseModel::affine)
     throw InvalidArgument("noise scale", "given",
                           "given noise scales are constant: use the additive or relative model");

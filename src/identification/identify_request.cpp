@@ -6,6 +6,7 @@
 #include <stdexcept>
 
 #include "contensou/friction/contact_patch.hpp"
+#include "contensou/identification/effect_model.hpp"
 
 namespace contensou {
 
@@ -49,6 +50,15 @@ const char* key_help(std::string_view key) {
   throw std::logic_error("no identification key '" + std::string(key) + "'");
 }
 
+const std::vector<std::string>& key_choices(std::string_view key) {
+  static const std::vector<std::string> loss = {"none", "huber", "cauchy"};
+  static const std::vector<std::string> noise = {"auto", "additive", "relative", "affine"};
+  static const std::vector<std::string> none;
+  if (key == "loss") return loss;
+  if (key == "noise_model") return noise;
+  return none;
+}
+
 namespace {
 
 // Keys that name a choice among words: the value must be one of them.
@@ -59,6 +69,24 @@ void require_one_of(const std::string& name, const std::string& value,
   for (const std::string& w : words) list += (list.empty() ? "" : ", ") + w;
   throw InvalidArgument(name, value, "must be one of " + list);
 }
+
+// A fixed parameter: a name of the fit's, a value within the fit's bounds for it (the bounds the
+// free parameter keeps, effect_model.cpp).
+void check_fix(const std::string& key, const std::string& name, double value) {
+  const int i = parameter_index_by_name(name);
+  if (i < 0 || i > kKx)
+    throw InvalidArgument(key, name + "=" + format_value(value),
+                          "unknown parameter (use F0_N, a, M0_Nm, m or kx)");
+  if (!std::isfinite(value))
+    throw InvalidArgument(key + " " + name, format_value(value), "must be finite");
+  const ParameterBounds b = parameter_bounds(i);
+  if (!(value >= b.lower && value <= b.upper))
+    throw InvalidArgument(key + " " + name, format_value(value),
+                          "must lie in [" + format_value(b.lower) + ", " + format_value(b.upper) +
+                              "]" + (i == kKx ? " (|kx| >= 1 makes the pressure negative)" : ""));
+}
+
+}  // namespace
 
 // The checks that involve more than one key, and the ranges of single keys.
 void validate(const IdentifyRequest& r) {
@@ -80,21 +108,25 @@ void validate(const IdentifyRequest& r) {
   if (r.profile_smoothing > 0 && (r.profile.empty() || !std::filesystem::exists(r.profile)))
     throw std::invalid_argument(key("profile_smoothing") + " needs " + key("profile") +
                                 " with a CSV file");
-  require_one_of(key("loss"), r.loss, {"none", "huber", "cauchy"});
+  require_one_of(key("loss"), r.loss, key_choices("loss"));
   require_positive(key("loss_scale").c_str(), r.loss_scale);
-  require_one_of(key("noise_model"), r.noise_model, {"auto", "additive", "relative", "affine"});
+  require_one_of(key("noise_model"), r.noise_model, key_choices("noise_model"));
   if (r.noise_model == "affine" && !r.noise_scale.empty())
     throw std::invalid_argument(key("noise_scale") + " gives constant scales: use " +
                                 key("noise_model") + " additive or relative with it");
   if (!r.noise_scale.empty() && r.noise_scale.size() != kChannels)
     throw std::invalid_argument(key("noise_scale") + " needs three values: Fx, Fy, Mz");
-  for (double s : r.noise_scale) require_positive(key("noise_scale").c_str(), s);
+  // Scales in [1e-12, 1e12] (N, N m) keep chi^2 and the criteria finite for forces in the fit's
+  // range (1e-6 to 1e8 N): a scale of 1e-300 would make chi^2 overflow to inf.
+  for (double s : r.noise_scale)
+    if (!(s >= 1e-12 && s <= 1e12))
+      throw InvalidArgument(key("noise_scale"), format_value(s), "must lie in [1e-12, 1e12]");
   if (!(r.alpha >= 1e-12 && r.alpha <= 0.5))
     throw InvalidArgument(key("alpha"), format_value(r.alpha), "must lie in [1e-12, 0.5]");
-  for (const auto& [name, value] : r.fix)
-    if (!std::isfinite(value))
-      throw InvalidArgument(key("fix") + " " + name, format_value(value), "must be finite");
+  for (const auto& [name, value] : r.fix) check_fix(key("fix"), name, value);
 }
+
+namespace {
 
 // The profile as named, and N from it when its pressure is known.
 std::optional<double> load_from_profile(const IdentifyRequest& r, ProfileChoice& profile) {

@@ -85,8 +85,10 @@ MeasuredData measured_data_from_table(const CsvTable& t, const ColumnRenames& re
                                       KeyStyle style) {
   // Every check of the header (names, units, renames, required and misspelt columns) is
   // lab_columns'; the table is read here only for its cells' numbers.
-  const LabHeader header{t.header,      t.rows.empty() ? nullptr : &t.rows.front().cells, t.file,
-                         t.header_line, t.rows.empty() ? 0 : t.rows.front().line,         style};
+  const std::vector<std::string> first_row =
+      t.rows.empty() ? std::vector<std::string>{} : t.rows.front().cells.strings();
+  const LabHeader header{t.header,      t.rows.empty() ? nullptr : &first_row,    t.file,
+                         t.header_line, t.rows.empty() ? 0 : t.rows.front().line, style};
   const LabColumns cols = resolve_measured_columns(header, renames);
   MeasuredData data;
   data.source = t.file;

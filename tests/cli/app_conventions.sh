@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # The conventions every app keeps (apps/common/cli.hpp): --version prints "NAME VERSION" (the
 # CMake project's), --help documents the exit statuses, and the statuses are 0 on success,
-# 2 on a usage error and 1 on a failure.
+# 2 on a usage error (the nearest option named) and 1 on a failure (a missing input file too).
 # Usage: app_conventions.sh VERSION IDENTIFY SHIMMY ENGINE_COEFFICIENTS
 set -u
 version=$1
@@ -50,6 +50,14 @@ expect 1 "contensou-identify on a missing file" "$identify" no-such-file.csv --r
 expect 1 "contensou-engine-coefficients with a negative radius" "$engines" --radius -1 --friction 0.5
 echo '{"scenario": ' > broken.json
 expect 1 "contensou-shimmy with a broken configuration" "$shimmy" --print-config --config broken.json
-expect 2 "contensou-shimmy with a configuration that does not exist" "$shimmy" --config no.json
+expect 1 "contensou-shimmy with a configuration that does not exist" "$shimmy" --config no.json
 expect 0 "contensou-engine-coefficients on a valid patch" "$engines" --radius 0.05 --friction 0.5
+# A typo is named with the nearest option, before any missing required option.
+expect 2 "contensou-engine-coefficients with a misspelt option" "$engines" --radiuss 0.1
+grep -q "unknown option --radiuss (did you mean --radius?)" err.txt ||
+  { echo "FAIL: the typo --radiuss is not named with --radius: $(cat err.txt)"; failed=1; }
+expect 2 "contensou-identify with a word not among the allowed ones" "$identify" data.csv \
+  --radius 0.087 --loss hubber
+grep -q "none, huber, cauchy" err.txt ||
+  { echo "FAIL: --loss hubber does not name the allowed values: $(cat err.txt)"; failed=1; }
 exit $failed

@@ -81,7 +81,7 @@ expect "missing data file" "cannot open file" \
   "$app" "$dir/absent.csv" --radius 0.087 --json "$dir/report.json"
 expect "bad --fix" "expected NAME=VALUE" \
   "$app" "$good" --radius 0.087 --fix a --json "$dir/report.json"
-expect "unknown --fix" "fix = bogus" \
+expect "unknown --fix" "--fix bogus: no such parameter" \
   "$app" "$good" --radius 0.087 --fix bogus=1 --json "$dir/report.json"
 
 # And the good file gives a complete report.

@@ -3,6 +3,9 @@
 #include "contensou/friction/csv.hpp"
 #include "contensou/friction/error.hpp"
 
+#include <cstdio>
+#include <fstream>
+
 using namespace contensou;
 
 namespace {
@@ -131,4 +134,113 @@ TEST(Csv, SuggestsTheClosestColumn) {
 
 TEST(Csv, MissingFileIsAnError) {
   EXPECT_THROW(read_csv("/nonexistent/file.csv"), ParseError);
+}
+
+// The cells of a row in one block: read back as written, copied deeply, grown a cell at a time,
+// and no larger than their text plus 4 bytes a cell (and 4 for the count).
+TEST(Csv, RowCellsTakeTheirTextPlusFourBytesACell) {
+  CsvCells cells(std::vector<std::string>{"1.5", "", "said \"hi\"", "-2e3"});
+  ASSERT_EQ(cells.size(), 4u);
+  EXPECT_EQ(cells[0], "1.5");
+  EXPECT_EQ(cells[1], "");
+  EXPECT_EQ(cells.view(2), "said \"hi\"");
+  EXPECT_EQ(cells.heap_bytes(), 3u + 0u + 9u + 4u + 4u * 5u);
+  CsvCells copy = cells;
+  copy.push_back("x");
+  EXPECT_EQ(cells.size(), 4u);
+  EXPECT_EQ(copy.size(), 5u);
+  EXPECT_EQ(copy.strings(), (std::vector<std::string>{"1.5", "", "said \"hi\"", "-2e3", "x"}));
+  EXPECT_THROW(cells.view(4), std::out_of_range);
+  EXPECT_EQ(CsvCells().size(), 0u);
+  EXPECT_EQ(CsvCells().heap_bytes(), 0u);
+  // A table's rows as parse_csv builds them.
+  const CsvTable t = parse_csv("a,b,c\n1,22,333\n", "mem.csv");
+  EXPECT_EQ(t.rows[0].cells.heap_bytes(), 6u + 4u * 4u);
+}
+
+// Each bound of CsvLimits ends the read with an error naming it, at the line where it is passed.
+TEST(Csv, ReadingStopsAtEachStatedBound) {
+  CsvLimits l;
+  l.max_line_bytes = 16;
+  try {
+    parse_csv("a,b\n1,2\n123456789,123456789\n", "f.csv", l);
+    FAIL();
+  } catch (const ParseError& e) {
+    EXPECT_EQ(e.line(), 3) << e.what();
+    EXPECT_NE(std::string(e.what()).find("a line longer than 16 bytes"), std::string::npos);
+  }
+  EXPECT_NO_THROW(parse_csv("a,b\n1234567,12345678\n", "f.csv", l));  // 16 bytes: the limit
+  l = CsvLimits{};
+  l.max_rows = 2;
+  EXPECT_EQ(parse_csv("a\n1\n# two rows\n2\n", "f.csv", l).rows.size(), 2u);
+  try {
+    parse_csv("a\n1\n2\n3\n", "f.csv", l);
+    FAIL();
+  } catch (const ParseError& e) {
+    EXPECT_EQ(e.line(), 4) << e.what();
+    EXPECT_NE(
+        std::string(e.what()).find("3 rows of data or more: past the reader's limit of 2 rows"),
+        std::string::npos);
+  }
+  l = CsvLimits{};
+  l.max_lines = 3;
+  try {
+    parse_csv("a\n#\n\n\n1\n", "f.csv", l);
+    FAIL();
+  } catch (const ParseError& e) {
+    EXPECT_EQ(e.line(), 4) << e.what();
+    EXPECT_NE(std::string(e.what()).find("more than 3 lines"), std::string::npos);
+  }
+  l = CsvLimits{};
+  l.max_memory_bytes = 1000;  // a row of "1" takes its CsvRow, 9 bytes and the allocator's 16
+  std::string many = "a\n";
+  for (int i = 0; i < 100; ++i) many += "1\n";
+  try {
+    parse_csv(many, "f.csv", l);
+    FAIL();
+  } catch (const ParseError& e) {
+    EXPECT_NE(std::string(e.what()).find("the table takes more than 1000 bytes of memory after"),
+              std::string::npos)
+        << e.what();
+  }
+  l = CsvLimits{};
+  l.max_input_bytes = 10;
+  EXPECT_THROW(parse_csv("a\n1\n2\n3\n4\n5\n", "f.csv", l), ParseError);
+  EXPECT_NO_THROW(parse_csv("a\n1\n2\n3\n4\n", "f.csv", l));  // 10 bytes
+}
+
+// The reader checks as it reads, a block at a time: an endless device ends at once with the
+// byte's position, and lines (CRLF included) cut across the 64 KiB blocks read back whole.
+TEST(Csv, ReadsAsItGoesAndChecksEachByte) {
+  try {
+    read_csv("/dev/zero");
+    FAIL();
+  } catch (const ParseError& e) {
+    EXPECT_EQ(e.line(), 1);
+    EXPECT_EQ(e.column(), 1);
+    EXPECT_NE(std::string(e.what()).find("a NUL byte"), std::string::npos);
+  }
+  const std::string path = ::testing::TempDir() + "contensou-csv-blocks.csv";
+  std::string text = "x,y\r\n";
+  int rows = 0;
+  while (text.size() < 3 * 65536) {
+    text += std::to_string(rows) + "," + std::to_string(2 * rows) + (rows % 3 ? "\r\n" : "\n");
+    ++rows;
+  }
+  bool crlf_cut = false;  // some shift puts a CRLF's CR last in a block, its LF first in the next
+  for (std::size_t shift = 0; shift < 40; ++shift) {
+    const std::string shifted = std::string(shift, '#') + "\n" + text;
+    crlf_cut = crlf_cut || (shifted[65535] == '\r' && shifted[65536] == '\n');
+    {
+      std::ofstream out(path, std::ios::binary);
+      out << shifted;
+    }
+    const CsvTable t = read_csv(path);
+    ASSERT_EQ(t.rows.size(), static_cast<std::size_t>(rows));
+    for (int r : {0, rows / 2, rows - 1})
+      EXPECT_EQ(*t.number(t.rows[static_cast<std::size_t>(r)], 1), 2.0 * r);
+    EXPECT_EQ(t.rows.back().line, rows + 2);
+  }
+  EXPECT_TRUE(crlf_cut);
+  std::remove(path.c_str());
 }

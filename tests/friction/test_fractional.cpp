@@ -223,3 +223,23 @@ TEST(FractionalLaw, ValidateNamesTheBadParameter) {
   law.radius = 0;
   EXPECT_THROW(validate(law), InvalidArgument);
 }
+
+// A pressure shift |(kx, ky)| >= 1 makes p* p(rho) (1 + kx x/R + ky y/R) negative on part of the
+// patch (theory.md section 2): refused as validate(ContactPatch) refuses it.
+TEST(FractionalLaw, ValidateRefusesAShiftThatMakesThePressureNegative) {
+  FractionalLaw<double> law = fractional_law_from_patch(seed_patch());
+  law.kx = 0.6;
+  law.ky = 0.79;  // |k| = 0.992
+  EXPECT_NO_THROW(validate(law));
+  for (const auto& [kx, ky] : {std::pair{1.5, 0.0}, {0.0, -1.0}, {0.8, 0.61}}) {
+    law.kx = kx;
+    law.ky = ky;
+    try {
+      validate(law);
+      FAIL() << "kx = " << kx << ", ky = " << ky << " accepted";
+    } catch (const InvalidArgument& e) {
+      EXPECT_EQ(e.parameter(), "|(kx, ky)|");
+      EXPECT_NE(std::string(e.what()).find("pressure stays positive"), std::string::npos);
+    }
+  }
+}

@@ -10,6 +10,7 @@
 #include <thread>
 
 #include "contensou/friction/contact_patch.hpp"
+#include "contensou/identification/fit.hpp"
 #include "contensou/identification/identify_request.hpp"
 #include "contensou/identification/simulation.hpp"
 
@@ -102,6 +103,27 @@ TEST(IdentifyRequest, BadValuesAreRefusedNamingTheKeyAndTheRange) {
        "--fix a = nan"},
       {[](IdentifyRequest& q) { q.profile = "/nowhere/profile.csv"; }, "/nowhere/profile.csv",
        "/nowhere/profile.csv"},
+      // A fixed parameter within the fit's bounds: kx = 1.5 would make the pressure negative.
+      {[](IdentifyRequest& q) { q.fix["kx"] = 1.5; },
+       "fix kx = 1.5: must lie in [-0.95, 0.95] (|kx| >= 1 makes the pressure negative)",
+       "--fix kx = 1.5: must lie in [-0.95, 0.95]"},
+      {[](IdentifyRequest& q) { q.fix["a"] = -1.0; }, "fix a = -1: must lie in [1e-12, inf]",
+       "--fix a = -1"},
+      {[](IdentifyRequest& q) { q.fix["b1"] = 0.1; }, "unknown parameter (use F0_N",
+       "--fix = b1=0.1: unknown parameter"},
+      // Noise scales that would make chi^2 overflow (1e-300 N) or that no force reaches.
+      {[](IdentifyRequest& q) {
+         q.noise_scale = {1e-300, 1.0, 1.0};
+       },
+       "noise_scale = 1e-300: must lie in [1e-12, 1e12]", "--noise-scale = 1e-300"},
+      {[](IdentifyRequest& q) {
+         q.noise_scale = {1.0, 1.0, 1e300};
+       },
+       "noise_scale = 1e+300: must lie in [1e-12, 1e12]", "--noise-scale = 1e+300"},
+      {[](IdentifyRequest& q) { q.profile_smoothing = -1; },
+       "profile_smoothing = -1: must lie in [0, 64]", "--profile-smoothing = -1"},
+      {[](IdentifyRequest& q) { q.profile_smoothing = 65; },
+       "profile_smoothing = 65: must lie in [0, 64]", "--profile-smoothing = 65"},
   };
   for (const Case& c : cases) {
     IdentifyRequest q = r;
@@ -193,5 +215,52 @@ TEST(IdentifyRequest, TheNoiseModelKeyChoosesTheModelOrLetsTheLoopChoose) {
     o = options(r);
     EXPECT_EQ(o.fit.noise_model, model) << word;
     EXPECT_FALSE(o.loop->choose_noise_model) << word;
+  }
+}
+
+// One rule for both front ends: 0 (the default) interpolates, so it is accepted with or without
+// a profile; validate() alone (no file read) gives the same verdicts as identify_options.
+TEST(IdentifyRequest, ProfileSmoothingZeroInterpolatesAndValidateAloneChecksTheRanges) {
+  IdentifyRequest r;
+  r.radius_m = 0.087;
+  r.profile_smoothing = 0;
+  EXPECT_NO_THROW(validate(r));
+  r.profile = "hertz";
+  EXPECT_NO_THROW(validate(r));
+  r.profile_smoothing = 3;  // a series needs a table to fit
+  EXPECT_THROW(validate(r), std::invalid_argument);
+  r = IdentifyRequest{};
+  r.radius_m = 0.087;
+  r.fix["kx"] = 0.95;  // the bound itself is in range
+  EXPECT_NO_THROW(validate(r));
+  r.fix["kx"] = -0.9500001;
+  EXPECT_THROW(validate(r), std::invalid_argument);
+}
+
+TEST(IdentifyRequest, KeysThatNameAChoiceListTheirWords) {
+  EXPECT_EQ(key_choices("loss"), (std::vector<std::string>{"none", "huber", "cauchy"}));
+  EXPECT_EQ(key_choices("noise_model"),
+            (std::vector<std::string>{"auto", "additive", "relative", "affine"}));
+  EXPECT_TRUE(key_choices("radius").empty());
+  for (const std::string& w : key_choices("loss")) {
+    IdentifyRequest r;
+    r.radius_m = 0.087;
+    r.loss = w;
+    EXPECT_NO_THROW(validate(r)) << w;
+  }
+}
+
+// The library itself, without the request: a fixed kx outside the fit's bounds is refused too.
+TEST(IdentifyRequest, TheFitRefusesAFixedParameterOutsideItsBounds) {
+  IdentificationOptions o;
+  o.radius_m = 0.087;
+  o.fixed["kx"] = 1.5;
+  try {
+    base_spec_for(sweep(std::nullopt), o);
+    FAIL() << "kx = 1.5 accepted";
+  } catch (const InvalidArgument& e) {
+    EXPECT_NE(std::string(e.what()).find("fix kx = 1.5: must lie in [-0.95, 0.95]"),
+              std::string::npos)
+        << e.what();
   }
 }

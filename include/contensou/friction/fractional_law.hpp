@@ -59,7 +59,9 @@ FractionalLaw<double> fractional_law_from_patch(const ContactPatch& patch);
 FractionalLaw<double> fractional_law_fitted(const ContactPatch& patch, double psi_min = 1e-2,
                                             double psi_max = 1e2, int n = 41);
 
-// Throws InvalidArgument naming the first bad parameter.
+// Throws InvalidArgument naming the first bad parameter; also a pressure shift |(kx, ky)| >= 1,
+// under which the pressure would be negative on part of the patch (evaluation itself, used
+// inside fits, checks the rest only).
 void validate(const FractionalLaw<double>& law);
 
 namespace detail {

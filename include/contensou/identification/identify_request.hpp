@@ -54,6 +54,17 @@ struct IdentifyRun {
   ReportInput input;  // the report's description of the input (data.source names the data)
 };
 
+// The words a key that names a choice accepts ("loss": none, huber, cauchy; "noise_model"),
+// empty for a key that does not name one.
+const std::vector<std::string>& key_choices(std::string_view key);
+
+// The checks of the request alone (no file read): each key's range, the keys that go together,
+// a fixed parameter within the fit's bounds for it (kx in [-0.95, 0.95]: |kx| >= 1 makes the
+// pressure negative). Throws std::invalid_argument naming the key, the value and the range.
+// profile_smoothing: 0 (the default) interpolates a profile table, 1..64 fits a series of that
+// many terms (a CSV profile needed), the same rule for the app and for Python.
+void validate(const IdentifyRequest& request);
+
 // The library's options from a request, and the profile it chooses. Throws
 // std::invalid_argument naming the key (as request.style writes it), the value and the range.
 IdentifyOptions identify_options(const IdentifyRequest& request, ProfileChoice& profile);
