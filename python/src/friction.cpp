@@ -158,15 +158,37 @@ double cpp_loop_fractional(const FractionalLaw<double>& law, InArray vx, InArray
   return std::chrono::duration<double>(t1 - t0).count();
 }
 
+// A patch argument: a ContactPatch, else a short TypeError naming the argument.
+const ContactPatch& patch_argument(const char* name, nb::handle value) {
+  return object_argument<ContactPatch>(name, value, "a ContactPatch");
+}
+
+// The arguments of ContactPatch(...), each checked by the package's rule (common.hpp).
+struct PatchArguments {
+  nb::object radius_m, pressure, friction, kappa, profile, slip, normal_load;
+};
+
 // ContactPatch(radius_m, reference_pressure_pa, friction, kappa, profile, slip_speed_friction,
-// *, normal_load): every argument checked here, so that a bad patch fails where it is made.
-void init_patch(ContactPatch* self, std::optional<double> radius_m, std::optional<double> pressure,
-                std::optional<double> friction, double kappa,
-                std::optional<PressureProfile> profile,
-                std::optional<SlipSpeedFriction<double>> slip, std::optional<double> normal_load) {
+// *, normal_load): every argument checked here, so that a bad patch fails where it is made; a
+// profile is a PressureProfile or a built-in profile's name, as identify(profile=...) takes.
+ContactPatch make_patch(const PatchArguments& a) {
   const char* const how =
       "ContactPatch(radius_m=..., normal_load=... or reference_pressure_pa=..., friction=...); "
       "ContactPatch.seed_tire() is the seed's tire";
+  const std::optional<double> radius_m = optional_number_argument("radius_m", a.radius_m);
+  const std::optional<double> pressure =
+      optional_number_argument("reference_pressure_pa", a.pressure);
+  const std::optional<double> friction = optional_number_argument("friction", a.friction);
+  const std::optional<double> normal_load = optional_number_argument("normal_load", a.normal_load);
+  const double kappa = number_argument("kappa", a.kappa);
+  const PressureProfile shape =
+      a.profile.is_none()
+          ? uniform_profile()
+          : nb::cast<PressureProfile>(checked_argument("profile", "profile", a.profile));
+  std::optional<SlipSpeedFriction<double>> slip;
+  if (!a.slip.is_none())
+    slip = object_argument<SlipSpeedFriction<double>>("slip_speed_friction", a.slip,
+                                                      "a SlipSpeedFriction or None");
   if (!radius_m) throw InvalidArgument("radius_m", "missing", std::string("needed: ") + how);
   require_positive("radius_m", *radius_m);
   if (!friction) throw InvalidArgument("friction", "missing", std::string("needed: ") + how);
@@ -174,7 +196,6 @@ void init_patch(ContactPatch* self, std::optional<double> radius_m, std::optiona
     throw InvalidArgument("normal_load, reference_pressure_pa",
                           normal_load ? "both given" : "neither given",
                           "give one: the load N [N] or the reference pressure p* [Pa]");
-  const PressureProfile shape = profile ? *profile : uniform_profile();
   ContactPatch p;
   if (normal_load) {
     p = ContactPatch::from_normal_load(*radius_m, *normal_load, shape, *friction, kappa);
@@ -187,7 +208,7 @@ void init_patch(ContactPatch* self, std::optional<double> radius_m, std::optiona
   }
   p.slip_speed_friction = slip;
   validate(p);
-  new (self) ContactPatch(std::move(p));
+  return p;
 }
 
 void bind_profiles(nb::module_& m) {
@@ -255,11 +276,17 @@ void bind_patch(nb::module_& m) {
       m, "SlipSpeedFriction", "f(w) = f_k + (f_s - f_k) exp(-(w / w_s)^delta), w the slip speed")
       .def(
           "__init__",
-          [](SlipSpeedFriction<double>* s, double fs, double fk, double ws, double delta) {
-            new (s) SlipSpeedFriction<double>{fs, fk, ws, delta};
+          [](SlipSpeedFriction<double>* s, nb::handle fs, nb::handle fk, nb::handle ws,
+             nb::handle delta) {
+            new (s) SlipSpeedFriction<double>{number_argument("static_coefficient", fs),
+                                              number_argument("kinetic_coefficient", fk),
+                                              number_argument("reference_speed", ws),
+                                              number_argument("exponent", delta)};
           },
           "static_coefficient"_a = 0.3, "kinetic_coefficient"_a = 0.3, "reference_speed"_a = 1.0,
-          "exponent"_a = 1.0)
+          "exponent"_a = 1.0,
+          nb::sig("def __init__(self, static_coefficient: float = 0.3, kinetic_coefficient: "
+                  "float = 0.3, reference_speed: float = 1.0, exponent: float = 1.0) -> None"))
       .def_rw("static_coefficient", &SlipSpeedFriction<double>::static_coefficient)
       .def_rw("kinetic_coefficient", &SlipSpeedFriction<double>::kinetic_coefficient)
       .def_rw("reference_speed", &SlipSpeedFriction<double>::reference_speed)
@@ -270,14 +297,34 @@ void bind_patch(nb::module_& m) {
                            "Give radius_m, friction and either normal_load [N] (p* = N / (2 pi "
                            "R^2 A^1) is derived) or reference_pressure_pa; checked at once. "
                            "ContactPatch.seed_tire() is the seed's tire.")
-      .def("__init__", &init_patch, "radius_m"_a.none() = nb::none(),
-           "reference_pressure_pa"_a.none() = nb::none(), "friction"_a.none() = nb::none(),
-           "kappa"_a = 1.0, "profile"_a.none() = nb::none(),
-           "slip_speed_friction"_a.none() = nb::none(), nb::kw_only(),
-           "normal_load"_a.none() = nb::none())
-      .def_static("from_normal_load", &ContactPatch::from_normal_load, "radius_m"_a,
-                  "normal_load"_a, "profile"_a, "friction"_a, "kappa"_a = 1.0,
-                  "the patch carrying the load N [N]: p* = N / (2 pi R^2 A^1)")
+      .def(
+          "__init__",
+          [](ContactPatch* self, nb::object radius_m, nb::object pressure, nb::object friction,
+             nb::object kappa, nb::object profile, nb::object slip, nb::object normal_load) {
+            new (self) ContactPatch(
+                make_patch({radius_m, pressure, friction, kappa, profile, slip, normal_load}));
+          },
+          "radius_m"_a.none() = nb::none(), "reference_pressure_pa"_a.none() = nb::none(),
+          "friction"_a.none() = nb::none(), "kappa"_a = 1.0, "profile"_a.none() = nb::none(),
+          "slip_speed_friction"_a.none() = nb::none(), nb::kw_only(),
+          "normal_load"_a.none() = nb::none(),
+          nb::sig("def __init__(self, radius_m: float | None = None, reference_pressure_pa: "
+                  "float | None = None, friction: float | None = None, kappa: float = 1.0, "
+                  "profile: PressureProfile | str | None = None, slip_speed_friction: "
+                  "SlipSpeedFriction | None = None, *, normal_load: float | None = None) -> None"))
+      .def_static(
+          "from_normal_load",
+          [](nb::handle radius_m, nb::handle normal_load, nb::handle profile, nb::handle friction,
+             nb::handle kappa) {
+            return ContactPatch::from_normal_load(
+                number_argument("radius_m", radius_m), number_argument("normal_load", normal_load),
+                nb::cast<PressureProfile>(checked_argument("profile", "profile", profile)),
+                number_argument("friction", friction), number_argument("kappa", kappa));
+          },
+          "radius_m"_a, "normal_load"_a, "profile"_a, "friction"_a, "kappa"_a = 1.0,
+          nb::sig("def from_normal_load(radius_m: float, normal_load: float, profile: "
+                  "PressureProfile | str, friction: float, kappa: float = 1.0) -> ContactPatch"),
+          "the patch carrying the load N [N]: p* = N / (2 pi R^2 A^1)")
       .def_static("seed_tire", &ContactPatch::seed_tire,
                   "the seed's tire: R = 0.087 m, p* = 210 kPa (N = 4535 N), f = 0.3")
       .def_rw("radius_m", &ContactPatch::radius_m)
@@ -305,10 +352,13 @@ void bind_laws(nb::module_& m) {
                                  "evaluate many times")
       .def(
           "__init__",
-          [](ExactModel<double>* e, const ContactPatch& patch, double tol) {
-            new (e) ExactModel<double>(make_exact_model(patch, tol));
+          [](ExactModel<double>* e, nb::handle patch, nb::handle tol) {
+            new (e) ExactModel<double>(make_exact_model(
+                patch_argument("patch", patch), number_argument("representation_tolerance", tol)));
           },
-          "patch"_a, "representation_tolerance"_a = 1e-15)
+          "patch"_a, "representation_tolerance"_a = 1e-15,
+          nb::sig("def __init__(self, patch: ContactPatch, representation_tolerance: float = "
+                  "1e-15) -> None"))
       .def_ro("radius", &ExactModel<double>::radius)
       .def_ro("representation_error", &ExactModel<double>::representation_error)
       .def_ro("load_area", &ExactModel<double>::load_area);
@@ -317,13 +367,28 @@ void bind_laws(nb::module_& m) {
                                     "The fractional (Pade-type) law, seed eqs. 5-7 in vector form")
       .def(
           "__init__",
-          [](FractionalLaw<double>* l, double F0, double M0, double a, double mm, double kx,
-             double ky, double kappa, double c, double Mk, double a_k, double radius, double eps) {
-            new (l) FractionalLaw<double>{F0, M0, a, mm, kx, ky, kappa, c, Mk, a_k, radius, eps};
+          [](FractionalLaw<double>* l, nb::handle F0, nb::handle M0, nb::handle a, nb::handle mm,
+             nb::handle kx, nb::handle ky, nb::handle kappa, nb::handle c, nb::handle Mk,
+             nb::handle a_k, nb::handle radius, nb::handle eps) {
+            // Every value checked here (a number, then validate), as ContactPatch's: a bad law
+            // fails where it is made.
+            const FractionalLaw<double> law{
+                number_argument("F0", F0),         number_argument("M0", M0),
+                number_argument("a", a),           number_argument("m", mm),
+                number_argument("kx", kx),         number_argument("ky", ky),
+                number_argument("kappa", kappa),   number_argument("c", c),
+                number_argument("Mk", Mk),         number_argument("a_k", a_k),
+                number_argument("radius", radius), number_argument("regularization_speed", eps)};
+            validate(law);
+            new (l) FractionalLaw<double>(law);
           },
           "F0"_a = 0.0, "M0"_a = 0.0, "a"_a = 1.0, "m"_a = 64.0 / 9.0, "kx"_a = 0.0, "ky"_a = 0.0,
           "kappa"_a = 1.0, "c"_a = 4.0, "Mk"_a = 0.0, "a_k"_a = 1.0, "radius"_a = 0.1,
-          "regularization_speed"_a = 1e-4)
+          "regularization_speed"_a = 1e-4,
+          nb::sig("def __init__(self, F0: float = 0.0, M0: float = 0.0, a: float = 1.0, m: float "
+                  "= 7.111111111111111, kx: float = 0.0, ky: float = 0.0, kappa: float = 1.0, c: "
+                  "float = 4.0, Mk: float = 0.0, a_k: float = 1.0, radius: float = 0.1, "
+                  "regularization_speed: float = 0.0001) -> None"))
       .def_rw("F0", &FractionalLaw<double>::F0)
       .def_rw("M0", &FractionalLaw<double>::M0)
       .def_rw("a", &FractionalLaw<double>::a)
