@@ -13,7 +13,8 @@ A wrong type gives a short ``TypeError`` naming the argument and what it accepts
 
 from __future__ import annotations
 
-import numbers
+import numbers as _numbers
+from collections.abc import Iterable, Mapping
 from typing import Any, Callable, Optional
 
 import numpy as np
@@ -37,7 +38,7 @@ def number(name: str, value: Any) -> float:
     """``value`` as a float if it is a number (module docstring), else TypeError naming ``name``."""
     if isinstance(value, np.ndarray) and value.ndim == 0 and value.dtype.kind in "iuf":
         value = value[()]
-    if isinstance(value, (bool, np.bool_)) or not isinstance(value, numbers.Real):
+    if isinstance(value, (bool, np.bool_)) or not isinstance(value, _numbers.Real):
         raise TypeError(
             f"{name}: a number is required, not {type(value).__name__} {_shown(value)}")
     return float(value)
@@ -55,6 +56,21 @@ def integer(name: str, value: Any) -> int:
     if not x.is_integer():
         raise ValueError(f"{name} = {_shown(value)}: must be a whole number")
     return int(x)
+
+
+def numbers(name: str, value: Any) -> list[float]:
+    """A sequence (list, tuple, 1-D numpy array, pandas Series) of numbers as a list of floats,
+    else TypeError naming ``name``, or the first element that is not a number (``rho[2]``)."""
+    if hasattr(value, "to_numpy") and not isinstance(value, np.ndarray):
+        value = value.to_numpy()
+    if isinstance(value, np.ndarray):
+        if value.ndim != 1 or value.dtype.kind not in "iuf":
+            wrong_type(name, value, "a sequence of numbers")
+        return [float(x) for x in value]
+    if (isinstance(value, (str, bytes, Mapping)) or not isinstance(value, Iterable)
+            or not hasattr(value, "__len__")):
+        wrong_type(name, value, "a sequence of numbers")
+    return [number(f"{name}[{i}]", x) for i, x in enumerate(value)]
 
 
 def profile(name: str, value: Any) -> Any:

@@ -3,6 +3,7 @@
 
 #include <nanobind/nanobind.h>
 #include <nanobind/ndarray.h>
+#include <nanobind/stl/vector.h>
 
 #include <algorithm>
 #include <atomic>
@@ -187,6 +188,14 @@ const T& object_argument(const char* name, nb::handle value, const char* accepte
 
 inline double number_argument(const char* name, nb::handle value) {
   return nb::cast<double>(checked_argument("number", name, value));
+}
+
+inline int integer_argument(const char* name, nb::handle value) {
+  return nb::cast<int>(checked_argument("integer", name, value));
+}
+
+inline std::vector<double> numbers_argument(const char* name, nb::handle value) {
+  return nb::cast<std::vector<double>>(checked_argument("numbers", name, value));
 }
 
 inline std::optional<double> optional_number_argument(const char* name, nb::handle value) {

@@ -221,7 +221,13 @@ void bind_profiles(nb::module_& m) {
       .def_rw("clip_negative", &PressureProfile::clip_negative, "replace p by max(p, 0)")
       .def_rw("keep_negative", &PressureProfile::keep_negative,
               "use a negative part as given (else make_exact_model refuses it)")
-      .def("moment", &moment, "n"_a, "A^n = integral_0^1 p(rho) rho^n d rho")
+      .def(
+          "moment",
+          [](const PressureProfile& p, nb::handle n) {
+            return moment(p, integer_argument("n", n));
+          },
+          "n"_a, nb::sig("def moment(self, n: int) -> float"),
+          "A^n = integral_0^1 p(rho) rho^n d rho")
       .def("negative_intervals", &negative_intervals,
            "intervals of rho where the unclipped shape is negative")
       .def("negative_load_share", &negative_load_share)
@@ -248,10 +254,25 @@ void bind_profiles(nb::module_& m) {
 
   m.def("uniform_profile", &uniform_profile, "p(rho) = 1");
   m.def("hertz_profile", &hertz_profile, "p(rho) = sqrt(1 - rho^2)");
-  m.def("cosine_series_profile", &cosine_series_profile, "w"_a, "a"_a,
-        "p(rho) = sum_k a_k cos(pi k w rho) (seed eq. 8)");
-  m.def("tabulated_profile", &tabulated_profile, "rho"_a, "p"_a,
-        "a table p(rho) at increasing rho in [0, 1] ending at 1, monotone cubic in rho^2");
+  m.def(
+      "cosine_series_profile",
+      [](nb::handle w, nb::handle a) {
+        return cosine_series_profile(number_argument("w", w), numbers_argument("a", a));
+      },
+      "w"_a, "a"_a,
+      nb::sig("def cosine_series_profile(w: float, a: collections.abc.Sequence[float]) -> "
+              "PressureProfile"),
+      "p(rho) = sum_k a_k cos(pi k w rho) (seed eq. 8)");
+  m.def(
+      "tabulated_profile",
+      [](nb::handle rho, nb::handle p) {
+        return tabulated_profile(numbers_argument("rho", rho), numbers_argument("p", p));
+      },
+      "rho"_a, "p"_a,
+      nb::sig("def tabulated_profile(rho: collections.abc.Sequence[float], p: "
+              "collections.abc.Sequence[float]) -> PressureProfile"),
+      "a table p(rho) at increasing rho from the centre, 0, to the rim, 1 (knots at least 1e-9 "
+      "apart), monotone cubic in rho^2");
   m.def("seed_tire_profile", &seed_tire_profile, "the tire of the seed (Table 1)");
   m.def(
       "read_profile_csv",
@@ -263,11 +284,15 @@ void bind_profiles(nb::module_& m) {
       "a profile CSV (rho, pressure_Pa): (profile, reference pressure = mean pressure [Pa])");
   m.def(
       "smoothed_profile",
-      [](const std::vector<double>& rho, const std::vector<double>& p, int terms) {
-        SmoothedProfile s = smoothed_profile(rho, p, terms);
+      [](nb::handle rho, nb::handle p, nb::handle terms) {
+        SmoothedProfile s = smoothed_profile(numbers_argument("rho", rho), numbers_argument("p", p),
+                                             integer_argument("terms", terms));
         return std::make_pair(s.profile, std::make_pair(s.rms_residual, s.max_residual));
       },
       "rho"_a, "p"_a, "terms"_a,
+      nb::sig("def smoothed_profile(rho: collections.abc.Sequence[float], p: "
+              "collections.abc.Sequence[float], terms: int) -> tuple[PressureProfile, "
+              "tuple[float, float]]"),
       "least-squares Chebyshev series in rho^2: (profile, (rms residual, max residual))");
 }
 
@@ -331,7 +356,13 @@ void bind_patch(nb::module_& m) {
       .def_rw("reference_pressure_pa", &ContactPatch::reference_pressure_pa)
       .def_rw("friction", &ContactPatch::friction)
       .def_rw("kappa", &ContactPatch::kappa)
-      .def_rw("profile", &ContactPatch::profile)
+      .def_prop_rw(
+          "profile", [](const ContactPatch& p) { return p.profile; },
+          [](ContactPatch& p, nb::handle profile) {
+            p.profile = nb::cast<PressureProfile>(checked_argument("profile", "profile", profile));
+          },
+          nb::for_setter(nb::sig("def profile(self, arg: PressureProfile | str, /) -> None")),
+          "the pressure profile (set: a PressureProfile or a built-in profile's name)")
       .def_rw("slip_speed_friction", &ContactPatch::slip_speed_friction, nb::arg().none())
       .def_prop_ro(
           "normal_load", [](const ContactPatch& p) { return p.normal_load(); },
@@ -408,11 +439,22 @@ void bind_laws(nb::module_& m) {
                ", kx=" + format_value(l.kx) + ", ky=" + format_value(l.ky) +
                ", kappa=" + format_value(l.kappa) + ", R=" + format_value(l.radius) + " m>";
       });
-  m.def("fractional_law_from_patch", &fractional_law_from_patch, "patch"_a,
-        "asymptote-matched coefficients from the patch's moments");
-  m.def("fractional_law_fitted", &fractional_law_fitted, "patch"_a, "psi_min"_a = 1e-2,
-        "psi_max"_a = 1e2, "n"_a = 41,
-        "a and m (c, a_k) fitted by least squares to the exact integrals over psi");
+  m.def(
+      "fractional_law_from_patch",
+      [](nb::handle patch) { return fractional_law_from_patch(patch_argument("patch", patch)); },
+      "patch"_a, nb::sig("def fractional_law_from_patch(patch: ContactPatch) -> FractionalLaw"),
+      "asymptote-matched coefficients from the patch's moments");
+  m.def(
+      "fractional_law_fitted",
+      [](nb::handle patch, nb::handle psi_min, nb::handle psi_max, nb::handle n) {
+        return fractional_law_fitted(patch_argument("patch", patch),
+                                     number_argument("psi_min", psi_min),
+                                     number_argument("psi_max", psi_max), integer_argument("n", n));
+      },
+      "patch"_a, "psi_min"_a = 1e-2, "psi_max"_a = 1e2, "n"_a = 41,
+      nb::sig("def fractional_law_fitted(patch: ContactPatch, psi_min: float = 0.01, psi_max: "
+              "float = 100.0, n: int = 41) -> FractionalLaw"),
+      "a and m (c, a_k) fitted by least squares to the exact integrals over psi");
 }
 
 void bind_loops(nb::module_& m) {

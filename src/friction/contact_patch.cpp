@@ -12,6 +12,12 @@ namespace contensou {
 
 namespace {
 
+// Knots at rho a < b are far enough apart: b - a >= kMinProfileKnotStep up to the rounding of
+// the two (a relative 1e-6 of the step: 0.999999999 and 1 are 1e-9 apart).
+bool knots_apart(double a, double b) {
+  return b - a >= kMinProfileKnotStep * (1.0 - 1e-6);
+}
+
 // The profile's shape and shift. A shape filled by hand (not by its factory) is checked here:
 // an empty or inconsistent table would be read out of bounds by the interpolation (and by
 // moment()).
@@ -30,7 +36,7 @@ void check_profile(const PressureProfile& profile) {
       require_finite("tabulated rho", t->rho[i]);
       require_finite("tabulated p", t->p[i]);
       require_finite("tabulated slope", t->slope[i]);
-      if (i > 0 && !(t->rho[i] - t->rho[i - 1] >= kMinProfileKnotStep))
+      if (i > 0 && !knots_apart(t->rho[i - 1], t->rho[i]))
         throw InvalidArgument(
             "tabulated rho", format_value(t->rho[i]),
             "must increase by at least 1e-9 a knot (previous " + format_value(t->rho[i - 1]) + ")");

@@ -197,6 +197,12 @@ std::vector<double> sign_changes(const PressureProfile& profile) {
   return roots;
 }
 
+// Knots at rho a < b are far enough apart: b - a >= kMinProfileKnotStep up to the rounding of
+// the two (a relative 1e-6 of the step: 0.999999999 and 1 are 1e-9 apart).
+bool knots_apart(double a, double b) {
+  return b - a >= kMinProfileKnotStep * (1.0 - 1e-6);
+}
+
 // Why a table of more than kMaxProfilePoints points is refused, and what to do instead.
 std::string too_many_points_advice() {
   return "a tabulated profile takes at most " + std::to_string(kMaxProfilePoints) +
@@ -239,7 +245,7 @@ std::vector<double> checked_knots(std::vector<double> rho, const std::vector<dou
   rho.front() = 0.0;
   rho.back() = 1.0;
   for (std::size_t k = 1; k < rho.size(); ++k)
-    if (!(rho[k] - rho[k - 1] >= kMinProfileKnotStep))
+    if (!knots_apart(rho[k - 1], rho[k]))
       throw InvalidArgument(
           "rho[" + std::to_string(k) + "]", format_value(rho[k]),
           "knots " + std::to_string(k - 1) + " (rho = " + format_value(rho[k - 1]) + ") and " +
@@ -283,7 +289,7 @@ void check_profile_row(const CsvTable& table, int line, int column, double rho,
     throw table.cell_error(line, column,
                            "rho = " + format_value(rho) + " not increasing (previous " +
                                format_value(*previous) + ")");
-  if (!(rho - *previous >= kMinProfileKnotStep))
+  if (!knots_apart(*previous, rho))
     throw table.cell_error(line, column,
                            "rho = " + format_value(rho) + " is " + format_value(rho - *previous) +
                                " past the previous row's " + format_value(*previous) +

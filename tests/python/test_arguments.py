@@ -92,6 +92,24 @@ def test_constructors_refuse_a_wrong_type_with_a_short_type_error():
 
 
 def test_functions_refuse_a_string_for_a_number_too():
+    short_type_error(lambda: c.cosine_series_profile("0.848", [1.0]), "w: a number")
+    short_type_error(lambda: c.cosine_series_profile(0.848, "1,2"), "a: a sequence of numbers")
+    short_type_error(lambda: c.tabulated_profile("0,1", [1, 1]), "rho: a sequence of numbers")
+    short_type_error(lambda: c.tabulated_profile([0, "1"], [1, 1]), "rho[1]: a number")
+    short_type_error(lambda: c.smoothed_profile([0, 0.5, 1], [1, 1, 1], "2"), "terms: a number")
+    short_type_error(lambda: c.hertz_profile().moment("1"), "n: a number")
+    short_type_error(lambda: c.fractional_law_from_patch("hertz"), "patch: a ContactPatch")
+    short_type_error(lambda: c.fractional_law_fitted(patch(), "0.01"), "psi_min: a number")
+    # Sequences of numbers: lists, tuples, numpy arrays and pandas Series alike.
+    pd = pytest.importorskip("pandas")
+    for rho in ([0, 0.5, 1], (0, 0.5, 1), np.array([0, 0.5, 1]), pd.Series([0, 0.5, 1])):
+        table = c.tabulated_profile(rho, [1.0, 0.8, 0.2])
+        assert table.moment(1) == c.tabulated_profile([0, 0.5, 1], [1.0, 0.8, 0.2]).moment(1)
+    # A patch's profile is set from a name too.
+    p = patch()
+    p.profile = "hertz"
+    assert p.profile.describe() == "Hertz"
+    short_type_error(lambda: setattr(p, "profile", 1), "profile: a PressureProfile")
     law = c.fractional_law_from_patch(patch())
     short_type_error(lambda: c.exact_resultants(patch(), 0.1, 0.0, 1.0, tolerance="1e-8"),
                      "tolerance: a number")
