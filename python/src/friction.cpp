@@ -357,10 +357,11 @@ void bind_patch(nb::module_& m) {
       .def_rw("friction", &ContactPatch::friction)
       .def_rw("kappa", &ContactPatch::kappa)
       .def_prop_rw(
-          "profile", [](const ContactPatch& p) { return p.profile; },
+          "profile", [](ContactPatch& p) -> PressureProfile& { return p.profile; },
           [](ContactPatch& p, nb::handle profile) {
             p.profile = nb::cast<PressureProfile>(checked_argument("profile", "profile", profile));
           },
+          nb::for_getter(nb::rv_policy::reference_internal),  // patch.profile.kx = 0.1 sets it
           nb::for_setter(nb::sig("def profile(self, arg: PressureProfile | str, /) -> None")),
           "the pressure profile (set: a PressureProfile or a built-in profile's name)")
       .def_rw("slip_speed_friction", &ContactPatch::slip_speed_friction, nb::arg().none())

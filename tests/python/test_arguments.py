@@ -109,6 +109,8 @@ def test_functions_refuse_a_string_for_a_number_too():
     p = patch()
     p.profile = "hertz"
     assert p.profile.describe() == "Hertz"
+    p.profile.kx = 0.1  # the profile of the patch, not a copy
+    assert p.profile.kx == 0.1
     short_type_error(lambda: setattr(p, "profile", 1), "profile: a PressureProfile")
     law = c.fractional_law_from_patch(patch())
     short_type_error(lambda: c.exact_resultants(patch(), 0.1, 0.0, 1.0, tolerance="1e-8"),
