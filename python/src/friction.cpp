@@ -211,47 +211,8 @@ ContactPatch make_patch(const PatchArguments& a) {
   return p;
 }
 
-void bind_profiles(nb::module_& m) {
-  nb::class_<PressureProfile>(m, "PressureProfile",
-                              "A pressure profile p(rho): radial shape, shift kx, ky and what to "
-                              "do with a negative part (contensou/friction/pressure_profile.hpp).")
-      .def_prop_ro("kind", &shape_kind, "uniform, hertz, cosine_series, tabulated or chebyshev")
-      .def_rw("kx", &PressureProfile::kx, "shift along x (0.14 for the seed's rolling tire)")
-      .def_rw("ky", &PressureProfile::ky, "shift along y")
-      .def_rw("clip_negative", &PressureProfile::clip_negative, "replace p by max(p, 0)")
-      .def_rw("keep_negative", &PressureProfile::keep_negative,
-              "use a negative part as given (else make_exact_model refuses it)")
-      .def(
-          "moment",
-          [](const PressureProfile& p, nb::handle n) {
-            return moment(p, integer_argument("n", n));
-          },
-          "n"_a, nb::sig("def moment(self, n: int) -> float"),
-          "A^n = integral_0^1 p(rho) rho^n d rho")
-      .def("negative_intervals", &negative_intervals,
-           "intervals of rho where the unclipped shape is negative")
-      .def("negative_load_share", &negative_load_share)
-      .def("describe", &describe)
-      .def("__repr__",
-           [](const PressureProfile& p) {
-             return "<PressureProfile " + describe(p) + ", kx=" + format_value(p.kx) +
-                    ", ky=" + format_value(p.ky) + ">";
-           })
-      .def(
-          "_shape_values",
-          [](const PressureProfile& p, InArray rho, OutArray2 out) {
-            if (out.shape(0) != rho.shape(0) || out.shape(1) != 1)
-              throw std::invalid_argument("output must be (n, 1)");
-            for (std::size_t i = 0; i < rho.shape(0); ++i) {
-              if (!(rho(i) >= 0.0 && rho(i) <= 1.0))
-                throw std::invalid_argument("rho = " + format_value(rho(i)) +
-                                            ": must lie in [0, 1] (point " + std::to_string(i) +
-                                            " of the flattened input)");
-              out(i, 0) = shape_value(p, rho(i));
-            }
-          },
-          "rho"_a, "out"_a);
-
+// The profiles' factories and readers, their numbers checked by the package's rule.
+void bind_profile_functions(nb::module_& m) {
   m.def("uniform_profile", &uniform_profile, "p(rho) = 1");
   m.def("hertz_profile", &hertz_profile, "p(rho) = sqrt(1 - rho^2)");
   m.def(
@@ -296,7 +257,52 @@ void bind_profiles(nb::module_& m) {
       "least-squares Chebyshev series in rho^2: (profile, (rms residual, max residual))");
 }
 
-void bind_patch(nb::module_& m) {
+void bind_profiles(nb::module_& m) {
+  nb::class_<PressureProfile>(m, "PressureProfile",
+                              "A pressure profile p(rho): radial shape, shift kx, ky and what to "
+                              "do with a negative part (contensou/friction/pressure_profile.hpp).")
+      .def_prop_ro("kind", &shape_kind, "uniform, hertz, cosine_series, tabulated or chebyshev")
+      .def_rw("kx", &PressureProfile::kx, "shift along x (0.14 for the seed's rolling tire)")
+      .def_rw("ky", &PressureProfile::ky, "shift along y")
+      .def_rw("clip_negative", &PressureProfile::clip_negative, "replace p by max(p, 0)")
+      .def_rw("keep_negative", &PressureProfile::keep_negative,
+              "use a negative part as given (else make_exact_model refuses it)")
+      .def(
+          "moment",
+          [](const PressureProfile& p, nb::handle n) {
+            return moment(p, integer_argument("n", n));
+          },
+          "n"_a, nb::sig("def moment(self, n: int) -> float"),
+          "A^n = integral_0^1 p(rho) rho^n d rho")
+      .def("negative_intervals", &negative_intervals,
+           "intervals of rho where the unclipped shape is negative")
+      .def("negative_load_share", &negative_load_share)
+      .def("describe", &describe)
+      .def("__repr__",
+           [](const PressureProfile& p) {
+             return "<PressureProfile " + describe(p) + ", kx=" + format_value(p.kx) +
+                    ", ky=" + format_value(p.ky) + ">";
+           })
+      .def(
+          "_shape_values",
+          [](const PressureProfile& p, InArray rho, OutArray2 out) {
+            if (out.shape(0) != rho.shape(0) || out.shape(1) != 1)
+              throw std::invalid_argument("output must be (n, 1)");
+            for (std::size_t i = 0; i < rho.shape(0); ++i) {
+              if (!(rho(i) >= 0.0 && rho(i) <= 1.0))
+                throw std::invalid_argument("rho = " + format_value(rho(i)) +
+                                            ": must lie in [0, 1] (point " + std::to_string(i) +
+                                            " of the flattened input)");
+              out(i, 0) = shape_value(p, rho(i));
+            }
+          },
+          "rho"_a, "out"_a);
+
+  bind_profile_functions(m);
+}
+
+// SlipSpeedFriction, its numbers checked by the package's rule (common.hpp).
+void bind_slip_speed_friction(nb::module_& m) {
   nb::class_<SlipSpeedFriction<double>>(
       m, "SlipSpeedFriction", "f(w) = f_k + (f_s - f_k) exp(-(w / w_s)^delta), w the slip speed")
       .def(
@@ -316,7 +322,10 @@ void bind_patch(nb::module_& m) {
       .def_rw("kinetic_coefficient", &SlipSpeedFriction<double>::kinetic_coefficient)
       .def_rw("reference_speed", &SlipSpeedFriction<double>::reference_speed)
       .def_rw("exponent", &SlipSpeedFriction<double>::exponent);
+}
 
+void bind_patch(nb::module_& m) {
+  bind_slip_speed_friction(m);
   nb::class_<ContactPatch>(m, "ContactPatch",
                            "Geometry, load, pressure and friction of the exact model (SI units). "
                            "Give radius_m, friction and either normal_load [N] (p* = N / (2 pi "
