@@ -201,7 +201,7 @@ std::string format(double x) {
 // below mjMINVAL = 1e-15, so lengths lie in [1e-15, 1e10] m, a patch no wider than its tire
 // geom (its bounding radius). With these, the law's numbers stay finite for any normal force
 // below 1e270 N: the exact law's v / R <= 1e25, the fractional law's largest slope
-// 16 max(F0, M0) max(1, R) / eps (fractional_law.hpp) <= 1.6e38 N for f <= 100.
+// 16 max(F0, M0) max(1, R) / eps (fractional_law.hpp) <= 1.6e38 times N for f <= 100.
 constexpr double kShortest = mjMINVAL, kLongest = mjMAXVAL;  // [m]
 constexpr double kFrictionMin = 1e-6, kFrictionMax = 100.0;
 constexpr double kKappaMin = 1e-3, kKappaMax = 1e3;
