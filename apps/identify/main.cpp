@@ -67,41 +67,42 @@ void show_progress(IdentifyRequest& r, bool asked) {
   };
 }
 
-int print_and_write(const FitArgs& a, const Identification& run, const ReportInput& info) {
+int print_and_write(const FitArgs& a, const Identification& run, const ReportInput& info,
+                    app::OutputFolder* plots) {
   const MeasuredData& data = run.fitted;
   if (!run.loop) {
     std::printf("%s %s: fractional law (seed eqs. 5-7)\n%s", kName, kVersion,
                 fit_report_text(info, run.fit).c_str());
-    if (!a.plots_dir.empty() && app::write_plots(a.plots_dir, data, run.fit))
+    if (plots != nullptr && app::write_plots(app::OutputDir(*plots), data, run.fit))
       std::printf("pictures: %s/fit_*.png\n", a.plots_dir.c_str());
     if (!a.json_path.empty()) {
-      write_file_atomically(a.json_path, fit_report_json(info, run.fit) + "\n");
+      app::write_output_file(plots, a.json_path, fit_report_json(info, run.fit) + "\n");
       std::printf("report: %s\n", a.json_path.c_str());
     }
     return 0;
   }
   const ClosedLoopReport& loop = *run.loop;
   std::printf("%s %s\n%s", kName, kVersion, loop_report_text(info, loop).c_str());
-  if (!a.plots_dir.empty()) {
-    const bool p = app::write_plots(a.plots_dir, data, loop.final_fit);
-    const bool q = app::write_loop_plots(a.plots_dir, data, loop);
+  if (plots != nullptr) {
+    const bool p = app::write_plots(app::OutputDir(*plots), data, loop.final_fit);
+    const bool q = app::write_loop_plots(app::OutputDir(*plots), data, loop);
     if (p && q)
       std::printf("pictures: %s/fit_*.png (final model), %s/loop_step_*.png\n", a.plots_dir.c_str(),
                   a.plots_dir.c_str());
   }
   if (!a.json_path.empty()) {
-    write_file_atomically(a.json_path, loop_report_json(info, loop) + "\n");
+    app::write_output_file(plots, a.json_path, loop_report_json(info, loop) + "\n");
     std::printf("report: %s\n", a.json_path.c_str());
   }
   return 0;
 }
 
-int run_fit(FitArgs a) {
+int run_fit(FitArgs a, app::OutputFolder* plots) {
   for (const std::string& f : a.fixes) a.request.fix.insert(parse_fix(f));
   show_progress(a.request, a.progress);
   MeasuredData data = read_measured_csv(a.data_path, parse_column_renames(a.columns));
   const IdentifyRun run = identify(data, a.request);
-  return print_and_write(a, run.result, run.input);
+  return print_and_write(a, run.result, run.input, plots);
 }
 
 struct SimulateArgs {
@@ -203,7 +204,9 @@ void add_fit_options(CLI::App& app, FitArgs& a, FitOptionHandles& h) {
   app.add_option("--columns", a.columns,
                  "read columns under other names: QUANTITY=COLUMN,... with QUANTITY one of vx, "
                  "vy, omega, Fx, Fy, Mz, Fz, t; a unit in the name ('Speed [km/h]') or a units "
-                 "row is converted");
+                 "row is converted; extra=COLUMN keeps a column that looks like a channel as a "
+                 "recorded variable, ignore=COLUMN leaves it out (every other numeric column is "
+                 "kept as a recorded variable and listed in the report)");
   app.add_option(opt("fix"), a.fixes, key_help("fix"));
   app.add_option(opt("loss"), r.loss, key_help("loss"));
   app.add_option(opt("loss_scale"), r.loss_scale, key_help("loss_scale"));
@@ -303,10 +306,10 @@ int main(int argc, char** argv) {
     if (a.data_path.empty()) throw std::runtime_error("no data file given (see --help)");
     if (h.radius->count() == 0)
       throw std::runtime_error("--radius is required (patch radius in m)");
-    std::optional<app::OutputFolderLock> lock;
-    if (!a.plots_dir.empty()) lock.emplace(a.plots_dir);  // before the fit: a second run stops
-    const int status = run_fit(a);
-    if (lock && status == 0) lock->commit();  // an earlier run's plots not redrawn are removed
+    std::optional<app::OutputFolder> plots;
+    if (!a.plots_dir.empty()) plots.emplace(a.plots_dir);  // before the fit: a second run stops
+    const int status = run_fit(a, plots ? &*plots : nullptr);
+    if (plots && status == 0) plots->commit();  // an earlier run's plots not redrawn are removed
     return app::finish_output(status);
   } catch (const std::exception& e) {
     std::fprintf(stderr, "%s: error: %s\n", kName, e.what());

@@ -40,9 +40,8 @@ const char* const kAxisLabel[kChannels] = {"Fx [N]", "Fy [N]", "Mz [N m]"};
 
 }  // namespace
 
-bool write_loop_plots(const std::string& dir, const MeasuredData& data,
+bool write_loop_plots(const OutputDir& dir, const MeasuredData& data,
                       const ClosedLoopReport& loop) {
-  std::filesystem::create_directories(dir);
   const std::vector<double>& psi = loop.final_fit.psi;  // every fit of the loop has the same data
   const std::vector<std::size_t> order = points_by_psi(psi);
   std::string gp =
@@ -61,7 +60,7 @@ bool write_loop_plots(const std::string& dir, const MeasuredData& data,
         text += "," + cell(st.fit_before.residual[i][c]) + "," + cell(st.fit_after.residual[i][c]);
       text += "\n";
     }
-    write_file_atomically(dir + "/" + csv, text);
+    dir.write(csv, text);
     gp += "set output 'loop_step_" + std::to_string(k) + ".png'\n";
     gp += "set multiplot layout 3,1 title 'step " + std::to_string(k) + ": " + st.effect +
           (st.detail.empty() ? "" : " (" + st.detail + ")") + ", " +
@@ -86,8 +85,7 @@ bool write_loop_plots(const std::string& dir, const MeasuredData& data,
   return run_gnuplot(dir, "loop", gp);
 }
 
-bool write_plots(const std::string& dir, const MeasuredData& data, const FitReport& fit) {
-  std::filesystem::create_directories(dir);
+bool write_plots(const OutputDir& dir, const MeasuredData& data, const FitReport& fit) {
   const std::vector<double>& psi = fit.psi;
   const std::vector<Resultants<double>>& model = fit.prediction;
   std::string csv = "psi,upsilon";  // then measured, fitted and residual, per channel
@@ -102,7 +100,7 @@ bool write_plots(const std::string& dir, const MeasuredData& data, const FitRepo
              cell(fit.residual[i][c]);
     csv += "\n";
   }
-  write_file_atomically(dir + "/fit.csv", csv);
+  dir.write("fit.csv", csv);
   std::string gp =
       "set terminal pngcairo size 900,720 font ',10'\nset datafile separator ','\n"
       "set datafile columnheaders\nset datafile missing 'NaN'\n";

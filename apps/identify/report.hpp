@@ -7,6 +7,7 @@
 #include "contensou/identification/closed_loop.hpp"
 #include "contensou/identification/fit.hpp"
 #include "contensou/identification/report.hpp"
+#include "output_folder.hpp"
 
 namespace contensou::app {
 
@@ -18,12 +19,12 @@ using RunInfo = ReportInput;
 // and the measured values of the data it was fitted to; they compute nothing the fit owns.
 
 // For each fitted step, a PNG of the residuals before and after it (loop_step_K.png).
-bool write_loop_plots(const std::string& dir, const MeasuredData& data,
+bool write_loop_plots(const OutputDir& dir, const MeasuredData& data,
                       const ClosedLoopReport& loop);
 
 // Writes dir/fit.csv (psi, upsilon, and measured_, fit_, residual_ per channel, by name) and one
 // PNG per measured channel (measured and fitted against psi or
 // 1/psi on a log axis, residuals below). Returns false if the pictures could not be drawn.
-bool write_plots(const std::string& dir, const MeasuredData& data, const FitReport& fit);
+bool write_plots(const OutputDir& dir, const MeasuredData& data, const FitReport& fit);
 
 }  // namespace contensou::app

@@ -103,7 +103,7 @@ Overlay analyse_overlay(const std::vector<ComputedMap>& maps, const std::vector<
 }
 
 // One overlay: the boundaries of its maps and their labels.
-nlohmann::json write_overlay(const std::string& dir, const std::vector<ComputedMap>& maps,
+nlohmann::json write_overlay(const OutputDir& dir, const std::vector<ComputedMap>& maps,
                              const std::vector<std::string>& bases, const Overlay& overlay) {
   const StabilityMap& first = maps[static_cast<std::size_t>(overlay.models.front().map)].map;
   const std::string name = "overlay_" + short_name(first.x.parameter) + "_" +
@@ -167,7 +167,7 @@ std::vector<Overlay> analyse_overlays(const std::vector<ComputedMap>& maps,
   return out;
 }
 
-nlohmann::json write_boundary_overlays(const std::string& dir, const std::vector<ComputedMap>& maps,
+nlohmann::json write_boundary_overlays(const OutputDir& dir, const std::vector<ComputedMap>& maps,
                                        const std::vector<std::string>& bases,
                                        const std::vector<Overlay>& overlays) {
   nlohmann::json out = nlohmann::json::array();

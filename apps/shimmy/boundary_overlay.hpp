@@ -10,6 +10,7 @@
 
 #include "contensou/gear/landing_gear.hpp"
 #include "contensou/gear/stability_map.hpp"
+#include "output_folder.hpp"
 #include "simulate.hpp"
 
 namespace contensou::app {
@@ -41,7 +42,7 @@ std::vector<Overlay> analyse_overlays(const std::vector<ComputedMap>& maps,
 
 // Writes overlay_<x>_<y>_<phase>.png (and .gp) in `dir` for each overlay, reading the maps'
 // boundary CSVs (base names in `bases`, parallel to `maps`). Returns a summary per overlay.
-nlohmann::json write_boundary_overlays(const std::string& dir, const std::vector<ComputedMap>& maps,
+nlohmann::json write_boundary_overlays(const OutputDir& dir, const std::vector<ComputedMap>& maps,
                                        const std::vector<std::string>& bases,
                                        const std::vector<Overlay>& overlays);
 

@@ -88,7 +88,7 @@ std::string history_plot_script(const HistoryPanel& panel, const std::vector<Lan
   return gp.str();
 }
 
-void draw_histories(const std::string& dir, const std::vector<LandingRun>& runs) {
+void draw_histories(const OutputDir& dir, const std::vector<LandingRun>& runs) {
   for (const HistoryPanel& p : history_panels())
     run_gnuplot(dir, p.name, history_plot_script(p, runs));
 }

@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "contensou/gear/landing_simulation.hpp"
+#include "output_folder.hpp"
 
 namespace contensou::app {
 
@@ -25,6 +26,6 @@ std::string panel_axis_label(const HistoryPanel& panel);
 std::string history_plot_script(const HistoryPanel& panel, const std::vector<LandingRun>& runs);
 
 // Writes and runs every panel's script in `dir`.
-void draw_histories(const std::string& dir, const std::vector<LandingRun>& runs);
+void draw_histories(const OutputDir& dir, const std::vector<LandingRun>& runs);
 
 }  // namespace contensou::app

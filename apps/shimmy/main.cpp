@@ -41,7 +41,7 @@ void progress_bar(const std::string& label, int done, int total) {
 
 // One configuration, one way: simulate every model's landing, analyse the landings, report
 // them into `out`; returns the summary (without writing it).
-nlohmann::json run_landings(const ShimmyConfig& config, const std::string& out, unsigned threads,
+nlohmann::json run_landings(const ShimmyConfig& config, const app::OutputDir& out, unsigned threads,
                             const TireInput* tire) {
   const Landings landings = simulate_landings(config, tire);
   const LandingAnalysis analysis = analyse_landings(config, landings, tire, threads, progress_bar);
@@ -49,7 +49,7 @@ nlohmann::json run_landings(const ShimmyConfig& config, const std::string& out, 
 }
 
 // The configuration's stability maps, each model's, into `out`; their summaries into `summary`.
-void run_maps(const ShimmyConfig& config, const std::string& out, int map_size, unsigned threads,
+void run_maps(const ShimmyConfig& config, const app::OutputDir& out, int map_size, unsigned threads,
               const TireInput* tire, nlohmann::json& summary) {
   const std::vector<ComputedMap> maps = compute_maps(config, map_size, threads, tire, progress_bar);
   const std::vector<Overlay> overlays =
@@ -59,7 +59,7 @@ void run_maps(const ShimmyConfig& config, const std::string& out, int map_size, 
 
 // The named scenarios, each in out/<name>/ with its own summary; then the table over all.
 nlohmann::json run_scenarios(const ShimmyConfig& config, const std::vector<std::string>& names,
-                             const std::vector<std::string>& overrides, const std::string& out,
+                             const std::vector<std::string>& overrides, const app::OutputDir& out,
                              unsigned threads, const TireInput* tire) {
   nlohmann::json scenarios;
   for (const std::string& name : names) {
@@ -68,8 +68,10 @@ nlohmann::json run_scenarios(const ShimmyConfig& config, const std::vector<std::
     sets.insert(sets.end(), overrides.begin(), overrides.end());
     const ShimmyConfig c = apply_overrides(config, sets);
     std::printf("\n== scenario %s: %s\n", n.name.c_str(), n.description.c_str());
-    nlohmann::json summary = run_landings(c, out + "/" + n.name, threads, tire);
-    write_file_atomically(out + "/" + n.name + "/summary.json", summary.dump(2) + "\n");
+    const app::OutputDir folder = out.sub(n.name);
+    nlohmann::json summary = run_landings(c, folder, threads, tire);
+    folder.write("summary.json",
+                 summary.dump(2, ' ', false, nlohmann::json::error_handler_t::replace) + "\n");
     scenarios[n.name] = {{"description", n.description},
                          {"overrides", n.overrides},
                          {"phase", to_string(n.phase)},
@@ -168,7 +170,8 @@ int run(const Options& o) {
     std::cout << to_json(config).dump(2) << '\n';
     return 0;
   }
-  app::OutputFolderLock lock(o.out);                     // a second run into o.out stops here
+  app::OutputFolder folder(o.out);  // checked and locked: a second run into o.out stops here
+  const app::OutputDir out(folder);
   for (const std::string& name : scenarios_to_run(o)) {  // every scenario checked before any runs
     std::vector<std::string> sets = named_scenario(name).overrides;
     sets.insert(sets.end(), o.overrides.begin(), o.overrides.end());
@@ -181,15 +184,16 @@ int run(const Options& o) {
   const TireInput* t = tire ? &*tire : nullptr;
   nlohmann::json summary;
   if (names.empty()) {
-    summary = run_landings(config, o.out, o.threads, t);
+    summary = run_landings(config, out, o.threads, t);
   } else {
-    summary["scenarios"] = run_scenarios(config, names, o.overrides, o.out, o.threads, t);
+    summary["scenarios"] = run_scenarios(config, names, o.overrides, out, o.threads, t);
     summary["gear"] = config.gear_name;
     summary["configuration"] = to_json(config);
   }
-  if (o.maps) run_maps(config, o.out, o.map_size, o.threads, t, summary);
-  write_file_atomically(o.out + "/summary.json", summary.dump(2) + "\n");
-  const int stale = lock.commit();  // an earlier run's files this one did not rewrite
+  if (o.maps) run_maps(config, out, o.map_size, o.threads, t, summary);
+  out.write("summary.json",
+            summary.dump(2, ' ', false, nlohmann::json::error_handler_t::replace) + "\n");
+  const int stale = folder.commit();  // an earlier run's files this one did not rewrite
   std::printf("wrote %s/summary.json, CSV time histories and PNGs%s", o.out.c_str(),
               names.empty() ? "" : " (a folder per scenario)");
   if (stale > 0) std::printf("; removed %d file(s) an earlier run had written there", stale);

@@ -35,7 +35,7 @@ std::string map_plot_body(const StabilityMap& m, const std::string& base,
 }
 
 // Writes the map's CSV and PNG; returns its summary.
-nlohmann::json write_map(const std::string& dir, const StabilityMap& m) {
+nlohmann::json write_map(const OutputDir& dir, const StabilityMap& m) {
   const std::string base = "map_" + short_name(m.x.parameter) + "_" + short_name(m.y.parameter) +
                            "_" + (m.linear ? to_string(m.phase) : "simulated") + "_" +
                            to_string(m.contact);
@@ -65,9 +65,9 @@ nlohmann::json write_map(const std::string& dir, const StabilityMap& m) {
     }
     csv << '\n';  // gnuplot reads blank-line-separated rows as a grid
   }
-  write_file_atomically(dir + "/" + base + ".csv", csv.str());
-  write_file_atomically(dir + "/" + base + "_boundary.csv",
-                        m.x.parameter + ',' + m.y.parameter + '\n' + boundary.str() + "\n");
+  dir.write(base + ".csv", csv.str());
+  dir.write(base + "_boundary.csv",
+            m.x.parameter + ',' + m.y.parameter + '\n' + boundary.str() + "\n");
   std::ostringstream gp;
   gp << "set terminal pngcairo noenhanced size 760,620 font ',10'\nset output '" << base
      << ".png'\nset title '" << to_string(m.contact) << ", "
@@ -93,7 +93,7 @@ nlohmann::json write_map(const std::string& dir, const StabilityMap& m) {
 }
 
 // Writes a probability map's CSV and PNG (colour: the probability of shimmy over the draws).
-nlohmann::json write_probability_map(const std::string& dir, const StabilityMap& m) {
+nlohmann::json write_probability_map(const OutputDir& dir, const StabilityMap& m) {
   const std::string base = "prob_" + short_name(m.x.parameter) + "_" + short_name(m.y.parameter) +
                            "_" + to_string(m.phase) + "_" + to_string(m.contact);
   std::ostringstream csv;
@@ -108,7 +108,7 @@ nlohmann::json write_probability_map(const std::string& dir, const StabilityMap&
     }
     csv << '\n';
   }
-  write_file_atomically(dir + "/" + base + ".csv", csv.str());
+  dir.write(base + ".csv", csv.str());
   std::ostringstream gp;
   gp << "set terminal pngcairo noenhanced size 760,620 font ',10'\nset output '" << base
      << ".png'\nset title '" << to_string(m.contact) << ", " << to_string(m.phase)
@@ -124,7 +124,7 @@ nlohmann::json write_probability_map(const std::string& dir, const StabilityMap&
 
 }  // namespace
 
-void report_maps(const std::string& out, const std::vector<ComputedMap>& maps,
+void report_maps(const OutputDir& out, const std::vector<ComputedMap>& maps,
                  const std::vector<Overlay>& overlays, nlohmann::json& summary) {
   std::vector<std::string> bases;
   for (const ComputedMap& m : maps) {

@@ -9,13 +9,14 @@
 #include <vector>
 
 #include "boundary_overlay.hpp"
+#include "output_folder.hpp"
 #include "simulate.hpp"
 
 namespace contensou::app {
 
 // Writes every map (and probability map) into `out` and their summaries into summary["maps"]
 // and summary["probability_maps"], then the overlays into summary["overlays"].
-void report_maps(const std::string& out, const std::vector<ComputedMap>& maps,
+void report_maps(const OutputDir& out, const std::vector<ComputedMap>& maps,
                  const std::vector<Overlay>& overlays, nlohmann::json& summary);
 
 }  // namespace contensou::app

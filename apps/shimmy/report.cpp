@@ -248,14 +248,13 @@ void print_seed_verdict(const nlohmann::json& scenarios) {
 
 nlohmann::json report_landings(const ShimmyConfig& config, const Landings& landings,
                                const LandingAnalysis& analysis, const TireInput* tire,
-                               const std::string& out) {
-  std::filesystem::create_directories(out);
+                               const OutputDir& out) {
   nlohmann::json summary;
   print_landing_header();
   for (std::size_t k = 0; k < landings.runs.size(); ++k) {
     const LandingRun& r = landings.runs[k];
     const Convergence& c = analysis.models[k].convergence;
-    write_file_atomically(out + "/" + to_string(r.contact) + ".csv", csv_history(r));
+    out.write(std::string(to_string(r.contact)) + ".csv", csv_history(r));
     nlohmann::json j = run_json(r);
     j["convergence"] = convergence_json(c);
     summary["models"][to_string(r.contact)] = j;

@@ -8,6 +8,7 @@
 
 #include "analysis.hpp"
 #include "config.hpp"
+#include "output_folder.hpp"
 #include "simulate.hpp"
 
 namespace contensou::app {
@@ -17,7 +18,7 @@ namespace contensou::app {
 // `out`; returns the summary (without writing it).
 nlohmann::json report_landings(const ShimmyConfig& config, const Landings& landings,
                                const LandingAnalysis& analysis, const TireInput* tire,
-                               const std::string& out);
+                               const OutputDir& out);
 
 // The table that closes a run of scenarios, from their summaries (scenario name -> its
 // "summary" and the rest, as contensou-shimmy writes them): the simulated verdict, the

@@ -217,8 +217,8 @@ def _table_of(data: Any) -> tuple[list[str], list[Any]]:
 
 
 def _renames(
-    columns: Optional[Union[str, Mapping[str, str]]]
-) -> Optional[Union[str, Dict[str, str]]]:
+    columns: Optional[Union[str, Mapping[str, Any]]]
+) -> Optional[Union[str, Dict[str, Any]]]:
     if columns is None or isinstance(columns, str):
         return columns
     if not isinstance(columns, Mapping):
@@ -226,7 +226,9 @@ def _renames(
             f"columns: expected a mapping {{quantity: column}} or 'vx=Speed,...', "
             f"got {type(columns).__name__}"
         )
-    return {str(q): str(c) for q, c in columns.items()}
+    # {'extra': ['T', 'P']}: several columns kept as recorded variables (or 'ignore': left out)
+    return {str(q): [str(x) for x in c] if isinstance(c, (list, tuple)) else str(c)
+            for q, c in columns.items()}
 
 
 def _flag(name: str, value: Any) -> bool:
@@ -261,7 +263,7 @@ def identify(
     profile_smoothing: int = 0,
     profile_clip: bool = False,
     outliers: bool = True,
-    columns: Optional[Union[str, Mapping[str, str]]] = None,
+    columns: Optional[Union[str, Mapping[str, Any]]] = None,
     source: Optional[str] = None,
 ) -> IdentificationResult:
     """Fits the fractional law to measured diagrams and, with ``loop=True`` (the default),
@@ -273,7 +275,11 @@ def identify(
     (n, k) array in the order vx_mps, vy_mps, omega_radps, Fx_N, Fy_N, Mz_Nm, Fz_N, t_s.
     Columns may carry units in their names ('vx [km/h]', omega_rpm, 'Fx [kN]'): they are
     converted to SI. ``columns`` maps other names: ``{"vx": "Speed [km/h]"}`` or
-    ``"vx=Speed [km/h],omega=Rate"``. ``source`` names the data in the report (default: the
+    ``"vx=Speed [km/h],omega=Rate"``; ``{"extra": ["Fx_raw"]}`` keeps a column whose name looks
+    like a channel's as a recorded variable, ``{"ignore": [...]}`` leaves columns out. Every
+    other numeric column is kept as a recorded variable (listed in the report with its range);
+    a column that looks like a misspelt channel, or holds a force no channel reads, is an
+    error. ``source`` names the data in the report (default: the
     path, or "<DataFrame>" / "<arrays>"). Errors in in-memory data name the row (1-based) and
     its index.
 

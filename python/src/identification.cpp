@@ -137,15 +137,21 @@ void put_results(nb::dict& out, const IdentifyRun& run) {
 }
 
 // columns= as "vx=Speed,omega=Rate" or a mapping {quantity: header cell} (any characters in the
-// cell, commas too); errors name Python's keyword.
+// cell, commas too; a list of cells for 'extra' and 'ignore'); errors name Python's keyword.
 ColumnRenames renames_of(const nb::object& renames) {
   if (renames.is_none()) return {};
   if (nb::isinstance<nb::str>(renames))
     return parse_column_renames(nb::cast<std::string>(renames), KeyStyle::python);
   ColumnRenames out;
-  for (const auto& [quantity, column] : nb::cast<nb::dict>(renames))
-    add_column_rename(out, nb::cast<std::string>(nb::str(quantity)),
-                      nb::cast<std::string>(nb::str(column)), KeyStyle::python);
+  for (const auto& [quantity, column] : nb::cast<nb::dict>(renames)) {
+    const std::string q = nb::cast<std::string>(nb::str(quantity));
+    if (nb::isinstance<nb::list>(column) || nb::isinstance<nb::tuple>(column)) {
+      for (const nb::handle c : column)  // {'extra': ['T', 'P']}: several columns
+        add_column_rename(out, q, nb::cast<std::string>(nb::str(c)), KeyStyle::python);
+      continue;
+    }
+    add_column_rename(out, q, nb::cast<std::string>(nb::str(column)), KeyStyle::python);
+  }
   return out;
 }
 

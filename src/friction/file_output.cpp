@@ -7,8 +7,10 @@
 
 #include <cerrno>
 #include <climits>
+#include <cstdio>
 #include <cstdlib>
 #include <cstring>
+#include <optional>
 #include <stdexcept>
 #include <vector>
 
@@ -50,12 +52,41 @@ void write_through(const std::string& path, std::string_view text, bool fifo) {
   if (!ok) fail(path, "write", error);
 }
 
+constexpr const char* kTemporaryMark = ".contensou-tmp-";
+constexpr std::size_t kNameMax = 255;  // NAME_MAX of Linux file systems
+
+// The descriptor of this process that `path` names (/dev/stdout, /dev/fd/3, /proc/self/fd/1).
+std::optional<int> own_descriptor(const std::string& path) {
+  if (path == "/dev/stdin") return 0;
+  if (path == "/dev/stdout") return 1;
+  if (path == "/dev/stderr") return 2;
+  for (const char* prefix : {"/dev/fd/", "/proc/self/fd/"}) {
+    const std::size_t n = std::strlen(prefix);
+    if (path.compare(0, n, prefix) != 0 || path.size() == n || path.size() > n + 9) continue;
+    int fd = 0;
+    for (std::size_t i = n; i < path.size(); ++i) {
+      if (path[i] < '0' || path[i] > '9') return std::nullopt;
+      fd = fd * 10 + (path[i] - '0');
+    }
+    return fd;
+  }
+  return std::nullopt;
+}
+
+// Writes to one of this process's descriptors; standard output's buffer goes first.
+void write_to_descriptor(const std::string& path, int fd, std::string_view text) {
+  std::fflush(stdout);
+  std::fflush(stderr);
+  if (::fcntl(fd, F_GETFL) == -1) fail(path, "descriptor " + std::to_string(fd), errno);
+  if (!write_all(fd, text)) fail(path, "write", errno);
+}
+
 // The file a path names, following symlinks (a dangling link: the target it names).
 std::string resolved(const std::string& path) {
   std::string p = path;
   for (int hops = 0; hops < 40; ++hops) {
     struct stat st {};
-    if (::lstat(p.c_str(), &st) != 0 || !S_ISLNK(st.st_mode)) return p;
+    if (own_descriptor(p) || ::lstat(p.c_str(), &st) != 0 || !S_ISLNK(st.st_mode)) return p;
     std::vector<char> buf(PATH_MAX + 1);
     const ssize_t n = ::readlink(p.c_str(), buf.data(), PATH_MAX);
     if (n < 0) fail(path, "readlink", errno);
@@ -80,9 +111,30 @@ mode_t new_file_mode(const std::string& target) {
 
 }  // namespace
 
+std::string temporary_path_for(const std::string& path, const std::string& tag) {
+  const std::size_t slash = path.rfind('/');
+  const std::string dir = slash == std::string::npos ? "" : path.substr(0, slash + 1);
+  std::string base = slash == std::string::npos ? path : path.substr(slash + 1);
+  const std::size_t room = kNameMax - 1 - std::strlen(kTemporaryMark) - tag.size();
+  if (base.size() > room) {
+    std::size_t cut = room;  // not inside a UTF-8 character: back off its continuation bytes
+    while (cut > 0 && (static_cast<unsigned char>(base[cut]) & 0xC0) == 0x80) --cut;
+    base.resize(cut);
+  }
+  return dir + "." + base + kTemporaryMark + tag;
+}
+
+bool is_temporary_file_name(const std::string& name) {
+  const std::size_t mark = name.rfind(kTemporaryMark);
+  return name.size() > 1 && name[0] == '.' && mark != std::string::npos && mark > 0 &&
+         mark + std::strlen(kTemporaryMark) < name.size();
+}
+
 void write_file_atomically(const std::string& path, std::string_view text) {
   if (path.empty()) throw std::runtime_error("cannot write: empty file name");
   const std::string target = resolved(path);
+  if (const std::optional<int> fd = own_descriptor(target))
+    return write_to_descriptor(path, *fd, text);
   struct stat st {};
   if (::stat(target.c_str(), &st) == 0 && !S_ISREG(st.st_mode)) {
     if (S_ISCHR(st.st_mode) || S_ISFIFO(st.st_mode))
@@ -92,8 +144,7 @@ void write_file_atomically(const std::string& path, std::string_view text) {
   }
   const std::size_t slash = target.rfind('/');
   const std::string dir = slash == std::string::npos ? "." : target.substr(0, slash + 1);
-  const std::string base = slash == std::string::npos ? target : target.substr(slash + 1);
-  std::string tmp = (slash == std::string::npos ? std::string() : dir) + "." + base + ".XXXXXX";
+  std::string tmp = temporary_path_for(target, "XXXXXX");
   const int fd = ::mkstemp(tmp.data());
   if (fd < 0) fail(path, "temporary file in " + dir, errno);
   const bool ok =

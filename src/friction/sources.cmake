@@ -16,4 +16,5 @@ set(contensou_friction_sources
   piecewise_chebyshev.cpp
   pressure_profile.cpp
   quadrature.cpp
-  slip_speed_measure.cpp)
+  slip_speed_measure.cpp
+  units.cpp)

@@ -1,6 +1,7 @@
 #include "contensou/identification/key_style.hpp"
 
 #include <algorithm>
+#include <cctype>
 
 namespace contensou {
 
@@ -13,7 +14,14 @@ std::string key_name(std::string_view key, KeyStyle style) {
 
 std::string rename_option(const std::string& quantity, const std::string& column, KeyStyle style) {
   if (style == KeyStyle::python) return "columns={'" + quantity + "': '" + column + "'}";
-  return "--columns " + quantity + "=" + column;
+  // A column name with spaces or shell characters in single quotes, as a shell would need it.
+  const bool plain = std::all_of(column.begin(), column.end(), [](char c) {
+    return std::isalnum(static_cast<unsigned char>(c)) || c == '_' || c == '-' || c == '.';
+  });
+  if (plain || column == "NAME") return "--columns " + quantity + "=" + column;
+  std::string quoted = "'";
+  for (char c : column) quoted += c == '\'' ? std::string("'\\''") : std::string(1, c);
+  return "--columns " + quantity + "=" + quoted + "'";
 }
 
 }  // namespace contensou

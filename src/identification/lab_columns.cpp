@@ -9,12 +9,11 @@
 
 #include "contensou/friction/csv.hpp"
 #include "contensou/friction/error.hpp"
+#include "contensou/friction/units.hpp"
 
 namespace contensou {
 
 namespace {
-
-enum class Dimension { speed, rate, force, moment, time };
 
 struct QuantitySpec {
   const char* name;       // short name, as in --columns
@@ -28,84 +27,14 @@ constexpr QuantitySpec kQuantities[kMeasuredQuantities] = {
     {"Fy", "Fy_N", Dimension::force},          {"Mz", "Mz_Nm", Dimension::moment},
     {"Fz", "Fz_N", Dimension::force},          {"t", "t_s", Dimension::time}};
 
-// A unit: its spellings after normalisation (lower case; spaces, '.', '*', middle dots dropped;
-// a degree sign read as "deg"), its kind, the factor to SI and how reports write it.
-struct UnitSpec {
-  std::vector<std::string> spellings;
-  Dimension dimension;
-  double to_si;
-  const char* display;
-};
-
-const std::vector<UnitSpec>& unit_table() {
-  static const std::vector<UnitSpec> units = {
-      {{"m/s", "mps", "ms-1", "ms^-1"}, Dimension::speed, 1.0, "m/s"},
-      {{"km/h", "kmh", "kph", "kmph"}, Dimension::speed, 1.0 / 3.6, "km/h"},
-      {{"mm/s", "mmps"}, Dimension::speed, 1e-3, "mm/s"},
-      {{"rad/s", "radps", "rads-1", "rad/sec"}, Dimension::rate, 1.0, "rad/s"},
-      {{"deg/s", "degps", "dps", "deg/sec"}, Dimension::rate, M_PI / 180.0, "deg/s"},
-      {{"rpm", "1/min", "rev/min", "u/min", "r/min"}, Dimension::rate, 2.0 * M_PI / 60.0, "rpm"},
-      {{"n"}, Dimension::force, 1.0, "N"},
-      {{"kn"}, Dimension::force, 1e3, "kN"},
-      {{"nm"}, Dimension::moment, 1.0, "N m"},
-      {{"knm"}, Dimension::moment, 1e3, "kN m"},
-      {{"nmm"}, Dimension::moment, 1e-3, "N mm"},
-      {{"s", "sec"}, Dimension::time, 1.0, "s"},
-      {{"ms"}, Dimension::time, 1e-3, "ms"}};
-  return units;
-}
-
-const char* si_unit_of(Dimension d) {
-  switch (d) {
-    case Dimension::speed:
-      return "m/s";
-    case Dimension::rate:
-      return "rad/s";
-    case Dimension::force:
-      return "N";
-    case Dimension::moment:
-      return "N m";
-    case Dimension::time:
-      return "s";
-  }
-  return "";
-}
+// Channels of a tire-test file the law does not use, whose force or moment unit is expected:
+// recorded, not refused (normalised names).
+const std::vector<std::string> kKnownOtherChannels = {"mx", "my"};
 
 std::string trim(const std::string& s) {
   const auto b = s.find_first_not_of(" \t");
   if (b == std::string::npos) return "";
   return s.substr(b, s.find_last_not_of(" \t") - b + 1);
-}
-
-std::string normalise_unit(const std::string& text) {
-  std::string u;
-  for (std::size_t i = 0; i < text.size(); ++i) {
-    const unsigned char c = static_cast<unsigned char>(text[i]);
-    if (c == 0xC2 && i + 1 < text.size()) {  // U+00B7 middle dot, U+00B0 degree sign
-      const unsigned char d = static_cast<unsigned char>(text[i + 1]);
-      if (d == 0xB7 || d == 0xB0) {
-        if (d == 0xB0) u += "deg";
-        ++i;
-        continue;
-      }
-    }
-    if (c == 0xE2 && i + 2 < text.size() && static_cast<unsigned char>(text[i + 1]) == 0x8B &&
-        static_cast<unsigned char>(text[i + 2]) == 0x85) {  // U+22C5 dot operator
-      i += 2;
-      continue;
-    }
-    if (c == ' ' || c == '.' || c == '*' || c == '\t') continue;
-    u += static_cast<char>(std::tolower(c));
-  }
-  return u;
-}
-
-const UnitSpec* find_unit(const std::string& text) {
-  const std::string u = normalise_unit(text);
-  for (const UnitSpec& spec : unit_table())
-    if (std::find(spec.spellings.begin(), spec.spellings.end(), u) != spec.spellings.end())
-      return &spec;
-  return nullptr;
 }
 
 bool iequals(const std::string& a, const std::string& b) {
@@ -172,14 +101,14 @@ void apply_unit(LabColumn& column, int q, const std::string& unit_text, const La
     column.unit_assumed = true;
     return;
   }
-  const UnitSpec* unit = find_unit(unit_text);
+  const Unit* unit = find_unit(unit_text);
   const std::string accepted = accepted_units(static_cast<MeasuredQuantity>(q));
   if (unit == nullptr)
     throw column_error(in, line, column.index,
                        "unit '" + unit_text + "' of " + spec.name +
                            " is not one this reader converts (" + spec.name + ": " + accepted +
                            ")");
-  if (unit->dimension != spec.dimension)
+  if (unit->dimension != spec.dimension || unit->offset_si != 0.0)
     throw column_error(in, line, column.index,
                        "'" + unit_text + "' is not a unit of " + spec.name + " (" + spec.name +
                            ": " + accepted + ")");
@@ -212,13 +141,37 @@ int renamed_column(const LabHeader& in, const std::string& quantity, const std::
                        target + "' (columns: " + names + ")");
 }
 
-// Two columns for one quantity are an error, unless one has the SI name: that one is read
-// (files that log a rate in rad/s and again in rpm).
+// "'omega [rpm]' (column 4): omega is read from 'omega_radps' (column 3)", why it is not read.
+std::string read_instead(const LabHeader& in, int index, int q, const LabColumn& c) {
+  return "'" + trim(in.header[index]) + "' (column " + std::to_string(index + 1) +
+         "): " + kQuantities[q].name + " is read from '" + c.header + "' (column " +
+         std::to_string(c.index + 1) + ")";
+}
+
+// Two columns for one quantity are an error, unless exactly one has the SI name: that one is
+// read and the other listed as not read (files that log a rate in rad/s and again in rpm).
+// The same name twice is an error (which of the two holds the channel?).
 void assign(LabColumns& out, int q, int index, const LabHeader& in) {
   LabColumn& c = out.column[q];
   const std::string header = trim(in.header[index]);
-  if (c.present() && !c.renamed && c.header == kQuantities[q].si_column) return;
-  if (c.present() && !c.renamed && header == kQuantities[q].si_column) c = LabColumn{};
+  const std::string si = kQuantities[q].si_column;
+  if (c.present() && header == c.header)
+    throw ParseError(in.file, in.header_line, index + 1,
+                     "duplicate column '" + header + "' (columns " + std::to_string(c.index + 1) +
+                         " and " + std::to_string(index + 1) +
+                         "): which one holds the channel? Rename one");
+  if (c.present() && !c.renamed && c.header == si) {
+    out.not_read.push_back(read_instead(in, index, q, c));
+    return;
+  }
+  if (c.present() && !c.renamed && header == si) {
+    LabColumn dropped = c;
+    c = LabColumn{};
+    c.index = index;
+    c.header = header;
+    out.not_read.push_back(read_instead(in, dropped.index, q, c));
+    return;
+  }
   if (c.present())
     throw ParseError(in.file, in.header_line, 0,
                      "two columns for " + std::string(kQuantities[q].name) + ": " +
@@ -294,12 +247,174 @@ int header_index(const LabHeader& in, const std::string& name) {
   return found;
 }
 
+// What claims a column: a quantity, a rename to extra= or ignore=, or nothing yet.
+enum class Claim { none, quantity, extra, ignore };
+
+// A unit no quantity of the law has (a temperature, a pressure, an angle, a length, a ratio):
+// a column "T [degC]" is a recorded temperature, not the time t.
+bool unit_of_no_quantity(const std::string& unit_text) {
+  const Unit* u = unit_text.empty() ? nullptr : find_unit(unit_text);
+  if (u == nullptr) return false;
+  return std::none_of(std::begin(kQuantities), std::end(kQuantities),
+                      [&](const QuantitySpec& q) { return q.dimension == u->dimension; });
+}
+
+// Lower case, letters and digits only: "Force X" -> "forcex", "Fx_raw" -> "fxraw".
+std::string letters_and_digits(const std::string& s) {
+  std::string out;
+  for (char c : s)
+    if (std::isalnum(static_cast<unsigned char>(c)))
+      out += static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  return out;
+}
+
+// A unit anywhere in a header cell: the trailing one split_header finds, else the first
+// bracketed text that is a unit ("Fx [kN]x" holds kN).
+std::string unit_in(const std::string& header, const HeaderCell& cell) {
+  if (!cell.unit.empty()) return cell.unit;
+  for (const auto& [open, close] : {std::pair{'[', ']'}, std::pair{'(', ')'}}) {
+    const std::size_t b = header.find(open);
+    const std::size_t e = b == std::string::npos ? b : header.find(close, b + 1);
+    if (e != std::string::npos && find_unit(header.substr(b + 1, e - b - 1)) != nullptr)
+      return header.substr(b + 1, e - b - 1);
+  }
+  return "";
+}
+
+// The quantity a name not read resembles: it starts with the quantity's short name and adds at
+// most two characters (Fxx, Fx1, omegaa), or it is within two edits of the SI column name
+// (Fx_NN). -1 if none.
+int resembled_quantity(const std::string& stem, const std::string& header) {
+  const std::string n = letters_and_digits(stem);
+  for (int q = 0; q < kMeasuredQuantities; ++q) {
+    const std::string shortname = letters_and_digits(kQuantities[q].name);
+    if (shortname.size() < 2) continue;  // "t": too short to tell a misspelling
+    if (n.compare(0, shortname.size(), shortname) == 0 && n.size() <= shortname.size() + 2)
+      return q;
+    if (!closest_name({trim(header)}, kQuantities[q].si_column).empty()) return q;
+  }
+  return -1;
+}
+
+// How to keep or map a column, in the style of the front end ("--columns extra='Fx_raw'").
+std::string ways_to_read(const LabHeader& in, const std::string& header, const char* quantity) {
+  return "map it (" + rename_option(quantity, header, in.style) +
+         "); else keep it as a recorded column (" + rename_option("extra", header, in.style) +
+         ") or leave it out (" + rename_option("ignore", header, in.style) + ")";
+}
+
+// A column no quantity reads that looks like a channel whose data would be lost: refused.
+void refuse_lost_channel(const LabHeader& in, int index, const HeaderCell& cell,
+                         const std::string& unit) {
+  const std::string header = trim(in.header[static_cast<std::size_t>(index)]);
+  const Unit* u = unit.empty() ? nullptr : find_unit(unit);
+  const bool force =
+      u != nullptr && (u->dimension == Dimension::force || u->dimension == Dimension::moment);
+  const std::string n = letters_and_digits(cell.stem);
+  const bool other_channel = std::find(kKnownOtherChannels.begin(), kKnownOtherChannels.end(), n) !=
+                             kKnownOtherChannels.end();
+  if (other_channel) return;
+  const int q = resembled_quantity(cell.stem, header);
+  if (q >= 0)
+    throw ParseError(in.file, in.header_line, 0,
+                     "column '" + header + "' (" + std::to_string(index + 1) +
+                         ") is not a column this reader knows: did you mean '" +
+                         kQuantities[q].si_column + "'? (or the same with a unit: '" +
+                         kQuantities[q].name + " [" + si_unit_of(kQuantities[q].dimension) +
+                         "]'). If it is " + kQuantities[q].name + ", " +
+                         ways_to_read(in, header, kQuantities[q].name));
+  if (force)
+    throw column_error(
+        in, in.header_line, index,
+        std::string("holds a ") + dimension_name(u->dimension) + " (" + unit +
+            ") that no channel reads: if it is Fx, Fy, Fz or Mz, " +
+            ways_to_read(in, header, u->dimension == Dimension::moment ? "Mz" : "Fx"));
+}
+
+// The unit of a recorded column: the header's, else the units row's; converted when known.
+void set_recorded_unit(RecordedColumn& r, const std::string& unit) {
+  r.unit = unit;
+  const Unit* u = unit.empty() ? nullptr : find_unit(unit);
+  if (u == nullptr) {
+    r.si_unit = unit;  // kept as written (or none)
+    return;
+  }
+  r.si_unit = si_unit_of(u->dimension);
+  r.kind = dimension_name(u->dimension);
+  r.to_si = u->to_si;
+  r.offset_si = u->offset_si;
+}
+
+// Every column no quantity reads: an unnamed one (a row index) and one declared ignore= are
+// listed as not read; one that looks like a lost channel is refused; the rest are recorded.
+void classify_other_columns(const LabHeader& in, const std::vector<Claim>& claims, LabColumns& out,
+                            std::vector<ParseError>& lost) {
+  for (std::size_t i = 0; i < in.header.size(); ++i) {
+    const int index = static_cast<int>(i);
+    const std::string header = trim(in.header[i]);
+    const std::string where = "'" + header + "' (column " + std::to_string(i + 1) + ")";
+    if (claims[i] == Claim::quantity) continue;
+    if (header.empty()) {
+      out.not_read.push_back("column " + std::to_string(i + 1) + " (unnamed)");
+      continue;
+    }
+    if (claims[i] == Claim::ignore) {
+      out.not_read.push_back(where + ": " + rename_option("ignore", header, in.style));
+      continue;
+    }
+    const HeaderCell cell = split_header(header);
+    std::string unit = unit_in(header, cell);
+    if (unit.empty() && out.units_row && i < in.first_row->size()) unit = trim((*in.first_row)[i]);
+    if (claims[i] != Claim::extra) {
+      try {
+        refuse_lost_channel(in, index, cell, unit);
+      } catch (const ParseError& e) {
+        lost.push_back(e);  // after the required columns' checks: the clearer message first
+        continue;
+      }
+    }
+    for (const RecordedColumn& r : out.recorded)
+      if (r.header == header)
+        throw ParseError(in.file, in.header_line, index + 1,
+                         "duplicate column '" + header + "' (columns " +
+                             std::to_string(r.index + 1) + " and " + std::to_string(i + 1) +
+                             "): rename one");
+    RecordedColumn r;
+    r.index = index;
+    r.header = header;
+    r.name = cell.stem.empty() ? header : cell.stem;
+    r.declared = claims[i] == Claim::extra;
+    set_recorded_unit(r, unit);
+    out.recorded.push_back(r);
+  }
+}
+
+// A column taken for a quantity by its bare name ("T") whose units row gives a unit of no
+// quantity ("degC"): a recorded variable, not the quantity.
+void release_by_units_row(LabColumns& out, const LabHeader& in, std::vector<Claim>& claims) {
+  for (LabColumn& c : out.column) {
+    if (!c.present() || c.renamed || !c.unit_assumed ||
+        c.index >= static_cast<int>(in.first_row->size()))
+      continue;
+    if (!unit_of_no_quantity(trim((*in.first_row)[static_cast<std::size_t>(c.index)]))) continue;
+    claims[static_cast<std::size_t>(c.index)] = Claim::none;
+    c = LabColumn{};
+  }
+}
+
 // A column of the file that is not read but looks like a misspelt known column (or the same
 // quantity in another unit) while that column is absent: the data would be silently lost.
-void refuse_near_misses(const LabHeader& in, const LabColumns& cols) {
+// Columns declared extra= or ignore=, and recorded ones with a unit of no quantity ("T [degC]"),
+// are not near misses.
+void refuse_near_misses(const LabHeader& in, const LabColumns& cols, const ColumnRenames& renames) {
   std::vector<std::string> read = kKnownColumns;  // not suggested: the columns read anyway
   for (const LabColumn& c : cols.column)
     if (c.present()) read.push_back(in.header[static_cast<std::size_t>(c.index)]);
+  for (const RecordedColumn& r : cols.recorded)
+    if (r.declared || unit_of_no_quantity(r.unit)) read.push_back(in.header[r.index]);
+  for (const auto& [quantity, target] : renames)
+    if (iequals(quantity, "ignore"))
+      read.push_back(in.header[renamed_column(in, quantity, target)]);
   for (int q = 0; q < kMeasuredQuantities; ++q) {
     if (cols.column[q].present()) continue;
     const std::string k = kQuantities[q].si_column;
@@ -316,14 +431,15 @@ void refuse_near_misses(const LabHeader& in, const LabColumns& cols) {
 }
 
 // A missing required column, a near miss, no channel: refused naming the header line.
-void require_columns(const LabHeader& in, const LabColumns& cols) {
+// (Columns no quantity reads are classified by classify_other_columns.)
+void require_columns(const LabHeader& in, const LabColumns& cols, const ColumnRenames& renames) {
   for (MeasuredQuantity q : {MeasuredQuantity::vx, MeasuredQuantity::vy, MeasuredQuantity::omega})
     if (!cols[q].present())
       throw ParseError(in.file, in.header_line, 0,
                        std::string("missing required column '") + si_column_name(q) + "'" +
                            did_you_mean(in, si_column_name(q)) + " (or give its name: " +
                            rename_option(quantity_name(q), "NAME", in.style) + ")");
-  refuse_near_misses(in, cols);
+  refuse_near_misses(in, cols, renames);
   if (!cols[MeasuredQuantity::Fx].present() && !cols[MeasuredQuantity::Fy].present() &&
       !cols[MeasuredQuantity::Mz].present())
     throw ParseError(in.file, in.header_line, 0, "no measured channel (need Fx_N, Fy_N or Mz_Nm)");
@@ -340,11 +456,7 @@ const char* si_column_name(MeasuredQuantity q) {
 }
 
 std::string accepted_units(MeasuredQuantity q) {
-  std::string s;
-  for (const UnitSpec& u : unit_table())
-    if (u.dimension == kQuantities[static_cast<int>(q)].dimension)
-      s += (s.empty() ? "" : ", ") + std::string(u.display);
-  return s;
+  return units_of(kQuantities[static_cast<int>(q)].dimension);
 }
 
 std::string LabColumn::description() const {
@@ -367,9 +479,11 @@ std::vector<std::string> LabColumns::notes() const {
 void add_column_rename(ColumnRenames& renames, const std::string& quantity,
                        const std::string& column, KeyStyle style) {
   const std::string q = trim(quantity);
-  if (!quantity_of(q) || iequals(q, "time"))
+  const bool other = iequals(q, "extra") || iequals(q, "ignore");
+  if (!other && (!quantity_of(q) || iequals(q, "time")))
     throw std::invalid_argument(rename_option(q, column, style) + ": '" + q +
-                                "' is not a quantity (vx, vy, omega, Fx, Fy, Mz, Fz, t)");
+                                "' is not a quantity (vx, vy, omega, Fx, Fy, Mz, Fz, t; or extra, "
+                                "ignore)");
   renames.emplace_back(q, trim(column));
 }
 
@@ -390,28 +504,54 @@ ColumnRenames parse_column_renames(const std::string& text, KeyStyle style) {
   return renames;
 }
 
-LabColumns resolve_lab_columns(const LabHeader& in, const ColumnRenames& renames) {
+namespace {
+
+// The columns, and the refusals of columns that look like lost channels (thrown by the callers
+// after their own checks).
+LabColumns resolve(const LabHeader& in, const ColumnRenames& renames,
+                   std::vector<ParseError>& lost) {
   LabColumns out;
-  std::vector<bool> taken(in.header.size(), false);
+  std::vector<Claim> claims(in.header.size());
   for (const auto& [quantity, target] : renames) {
-    const int q = *quantity_of(quantity);
     const int index = renamed_column(in, quantity, target);
+    if (iequals(quantity, "extra") || iequals(quantity, "ignore")) {
+      claims[static_cast<std::size_t>(index)] =
+          iequals(quantity, "extra") ? Claim::extra : Claim::ignore;
+      continue;
+    }
+    const int q = *quantity_of(quantity);
     assign(out, q, index, in);
     out.column[q].renamed = true;
     apply_unit(out.column[q], q, split_header(in.header[index]).unit, in, in.header_line);
-    taken[index] = true;
+    claims[static_cast<std::size_t>(index)] = Claim::quantity;
   }
   for (std::size_t i = 0; i < in.header.size(); ++i) {
-    if (taken[i]) continue;
+    if (claims[i] != Claim::none) continue;
     const HeaderCell cell = split_header(in.header[i]);
     const std::optional<int> q = quantity_of(cell.stem);
-    if (!q || out.column[*q].renamed) continue;
+    if (!q || unit_of_no_quantity(cell.unit)) continue;  // "T [degC]" is no time
+    claims[i] = Claim::quantity;
+    if (out.column[*q].renamed) {
+      out.not_read.push_back(read_instead(in, static_cast<int>(i), *q, out.column[*q]));
+      continue;
+    }
     assign(out, *q, static_cast<int>(i), in);
     if (out.column[*q].index == static_cast<int>(i))
       apply_unit(out.column[*q], *q, cell.unit, in, in.header_line);
   }
   out.units_row = first_row_holds_units(out, in);
+  if (out.units_row) release_by_units_row(out, in, claims);
   if (out.units_row) apply_units_row(out, in);
+  classify_other_columns(in, claims, out, lost);
+  return out;
+}
+
+}  // namespace
+
+LabColumns resolve_lab_columns(const LabHeader& in, const ColumnRenames& renames) {
+  std::vector<ParseError> lost;
+  LabColumns out = resolve(in, renames, lost);
+  if (!lost.empty()) throw lost.front();
   return out;
 }
 
@@ -420,8 +560,10 @@ LabColumns resolve_measured_columns(const LabHeader& in, const ColumnRenames& re
     throw ParseError(in.file, in.header_line, 0,
                      "the first row holds numbers, not column names: the file needs a header row "
                      "(vx_mps,vy_mps,omega_radps and at least one of Fx_N,Fy_N,Mz_Nm)");
-  const LabColumns cols = resolve_lab_columns(in, renames);
-  require_columns(in, cols);
+  std::vector<ParseError> lost;
+  const LabColumns cols = resolve(in, renames, lost);
+  require_columns(in, cols, renames);
+  if (!lost.empty()) throw lost.front();
   return cols;
 }
 

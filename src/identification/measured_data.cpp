@@ -32,6 +32,53 @@ std::optional<double> si_value(const CsvTable& t, const CsvRow& row, const LabCo
   return si;
 }
 
+// A recorded column's cell: NaN when empty or "nan"; nullopt when it is text.
+std::optional<double> recorded_cell(const CsvTable& t, const CsvRow& row, int column) {
+  const std::string& text = row.cells[static_cast<std::size_t>(column)];
+  if (text.empty()) return std::nan("");
+  try {
+    const std::optional<double> v = t.number(row, column);
+    return v ? *v : std::nan("");
+  } catch (const ParseError&) {
+    char* end = nullptr;
+    std::strtod(text.c_str(), &end);  // "nan", "-inf": a missing value, not text
+    if (end != text.c_str() && *end == '\0') return std::nan("");
+    return std::nullopt;
+  }
+}
+
+// The recorded columns' values in SI, column by column, into the points: a column whose first
+// non-empty cell is text is a text column (listed as not read); text further down a numeric
+// column is an error at its cell.
+void read_recorded(const CsvTable& t, const LabColumns& cols, std::size_t first,
+                   MeasuredData& data) {
+  for (const RecordedColumn& c : cols.recorded) {
+    const std::string where = "'" + c.header + "' (column " + std::to_string(c.index + 1) + ")";
+    std::vector<double> values;
+    values.reserve(data.points.size());
+    bool any = false, text = false;
+    for (std::size_t r = first; r < t.rows.size() && !text; ++r) {
+      const std::optional<double> v = recorded_cell(t, t.rows[r], c.index);
+      if (!v && !any) text = true;
+      if (!v && any)
+        throw t.cell_error(t.rows[r].line, c.index,
+                           "not a number in a column of numbers: '" +
+                               t.rows[r].cells[static_cast<std::size_t>(c.index)] + "'");
+      if (!v) break;
+      any = any || !std::isnan(*v);
+      values.push_back(std::isnan(*v) ? *v : c.to_si * *v + c.offset_si);
+    }
+    if (text || !any) {
+      data.columns_not_read.push_back(where + (text ? ": text" : ": empty"));
+      continue;
+    }
+    for (std::size_t k = 0; k < data.points.size(); ++k)
+      data.points[k].recorded.push_back(values[k]);
+    data.recorded.push_back(
+        {c.name, c.header, c.index + 1, c.unit, c.si_unit, c.kind, c.to_si, c.offset_si});
+  }
+}
+
 }  // namespace
 
 MeasuredData measured_data_from_table(const CsvTable& t, const ColumnRenames& renames,
@@ -68,6 +115,8 @@ MeasuredData measured_data_from_table(const CsvTable& t, const ColumnRenames& re
     throw ParseError(t.file, t.header_line, 0,
                      cols.units_row ? "no data rows after the header and its units row"
                                     : "no data rows after the header");
+  data.columns_not_read = cols.not_read;
+  read_recorded(t, cols, cols.units_row ? 1 : 0, data);
   return data;
 }
 

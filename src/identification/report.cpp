@@ -84,6 +84,19 @@ nlohmann::json fit_report(const ReportInput& info, const FitReport& base) {
                  info.normal_load_n ? nlohmann::json(*info.normal_load_n) : nlohmann::json()}};
   if (!info.normal_load_source.empty()) r["input"]["normal_load_source"] = info.normal_load_source;
   if (!info.column_notes.empty()) r["input"]["columns_converted"] = info.column_notes;
+  nlohmann::json recorded = nlohmann::json::array();
+  for (const RecordedSummary& c : info.recorded)
+    recorded.push_back({{"name", c.variable.name},
+                        {"header", c.variable.header},
+                        {"column", c.variable.column},
+                        {"unit", c.variable.unit},
+                        {"si_unit", c.variable.si_unit},
+                        {"kind", c.variable.kind},
+                        {"min", c.min},
+                        {"max", c.max},
+                        {"values", c.values}});
+  r["input"]["recorded_columns"] = recorded;
+  r["input"]["columns_not_read"] = info.columns_not_read;
   nlohmann::json outliers = nlohmann::json::array();
   for (const Outlier& o : info.outliers)
     outliers.push_back({{"line", o.line > 0 ? nlohmann::json(o.line) : nlohmann::json()},
@@ -184,11 +197,27 @@ nlohmann::json loop_report(const ReportInput& info, const ClosedLoopReport& loop
 }  // namespace
 
 std::string fit_report_json(const ReportInput& input, const FitReport& base, int indent) {
-  return fit_report(input, base).dump(indent);
+  return fit_report(input, base).dump(indent, ' ', false, nlohmann::json::error_handler_t::replace);
 }
 
 std::string loop_report_json(const ReportInput& input, const ClosedLoopReport& loop, int indent) {
-  return loop_report(input, loop).dump(indent);
+  return loop_report(input, loop)
+      .dump(indent, ' ', false, nlohmann::json::error_handler_t::replace);
+}
+
+std::string RecordedSummary::describe() const {
+  const RecordedVariable& v = variable;
+  const auto own = [&](double si) { return (si - v.offset_si) / v.to_si; };
+  char range[160];
+  std::string s = "'" + v.header + "' (column " + std::to_string(v.column) + "): ";
+  std::snprintf(range, sizeof range, "%.6g to %.6g", own(min), own(max));
+  s += range;
+  if (!v.unit.empty()) s += " " + v.unit;
+  if (!v.kind.empty() && (v.to_si != 1.0 || v.offset_si != 0.0)) {
+    std::snprintf(range, sizeof range, " (%.6g to %.6g %s)", min, max, v.si_unit.c_str());
+    s += range;
+  }
+  return s + ", " + std::to_string(values) + " values";
 }
 
 ReportInput describe_run(const std::string& file, const MeasuredData& data, double radius_m,
@@ -200,6 +229,18 @@ ReportInput describe_run(const std::string& file, const MeasuredData& data, doub
   in.radius_m = radius_m;
   in.normal_load_n = normal_load_n;
   in.column_notes = data.column_notes;
+  in.columns_not_read = data.columns_not_read;
+  for (std::size_t k = 0; k < data.recorded.size(); ++k) {
+    RecordedSummary c{data.recorded[k], 0.0, 0.0, 0};
+    for (const MeasuredPoint& p : data.points) {
+      const double v = p.recorded[k];
+      if (std::isnan(v)) continue;
+      c.min = c.values == 0 ? v : std::min(c.min, v);
+      c.max = c.values == 0 ? v : std::max(c.max, v);
+      ++c.values;
+    }
+    in.recorded.push_back(c);
+  }
   in.profile = profile.description;
   in.profile_rms_residual_pa = profile.rms_residual_pa;
   in.profile_max_residual_pa = profile.max_residual_pa;

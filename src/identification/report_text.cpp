@@ -20,6 +20,8 @@ std::string input_text(const ReportInput& info) {
   if (info.normal_load_n) s += ", N = " + fmt("%g", *info.normal_load_n) + " N";
   if (!info.normal_load_source.empty()) s += " (" + info.normal_load_source + ")";
   for (const std::string& note : info.column_notes) s += "\ncolumn: " + note;
+  for (const RecordedSummary& c : info.recorded) s += "\nrecorded, not in the law: " + c.describe();
+  for (const std::string& note : info.columns_not_read) s += "\nnot read: " + note;
   if (!info.outliers.empty()) {
     s += "\noutliers: " + std::to_string(info.outliers.size()) +
          " values left out of the fit as gross errors (residual more than 8 robust sigma from "

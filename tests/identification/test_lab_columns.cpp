@@ -232,3 +232,77 @@ TEST(LabColumns, MeasuredHeaderChecksNeedNoTable) {
   EXPECT_EQ(ok[MeasuredQuantity::Mz].index, 4);
   EXPECT_DOUBLE_EQ(ok[MeasuredQuantity::Mz].to_si, 1e-3);
 }
+
+// A column no channel reads but that looks like one (a misspelt name, a force unit) would lose
+// its data without a word: refused, naming the column and the channel it resembles.
+TEST(LabColumns, AColumnThatLooksLikeAChannelIsNeverDroppedUnread) {
+  const std::string rows = "1,0,10,-1.2,35,-7.5\n2,0,10,-1.3,36,-7.4\n";
+  const auto refusal = [&](const std::string& fx_header) {
+    return error_of("vx_mps,vy_mps,omega_radps," + fx_header + ",Fy_N,Mz_Nm\n" + rows);
+  };
+  const std::string fxx = refusal("Fxx [kN]");
+  EXPECT_NE(fxx.find("column 'Fxx [kN]' (4) is not a column this reader knows: did you mean "
+                     "'Fx_N'?"),
+            std::string::npos)
+      << fxx;
+  EXPECT_NE(fxx.find("--columns Fx='Fxx [kN]'"), std::string::npos) << fxx;
+  for (const std::string h : {"Force X [kN]", "Fx [kN]x"}) {
+    const std::string e = refusal(h);
+    EXPECT_NE(e.find("column '" + h + "' (4): holds a force (kN) that no channel reads"),
+              std::string::npos)
+        << e;
+  }
+  // The same channel named twice: which column holds it?
+  const std::string twice = error_of("vx_mps,vy_mps,omega_radps,Fx_N,Fx_N,Mz_Nm\n" + rows);
+  EXPECT_NE(twice.find(":1:5: duplicate column 'Fx_N' (columns 4 and 5)"), std::string::npos)
+      << twice;
+  // Declared, the same columns are read: mapped, kept or left out.
+  const std::string path = write("lab_force_x.csv",
+                                 "vx_mps,vy_mps,omega_radps,Force X [kN],"
+                                 "Fy_N,Mz_Nm\n" +
+                                     rows);
+  const MeasuredData mapped = read_measured_csv(path, {{"Fx", "Force X [kN]"}});
+  EXPECT_DOUBLE_EQ(*mapped.points[1].force[0], -1300.0);
+  const MeasuredData kept = read_measured_csv(path, {{"extra", "Force X [kN]"}});
+  ASSERT_EQ(kept.recorded.size(), 1u);
+  EXPECT_DOUBLE_EQ(kept.points[1].recorded[0], -1300.0);  // kN to N
+  EXPECT_FALSE(kept.points[1].force[0].has_value());
+  const MeasuredData left = read_measured_csv(path, {{"ignore", "Force X [kN]"}});
+  EXPECT_TRUE(left.recorded.empty());
+  ASSERT_EQ(left.columns_not_read.size(), 1u);
+  EXPECT_NE(left.columns_not_read[0].find("'Force X [kN]' (column 4)"), std::string::npos);
+}
+
+// Every other column is accounted for: numeric ones recorded in SI (a temperature with its
+// offset), text and unnamed ones listed as not read, Mx recorded though it holds a moment.
+TEST(LabColumns, EveryOtherColumnIsRecordedOrListedAsNotRead) {
+  const MeasuredData d = read_measured_csv(
+      write("lab_extra.csv",
+            ",vx_mps,vy_mps,omega_radps,Fx_N,T [degC],p_tire [bar],note,Mx [N m],camber [deg]\n"
+            "0,1,0,10,-1200,25,2.5,ok,12,1.5\n"
+            "1,2,0,10,-1300,,2.4,ok,13,-1.5\n"));
+  ASSERT_EQ(d.recorded.size(), 4u);
+  EXPECT_EQ(d.recorded[0].name, "T");
+  EXPECT_EQ(d.recorded[0].kind, "temperature");
+  EXPECT_EQ(d.recorded[0].si_unit, "K");
+  EXPECT_DOUBLE_EQ(d.points[0].recorded[0], 298.15);
+  EXPECT_TRUE(std::isnan(d.points[1].recorded[0]));  // an empty cell
+  EXPECT_DOUBLE_EQ(d.points[1].recorded[1], 2.4e5);  // bar to Pa
+  EXPECT_EQ(d.recorded[2].header, "Mx [N m]");
+  EXPECT_DOUBLE_EQ(d.points[0].recorded[3], 1.5 * M_PI / 180.0);
+  ASSERT_EQ(d.columns_not_read.size(), 2u);
+  EXPECT_EQ(d.columns_not_read[0], "column 1 (unnamed)");
+  EXPECT_EQ(d.columns_not_read[1], "'note' (column 8): text");
+  // A bare "T" whose units row says degC is a temperature, not the time t.
+  const MeasuredData row = read_measured_csv(
+      write("lab_extra_row.csv", "vx,vy,omega,Fx,T\nm/s,m/s,rad/s,N,degC\n1,0,10,-1200,20\n"));
+  EXPECT_FALSE(row.points[0].time.has_value());
+  ASSERT_EQ(row.recorded.size(), 1u);
+  EXPECT_DOUBLE_EQ(row.points[0].recorded[0], 293.15);
+  // The same rate twice, in rad/s and in rpm: the SI one is read, the other listed.
+  const MeasuredData twice = read_measured_csv(
+      write("lab_twice.csv", "vx_mps,vy_mps,omega_radps,omega [rpm],Fx_N\n1,0,10,95.5,-1200\n"));
+  ASSERT_EQ(twice.columns_not_read.size(), 1u);
+  EXPECT_EQ(twice.columns_not_read[0],
+            "'omega [rpm]' (column 4): omega is read from 'omega_radps' (column 3)");
+}

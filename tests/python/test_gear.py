@@ -108,9 +108,10 @@ def app_run(shimmy_app, tmp_path_factory):
     d["maps"] = [spec]
     cfg = c.LandingConfig(d)
     cfg.to_json(out / "cfg.json")
-    subprocess.run([str(shimmy_app), "--config", str(out / "cfg.json"), "--out", str(out),
+    run = out / "run"  # an output folder holds only what contensou writes
+    subprocess.run([str(shimmy_app), "--config", str(out / "cfg.json"), "--out", str(run),
                     "--map", "--threads", "2"], check=True, capture_output=True)
-    return cfg, out
+    return cfg, run
 
 
 @pytest.mark.parametrize("model", ["coupled", "von_schlippe"])

@@ -4,6 +4,7 @@ CSV path, a DataFrame and plain arrays; the result's arrays against the report; 
 from __future__ import annotations
 
 import json
+import re
 import subprocess
 
 import numpy as np
@@ -161,7 +162,10 @@ def test_units_in_names_and_renamed_columns_are_read_as_the_app_reads_them():
     with pytest.raises(ValueError, match="Mz"):  # the torque column unmapped: no channel named
         c.identify(lab.drop(columns=["Fx [kN]", "Fy_N"]), radius=0.087, loop=False)
     with pytest.raises(ValueError, match=r"row 2 \(index 1\): column 'operator'|operator"):
-        c.identify(lab, radius=0.087, loop=False, columns="Mz=operator")
+        c.identify(lab.drop(columns=["Torque (N m)"]), radius=0.087, loop=False,
+                   columns="Mz=operator")
+    with pytest.raises(ValueError, match=r"'Torque \(N m\)' \(6\): holds a moment"):
+        c.identify(lab, radius=0.087, loop=False, columns="Mz=operator")  # the torque unread
 
 
 def test_column_errors_name_the_keyword_as_python_writes_it():
@@ -180,6 +184,32 @@ def test_column_errors_name_the_keyword_as_python_writes_it():
     r = c.identify(odd, radius=0.087, loop=False, columns={"Mz": "Torque, N=m"}, **PROFILE)
     si = c.identify(df, radius=0.087, loop=False, **PROFILE)
     assert r.parameters["M0_Nm"].value == pytest.approx(si.parameters["M0_Nm"].value, rel=1e-9)
+
+
+def test_a_column_that_looks_like_a_channel_is_never_dropped_unread():
+    """A DataFrame column no channel reads but that looks like one (a misspelt name, a force
+    unit) is an error naming it, as in the app; declared, it is mapped, kept or left out; every
+    other numeric column is recorded in SI and listed in the report."""
+    df = pd.read_csv(DATA, comment="#")
+    kn = df.assign(Fx_N=df["Fx_N"] / 1000.0)
+    for header in ("Fxx [kN]", "Force X [kN]", "Fx [kN]x"):
+        with pytest.raises(ValueError, match=re.escape(f"column '{header}' (4)")):
+            c.identify(kn.rename(columns={"Fx_N": header}), radius=0.087, loop=False)
+    si = c.identify(df, radius=0.087, loop=False)
+    mapped = c.identify(kn.rename(columns={"Fx_N": "Force X [kN]"}), radius=0.087, loop=False,
+                        columns={"Fx": "Force X [kN]"})
+    assert mapped.parameters["F0_N"].value == pytest.approx(si.parameters["F0_N"].value, rel=1e-9)
+    warm = df.assign(**{"T [degC]": np.linspace(20.0, 40.0, len(df)), "note": "ok"})
+    r = json.loads(c.identify(warm, radius=0.087, loop=False).to_json())
+    (t,) = r["input"]["recorded_columns"]
+    assert (t["header"], t["kind"], t["si_unit"]) == ("T [degC]", "temperature", "K")
+    assert (t["min"], t["max"]) == pytest.approx((293.15, 313.15))
+    assert r["input"]["columns_not_read"] == ["'note' (column 9): text"]
+    assert r["final"]["params"]["F0_N"]["value"] == pytest.approx(
+        si.parameters["F0_N"].value, rel=1e-12)  # a recorded column changes nothing of the fit
+    kept = json.loads(c.identify(kn.rename(columns={"Fx_N": "Fxx"}), radius=0.087, loop=False,
+                                 columns={"extra": ["Fxx"]}).to_json())
+    assert [x["header"] for x in kept["input"]["recorded_columns"]] == ["Fxx"]
 
 
 def test_gross_errors_are_named_and_left_out_as_the_app_does(identify_app, tmp_path):

@@ -7,8 +7,11 @@
 # 3. Two shimmy runs into one --out folder: the second is refused while the first runs.
 # 4. shimmy killed while it draws: every PNG present is whole (ends with the IEND chunk).
 # 5. Two shimmy runs one after the other into one folder: the second removes the first's files
-#    it did not rewrite (a scenario folder), keeps a file the user put there, and a third run
-#    killed half-way removes nothing.
+#    it did not rewrite (a scenario folder); a file the user put there makes the next run refuse
+#    the folder, the file untouched; a third run killed half-way removes nothing, and the run
+#    after it cleans the killed run's temporary files.
+# 6. A file another process writes into the folder during a run is not the run's: the next run
+#    refuses the folder, naming it, and removes nothing (identify --plots).
 set -euo pipefail
 identify=$(realpath "$1") shimmy=$(realpath "$2") data=$(realpath "$3") rounds=${4:-8}
 work=$(mktemp -d)
@@ -72,14 +75,32 @@ echo "== 5. runs one after the other into one folder"
 "$shimmy" --scenario touchdown --out seq >/dev/null 2>&1 || fail "shimmy --scenario touchdown failed"
 [ -d seq/touchdown ] || fail "no seq/touchdown after the first run"
 echo "mine" >seq/notes.txt
+"$shimmy" --scenario braked-slide --out seq >second.log 2>&1 && fail "a folder with the user's notes.txt was taken"
+grep -q "holds files no contensou run wrote ('notes.txt')" second.log || fail "refused without naming notes.txt: $(cat second.log)"
+[ "$(cat seq/notes.txt)" = mine ] || fail "the user's seq/notes.txt was touched"
+[ -d seq/touchdown ] || fail "a refused run removed the previous run's files"
+rm seq/notes.txt
 "$shimmy" --scenario braked-slide --out seq >second.log 2>&1 || fail "second run: $(cat second.log)"
 [ -e seq/touchdown ] && fail "the first run's seq/touchdown is still there after the second run"
 grep -q "removed .* file(s) an earlier run had written" second.log || fail "no word on removed files"
-[ "$(cat seq/notes.txt)" = mine ] || fail "the user's seq/notes.txt was touched"
 "$shimmy" --scenario touchdown --out seq >/dev/null 2>&1 &
 pid=$!
-sleep 0.3
+sleep 1.5
 kill -9 "$pid" 2>/dev/null || true
 wait "$pid" 2>/dev/null || true
 [ -d seq/braked-slide ] || fail "a killed run removed the previous run's files"
-echo "kill_and_race: every output whole or absent, the second run refused, stale files removed"
+"$shimmy" --scenario touchdown --out seq >third.log 2>&1 || fail "the run after a killed one: $(cat third.log)"
+leftover=$(find seq -name '.*.contensou-tmp-*' | head -3)
+[ -z "$leftover" ] || fail "temporary files of the killed run left: $leftover"
+[ -e seq/braked-slide ] && fail "the braked-slide folder of an earlier run is still there"
+
+echo "== 6. a file another process writes during a run"
+"$identify" "$data" --radius 0.087 --plots mf >/dev/null 2>&1 &
+pid=$!
+sleep 0.5
+mkdir -p mf/other && echo x >mf/other/n.txt
+wait "$pid" || fail "the fit with --plots mf failed"
+"$identify" "$data" --radius 0.087 --no-loop --plots mf >sixth.log 2>&1 && fail "mf with another process's file was taken"
+grep -q "other/n.txt" sixth.log || fail "refused without naming other/n.txt: $(cat sixth.log)"
+[ "$(cat mf/other/n.txt)" = x ] || fail "another process's mf/other/n.txt was touched"
+echo "kill_and_race: every output whole or absent, the second run refused, stale files removed, no file of another removed"

@@ -2,7 +2,13 @@
 // omega, Fx, Fy, Mz, Fz, t) with its unit after an underscore (vx_mps, omega_rpm, Fx_kN), in
 // brackets (vx [m/s], Mz (N m)), in a units row under the header, or under another name mapped
 // to the quantity (--columns vx=Speed). Values in another unit are converted to SI, never taken
-// as they are.
+// as they are (units.hpp).
+//
+// Every other column is accounted for: a column the law does not read but the file records (a
+// temperature, an inflation pressure, a camber, Mx) is kept as a recorded column, converted to
+// SI where its unit is known; a column that looks like a misspelt channel (Fxx, Fx [kN]x) or
+// holds a force that no channel reads (Force X [kN]) is an error, because its data would be lost
+// without a word; the rest (an unnamed index, a column declared ignore=) is listed as not read.
 #pragma once
 
 #include <array>
@@ -40,9 +46,27 @@ struct LabColumn {
   std::string description() const;
 };
 
+// A column of the file that none of the law's quantities reads: a recorded variable (a
+// temperature, a pressure, a camber angle, a channel the law does not use), read as numbers
+// when every cell is one (measured_data.hpp).
+struct RecordedColumn {
+  int index = -1;       // column in the table (0-based)
+  std::string header;   // the header cell as written
+  std::string name;     // its name without the unit ("T" of "T [degC]")
+  std::string unit;     // the unit as written ("" if none)
+  std::string si_unit;  // the unit the values are in after conversion ("K"; the unit as
+                        // written when this reader does not know it; "" if none)
+  std::string kind;     // "temperature", "pressure", ... ("" when the unit is unknown or absent)
+  double to_si = 1.0;   // value in si_unit = to_si * value + offset_si
+  double offset_si = 0.0;
+  bool declared = false;  // named by --columns extra=NAME
+};
+
 struct LabColumns {
   std::array<LabColumn, kMeasuredQuantities> column;
-  bool units_row = false;  // the first row under the header holds units: not data
+  bool units_row = false;                // the first row under the header holds units: not data
+  std::vector<RecordedColumn> recorded;  // the file's other columns, kept
+  std::vector<std::string> not_read;     // why each remaining column is not read, for reports
 
   const LabColumn& operator[](MeasuredQuantity q) const { return column[static_cast<int>(q)]; }
   // One line per column read under another name or unit than its SI name ("" if none):
@@ -50,11 +74,13 @@ struct LabColumns {
   std::vector<std::string> notes() const;
 };
 
-// Column renames: quantity short name ("vx", "omega", "Fx", ...) -> the header cell to read.
+// Column renames: quantity short name ("vx", "omega", "Fx", ...) -> the header cell to read; or
+// "extra" -> a column kept as a recorded variable whatever its name, "ignore" -> a column left
+// out (listed as not read).
 using ColumnRenames = std::vector<std::pair<std::string, std::string>>;
 
-// Parses "vx=Speed,omega=Wheel rate [rpm]" into renames; throws std::invalid_argument naming a
-// part without '=' or an unknown quantity (with the list of quantities).
+// Parses "vx=Speed,omega=Wheel rate [rpm],extra=Fx_raw" into renames; throws
+// std::invalid_argument naming a part without '=' or an unknown quantity (with the list).
 ColumnRenames parse_column_renames(const std::string& text,
                                    KeyStyle style = KeyStyle::command_line);
 
@@ -74,7 +100,9 @@ struct LabHeader {
 
 // Resolves the columns. Throws ParseError naming file, line and column for: a unit this reader
 // does not convert (with the units it accepts), a unit of the wrong kind (Mz [N]), two columns
-// for one quantity, a units row that disagrees with the header, a rename naming no column.
+// for one quantity (the same name twice included), a units row that disagrees with the header,
+// a rename naming no column, and a column no quantity reads that looks like a misspelt one or
+// holds a force or a moment (Mx and My excepted: known channels the law does not use).
 LabColumns resolve_lab_columns(const LabHeader& in, const ColumnRenames& renames = {});
 
 // The columns of measured diagrams (measured_data.hpp), every check of the header in one place:

@@ -22,6 +22,21 @@ struct MeasuredPoint {
   std::optional<double> normal_load;                   // Fz_N
   std::optional<double> time;                          // t_s
   int line = 0;                                        // line in the file (0 if synthetic)
+  // The recorded columns' values (MeasuredData::recorded, in order), in their SI unit; NaN
+  // where the cell is empty.
+  std::vector<double> recorded;
+};
+
+// A numeric column of the file that the law does not read (a temperature, an inflation
+// pressure, a camber, Mx), kept for the residual analysis and listed in the report.
+struct RecordedVariable {
+  std::string name;                     // as in the header, without the unit ("T")
+  std::string header;                   // the header cell ("T [degC]")
+  int column = 0;                       // 1-based
+  std::string unit;                     // as written ("degC"; "" if none)
+  std::string si_unit;                  // of the values ("K"; the unit as written when unknown)
+  std::string kind;                     // "temperature", ... ("" if the unit is unknown or absent)
+  double to_si = 1.0, offset_si = 0.0;  // value in si_unit = to_si * value + offset_si
 };
 
 struct MeasuredData {
@@ -30,18 +45,22 @@ struct MeasuredData {
   // How columns under other names or units were read ("omega_radps from 'omega [rpm]' ...,
   // x 0.1047 to rad/s"), for the report; empty for a file in the SI names.
   std::vector<std::string> column_notes;
+  // The file's numeric columns the law does not read; each point's values in its `recorded`.
+  std::vector<RecordedVariable> recorded;
+  // The columns not read at all, with the reason ("'comment' (column 9): text").
+  std::vector<std::string> columns_not_read;
 
   // Number of measured values of a channel.
   int count(int channel) const;
 };
 
 // Reads the CSV: header row, columns in any order (vx_mps, vy_mps, omega_radps required;
-// Fx_N, Fy_N, Mz_Nm, Fz_N, t_s optional; other columns ignored), '#' comments, empty cell =
-// not measured. Columns may carry other units, in the name (omega_rpm, "Fx [kN]") or in a
-// units row under the header, and other names through `renames` (lab_columns.hpp); values are
-// converted to SI. Throws ParseError naming file, line and column for a malformed or non-finite
-// cell, a missing required column or an empty kinematic cell, a unit this reader does not
-// convert, and a file without any channel.
+// Fx_N, Fy_N, Mz_Nm, Fz_N, t_s optional; every other numeric column kept as a recorded
+// variable, text columns listed as not read), '#' comments, empty cell = not measured. Columns may
+// carry other units, in the name (omega_rpm, "Fx [kN]") or in a units row under the header, and
+// other names through `renames` (lab_columns.hpp); values are converted to SI. Throws ParseError
+// naming file, line and column for a malformed or non-finite cell, a missing required column or an
+// empty kinematic cell, a unit this reader does not convert, and a file without any channel.
 MeasuredData read_measured_csv(const std::string& path, const ColumnRenames& renames = {},
                                KeyStyle style = KeyStyle::command_line);
 

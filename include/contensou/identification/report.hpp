@@ -17,6 +17,15 @@
 namespace contensou {
 
 // What the report says about its input (the "input" object).
+// A recorded column of the data (measured_data.hpp), as the report lists it.
+struct RecordedSummary {
+  RecordedVariable variable;
+  double min = 0.0, max = 0.0;  // over the rows that have a value, in variable.si_unit
+  int values = 0;
+  // "'T [degC]' (column 8): 20.1 to 45.3 degC (293.25 to 318.45 K), 120 values".
+  std::string describe() const;
+};
+
 struct ReportInput {
   std::string file;
   int points = 0;
@@ -25,6 +34,8 @@ struct ReportInput {
   std::optional<double> normal_load_n;
   std::string normal_load_source;                 // where N came from ("" if given directly)
   std::vector<std::string> column_notes;          // columns read under other names or units
+  std::vector<RecordedSummary> recorded;          // the file's columns the law does not read
+  std::vector<std::string> columns_not_read;      // and those not read at all, with the reason
   std::vector<Outlier> outliers;                  // gross errors left out of the fit
   std::string profile;                            // how the pressure profile was given ("" if none)
   std::optional<double> profile_rms_residual_pa;  // a smoothing fit's residual
