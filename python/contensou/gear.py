@@ -418,8 +418,9 @@ def stability_map(
 
     ``axes`` = (x, y), each (parameter, from, to, points), a ``MapAxis`` or a dict as in the
     app's configuration; or one axis alone for a 1-D sweep (one row: y is then a 1-point axis
-    of another parameter at its configured value, which changes nothing). Cells run in this process one after another by default, or as tasks
-    on ``client`` (a ``dask.distributed.Client``). A tqdm progress bar counts cells when
+    of another parameter at its configured value, which changes nothing). Cells run in this
+    process one after another by default, or as tasks on ``client`` (a
+    ``dask.distributed.Client``). A tqdm progress bar counts cells when
     ``progress`` is True, or by default when standard error is a terminal."""
     cfg = _config(config)
     x, y = _axes(cfg, axes)
