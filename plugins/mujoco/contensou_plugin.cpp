@@ -5,22 +5,31 @@
 //   <extension><plugin plugin="contensou.friction"><instance name="patch">
 //     <config key="pairs" value="disk floor"/>      tire geom, road geom [; tire road ...]
 //     <config key="profile" value="uniform"/>       uniform | hertz | seed-tire
-//     <config key="friction" value="0.5"/>          f
-//     <config key="kappa" value="1"/>               lateral/longitudinal friction ratio
-//                                                   (theory.md section 2; the tire geom's
-//                                                   x axis, projected on the contact plane,
-//                                                   is the longitudinal direction)
-//     <config key="radius" value="0.05"/>           patch radius R [m], or instead:
-//     <config key="stiffness" value="1e7"/>         k [N/m^3]: R = (N / k)^(1/3) (Hertz-like)
+//     <config key="friction" value="0.5"/>          f, in [1e-6, 100]
+//     <config key="kappa" value="1"/>               lateral/longitudinal friction ratio, in
+//                                                   [1e-3, 1e3] (theory.md section 2; the
+//                                                   tire geom's x axis, projected on the
+//                                                   contact plane, is the longitudinal one)
+//     <config key="radius" value="0.05"/>           patch radius R [m], in [1e-15, the tire
+//                                                   geom's bounding radius], or instead:
+//     <config key="stiffness" value="1e7"/>         k [N/m^3]: R = (N / k)^(1/3) (Hertz-like),
+//                                                   kept in the same range; k is refused
+//                                                   where the patch under the weight of the
+//                                                   tire's mechanism would leave it
 //     (no load or pressure key: the normal load N is MuJoCo's, the contact force its
 //     constraint solver computes for the pair, below; p* follows from N, R and the profile)
 //     <config key="law" value="fractional"/>        fractional (default) | exact | set-valued
 //     <config key="surface" value="exact"/>         set-valued only: exact (default) | ellipsoid
-//     <config key="regularization" value="1e-4"/>   fractional only: eps [m/s] of the law
+//     <config key="regularization" value="1e-4"/>   fractional only: eps [m/s] of the law,
+//                                                   in [1e-15, 1e10]
 //     <config key="tolerance" value="1e-8"/>        exact: the law's error bound (relative to
 //                                                   f N and f N R), in (1e-14, 1e-2); set-valued:
 //                                                   of the surface's integrals, [1e-14, 1e-6]
 //   </instance></plugin></extension>
+// A value outside its range is an error at init naming the key, the value and the range
+// (check_patch_size, require_within: why these ranges). MuJoCo compiles an empty value as an
+// absent key, which keeps its default: the plugin cannot tell them apart (contensou.mujoco's
+// model_from_xml refuses empty values before compiling).
 // The named geoms must have condim="1": MuJoCo keeps the normal force (its constraint solver)
 // and the plugin replaces MuJoCo's friction by the wrench (Fx, Fy, Mz) of the patch. A pair
 // whose friction would be applied twice or never is an error at init: a geom pair named twice
@@ -126,6 +135,7 @@ using Mat3 = Eigen::Matrix3d;
 
 struct Pair {
   int tire = -1, road = -1;  // geom ids
+  double widest = 0.0;       // the largest patch radius [m]: the tire geom's bounding radius
 };
 
 // The key of a geom pair in either order: (min id) * 2^32 + max id.
@@ -168,21 +178,46 @@ std::string attribute(const mjModel* m, int instance, const char* key) {
   return v ? std::string(v) : std::string();
 }
 
-double number(const mjModel* m, int instance, const char* key, double fallback, bool positive) {
+// config `key` as a positive finite number, or `fallback` when the key is absent (MuJoCo
+// compiles an empty value as an absent key: the plugin cannot tell them apart, docs/mujoco.md).
+double number(const mjModel* m, int instance, const char* key, double fallback) {
   const std::string s = attribute(m, instance, key);
   if (s.empty()) return fallback;
   char* end = nullptr;
   const double x = std::strtod(s.c_str(), &end);
-  if (end == s.c_str() || *end != '\0' || !std::isfinite(x) || (positive && !(x > 0)))
-    fail(std::string("config '") + key + "' = '" + s + "' is not a " +
-         (positive ? "positive " : "") + "number");
+  if (end == s.c_str() || *end != '\0' || !std::isfinite(x) || !(x > 0))
+    fail(std::string("config '") + key + "' = '" + s + "' is not a positive number");
   return x;
 }
 
 std::string format(double x) {
   char buf[32];
-  std::snprintf(buf, sizeof buf, "%.3g", x);
+  std::snprintf(buf, sizeof buf, "%.6g", x);
   return buf;
+}
+
+// The valid ranges of the numeric keys (docs/mujoco.md, "Valid values"). MuJoCo holds no
+// position or speed beyond mjMAXVAL = 1e10 (it resets the simulation) and divides by nothing
+// below mjMINVAL = 1e-15, so lengths lie in [1e-15, 1e10] m, a patch no wider than its tire
+// geom (its bounding radius). With these, the law's numbers stay finite for any normal force
+// below 1e270 N: the exact law's v / R <= 1e25, the fractional law's largest slope
+// 16 max(F0, M0) max(1, R) / eps (fractional_law.hpp) <= 1.6e38 times N for f <= 100.
+constexpr double kShortest = mjMINVAL, kLongest = mjMAXVAL;  // [m]
+constexpr double kFrictionMin = 1e-6, kFrictionMax = 100.0;
+constexpr double kKappaMin = 1e-3, kKappaMax = 1e3;
+constexpr double kEpsMin = mjMINVAL, kEpsMax = mjMAXVAL;  // [m/s]
+
+// A value of config `key` (as given: `text`) outside its range [lo, hi] (unit; why: what the
+// range means) is an error naming all of them.
+void require_within(const char* key, const std::string& text, double x, double lo, double hi,
+                    const std::string& unit, const std::string& why) {
+  // The range as the message shows it (6 digits) is the range enforced: its end is a value the
+  // user may give.
+  if (x >= std::strtod(format(lo).c_str(), nullptr) &&
+      x <= std::strtod(format(hi).c_str(), nullptr))
+    return;
+  fail(std::string("config '") + key + "' = '" + text + "' is outside [" + format(lo) + ", " +
+       format(hi) + "]" + (unit.empty() ? "" : " " + unit) + ": " + why);
 }
 
 // config 'pairs': "tire road; tire road; ...".
@@ -210,7 +245,7 @@ double read_tolerance(const mjModel* m, int instance, Law law) {
   if (law == Law::fractional)
     fail("config 'tolerance' = '" + s +
          "' applies to laws 'exact' and 'set-valued' only (law is 'fractional')");
-  const double t = number(m, instance, "tolerance", 1e-8, true);
+  const double t = number(m, instance, "tolerance", 1e-8);
   const bool exact = law == Law::exact;
   if (exact ? !(t > 1e-14 && t < 1e-2) : !(t >= 1e-14 && t <= 1e-6))
     fail("config 'tolerance' = '" + s + "' is outside " +
@@ -218,19 +253,8 @@ double read_tolerance(const mjModel* m, int instance, Law law) {
   return t;
 }
 
-Config read_config(const mjModel* m, int instance) {
-  Config c;
-  c.pair_names = read_pair_names(m, instance);
-  const std::string profile = attribute(m, instance, "profile");
-  if (!profile.empty()) c.profile = profile;
-  if (c.profile != "uniform" && c.profile != "hertz" && c.profile != "seed-tire")
-    fail("config 'profile' = '" + c.profile + "': use uniform, hertz or seed-tire");
-  c.friction = number(m, instance, "friction", 0.0, true);
-  if (attribute(m, instance, "friction").empty()) fail("config 'friction' (f) is required");
-  c.radius = number(m, instance, "radius", 0.0, true);
-  c.stiffness = number(m, instance, "stiffness", 0.0, true);
-  if ((c.radius > 0) == (c.stiffness > 0))
-    fail("give exactly one of config 'radius' [m] and 'stiffness' [N/m^3]");
+// config 'law', 'surface' and 'regularization' into c (a key of another law is an error).
+void read_law(const mjModel* m, int instance, Config& c) {
   const std::string law = attribute(m, instance, "law");
   if (law.empty() || law == "fractional")
     c.law = Law::fractional;
@@ -247,10 +271,52 @@ Config read_config(const mjModel* m, int instance) {
   if (!surface.empty() && surface != "exact" && surface != "ellipsoid")
     fail("config 'surface' = '" + surface + "': use exact or ellipsoid");
   c.ellipsoid = surface == "ellipsoid";
-  if (!attribute(m, instance, "regularization").empty() && c.law != Law::fractional)
+  const std::string eps = attribute(m, instance, "regularization");
+  if (!eps.empty() && c.law != Law::fractional)
     fail("config 'regularization' applies to law 'fractional' only (law is '" + law + "')");
-  c.regularization = number(m, instance, "regularization", 1e-4, true);
-  c.kappa = number(m, instance, "kappa", 1.0, true);
+  c.regularization = number(m, instance, "regularization", 1e-4);
+  require_within("regularization", eps, c.regularization, kEpsMin, kEpsMax, "m/s",
+                 "the fractional law's eps, within MuJoCo's speeds (from mjMINVAL, its "
+                 "smallest divisor, to mjMAXVAL, its largest speed: a larger eps makes every "
+                 "speed viscous)");
+}
+
+Config read_config(const mjModel* m, int instance) {
+  Config c;
+  c.pair_names = read_pair_names(m, instance);
+  const std::string profile = attribute(m, instance, "profile");
+  if (!profile.empty()) c.profile = profile;
+  if (c.profile != "uniform" && c.profile != "hertz" && c.profile != "seed-tire")
+    fail("config 'profile' = '" + c.profile + "': use uniform, hertz or seed-tire");
+  const std::string friction = attribute(m, instance, "friction");
+  if (friction.empty()) fail("config 'friction' (f) is required");
+  c.friction = number(m, instance, "friction", 0.0);
+  require_within("friction", friction, c.friction, kFrictionMin, kFrictionMax, "",
+                 "the friction coefficient f (no dry pair has f > 10; for no friction, leave "
+                 "the pair out of 'pairs')");
+  c.radius = number(m, instance, "radius", 0.0);
+  c.stiffness = number(m, instance, "stiffness", 0.0);
+  if ((c.radius > 0) == (c.stiffness > 0))
+    fail("give exactly one of config 'radius' [m] and 'stiffness' [N/m^3]");
+  // The ranges without the model's geometry, when the model is compiled; those of the tire
+  // geom's size and the weight it carries when its data is made (check_patch_size).
+  if (c.radius > 0)
+    require_within("radius", attribute(m, instance, "radius"), c.radius, kShortest, kLongest, "m",
+                   "a length MuJoCo holds (mjMINVAL to mjMAXVAL), and at most the tire geom's "
+                   "bounding radius");
+  else
+    require_within("stiffness", attribute(m, instance, "stiffness"), c.stiffness,
+                   mjMINVAL / (kLongest * kLongest * kLongest),
+                   mjMAXVAL / (kShortest * kShortest * kShortest), "N/m^3",
+                   "the patch (N / k)^(1/3) must be a length MuJoCo holds (1e-15 to 1e10 m) for "
+                   "some force N it holds (1e-15 to 1e10 N), and at most the tire geom's "
+                   "bounding radius under the weight the tire carries");
+  read_law(m, instance, c);
+  c.kappa = number(m, instance, "kappa", 1.0);
+  require_within("kappa", attribute(m, instance, "kappa"), c.kappa, kKappaMin, kKappaMax, "",
+                 "the lateral/longitudinal friction ratio (beyond, one direction's friction "
+                 "vanishes next to the other's, and the exact law's tables cannot reach a "
+                 "tolerance relative to f N)");
   c.tolerance = read_tolerance(m, instance, c.law);
   return c;
 }
@@ -391,6 +457,33 @@ void check_other_instances(const mjModel* m, int instance, const Instance& inst)
   }
 }
 
+// The patch of a pair lies in [kShortest, widest] (Pair::widest: the tire geom's bounding
+// radius, at most kLongest): a 'radius' outside is an error naming the pair; a 'stiffness' k is
+// an error when the patch R = (W / k)^(1/3) under the weight W of the tire's mechanism (the
+// subtree mass of its root body times |g|; without gravity, any force MuJoCo holds, 1e-15 to
+// 1e10 N) is outside that range: k in [W / widest^3, W / kShortest^3].
+void check_patch_size(const mjModel* m, int instance, const std::string& item, const Config& c,
+                      Pair& p) {
+  p.widest = std::min(static_cast<double>(m->geom_rbound[p.tire]), kLongest);
+  const std::string geom = "the tire geom's bounding radius (pair " + item + ")";
+  if (c.radius > 0) {
+    require_within("radius", attribute(m, instance, "radius"), c.radius, kShortest, p.widest, "m",
+                   "a patch no narrower than mjMINVAL and no wider than " + geom);
+    return;
+  }
+  const int root = m->body_rootid[m->geom_bodyid[p.tire]];
+  const double weight = m->body_subtreemass[root] * mju_norm3(m->opt.gravity);
+  const double low = weight > 0 ? weight : mjMINVAL, high = weight > 0 ? weight : mjMAXVAL;
+  const double wide = p.widest * p.widest * p.widest, narrow = kShortest * kShortest * kShortest;
+  require_within("stiffness", attribute(m, instance, "stiffness"), c.stiffness, low / wide,
+                 high / narrow, "N/m^3",
+                 weight > 0 ? "the patch (W / k)^(1/3) under the weight W = " + format(weight) +
+                                  " N of the tire's mechanism must lie between mjMINVAL and " + geom
+                            : "with no weight, the patch (N / k)^(1/3) must lie between "
+                              "mjMINVAL and " +
+                                  geom + " for some force N from 1e-15 to 1e10 N");
+}
+
 // The geom ids of the configured pairs and their index by geom pair (Instance::pair_of).
 void resolve_pairs(const mjModel* m, int instance, Instance& inst) {
   const auto& names = inst.config.pair_names;
@@ -408,6 +501,9 @@ void resolve_pairs(const mjModel* m, int instance, Instance& inst) {
   }
   check_other_instances(m, instance, inst);
   inst.contacts.assign(inst.pairs.size(), PairContacts{});
+  for (std::size_t k = 0; k < names.size(); ++k)
+    check_patch_size(m, instance, "'" + names[k].first + " " + names[k].second + "'", inst.config,
+                     inst.pairs[k]);
 }
 
 // The unit patch's law of the configured kind (Instance).
@@ -438,7 +534,11 @@ void build_law(Instance& inst) {
   if (inst.unit_exact && !inst.unit_exact->reached)
     fail("config 'tolerance' = " + format(inst.config.tolerance) + ": the exact law reached " +
          format(inst.unit_exact->achieved) + " (relative to f N), not the tolerance; use a " +
-         "larger tolerance");
+         "larger tolerance" +
+         (inst.config.kappa > 1.0
+              ? " (the error relative to f N grows with kappa = " + format(inst.config.kappa) +
+                    ": about 1.6e-13 kappa is reached)"
+              : std::string()));
 }
 
 int init(const mjModel* m, mjData* d, int instance) {
@@ -666,9 +766,11 @@ void pair_step(const mjModel* m, mjData* d, Instance& inst, std::size_t k, mjtNu
   s[kTwist + 2] = omega;
   if (!(N > 0)) return;
   // Patch radius: given, or Hertz-like R = (N / k)^(1/3) (a sphere on a plane:
-  // a = (3 N R_s / 4 E*)^(1/3), Johnson, Contact Mechanics, eq. 4.22, so k = 4 E* / 3 R_s).
-  const double R =
-      inst.config.radius > 0 ? inst.config.radius : std::cbrt(N / inst.config.stiffness);
+  // a = (3 N R_s / 4 E*)^(1/3), Johnson, Contact Mechanics, eq. 4.22, so k = 4 E* / 3 R_s),
+  // kept within [kShortest, the tire geom's bounding radius] (a patch covers at most its tire).
+  const double R = inst.config.radius > 0
+                       ? inst.config.radius
+                       : std::clamp(std::cbrt(N / inst.config.stiffness), kShortest, p.widest);
   Resultants<double> w;
   if (set_valued) {
     const Vec3 ws = set_valued_wrench(m, d, inst, s, N, R, ex, ey, pc.normal);

@@ -11,7 +11,9 @@ The loops run in C++ (the extension ``contensou._core``) with the GIL released.
 
 The friction functions take three arrays vx, vy, omega or one DataFrame (or mapping) with the
 columns vx_mps, vy_mps, omega_radps, whose result is labelled Fx_N, Fy_N, Mz_Nm
-(``FrictionTable.to_frame()``). Bad input raises ``ValueError`` with the C++ library's message.
+(``FrictionTable.to_frame()``). Bad input raises ``ValueError`` with the C++ library's message;
+an argument of the wrong type a one-line ``TypeError`` naming it (a number is an int, a float or
+a numpy scalar, never a str; a profile a ``PressureProfile`` or a built-in profile's name).
 
 The friction part needs nothing but Eigen to build; identification (Ceres) and the gear
 (SUNDIALS) are in the package when their libraries were found at build time, and a name of a

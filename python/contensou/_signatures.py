@@ -46,7 +46,13 @@ def _parameters(text: str, defaults: tuple) -> Optional[list[inspect.Parameter]]
             if node is not None:
                 name = ast.unparse(node)
                 m = re.fullmatch(r"__nb_default_(\d+)", name)
-                default = defaults[int(m.group(1))] if m and int(m.group(1)) < len(defaults) else name
+                if m and int(m.group(1)) < len(defaults):
+                    default = defaults[int(m.group(1))]
+                else:  # a literal of a custom signature (nb::sig): its value
+                    try:
+                        default = ast.literal_eval(node)
+                    except ValueError:
+                        default = name
             annotation = ast.unparse(a.annotation) if a.annotation is not None else inspect.Parameter.empty
             params.append(inspect.Parameter(a.arg, kind, default=default, annotation=annotation))
     return params

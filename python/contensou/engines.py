@@ -26,6 +26,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
+from . import _args
 from ._core import ContactPatch, ExactModel, hertz_profile, seed_tire_profile, uniform_profile
 from .friction import ExactLaw, exact_law_resultants, exact_resultants
 
@@ -46,6 +47,8 @@ class EngineCoefficient:
 
 
 def _profile(name: str):
+    if not isinstance(name, str):
+        _args.wrong_type("--profile", name, "a built-in profile's name (" + ", ".join(PROFILES) + ")")
     if name == "uniform":
         return uniform_profile()
     if name == "hertz":
@@ -56,7 +59,7 @@ def _profile(name: str):
 
 
 def _positive(option: str, value: float) -> float:
-    x = float(value)
+    x = _args.number(option, value)
     if not math.isfinite(x) or x <= 0:
         raise ValueError(f"{option} = {value!r}: must be a positive finite number")
     return x

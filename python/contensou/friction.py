@@ -22,7 +22,7 @@ from typing import Any, Literal, NamedTuple, Optional, Protocol, Union, overload
 import numpy as np
 import numpy.typing as npt
 
-from . import _core
+from . import _args, _core
 from ._core import ContactPatch, ExactModel, FractionalLaw, PressureProfile
 
 ArrayLike = npt.ArrayLike
@@ -240,12 +240,14 @@ def exact_resultants(
     """
     if isinstance(model, ContactPatch):
         model = ExactModel(model)
+    _args.instance("model", model, (ExactModel,), "an ExactModel or a ContactPatch")
     shape, (x, y, w), index, table = _kinematics(vx, vy, omega)
     n = int(np.prod(shape, dtype=np.int64))
     force = np.empty((n, 3))
     error = np.empty((n, 3))
     converged = np.empty(n, dtype=bool)
-    _core._exact_loop(model, (x, y, w), force, error, converged, float(tolerance), _check_threads(threads))
+    _core._exact_loop(model, (x, y, w), force, error, converged, _args.number("tolerance", tolerance),
+                      _check_threads(threads))
     if table:
         return FrictionTable(force, index, error=error, converged=converged)
     return ExactResults(
@@ -273,11 +275,7 @@ class ExactLaw(_core._ExactLaw):
         if not isinstance(model, ExactModel):
             raise TypeError(
                 f"model: expected an ExactModel or a ContactPatch, not {type(model).__name__}")
-        try:
-            tol = float(tolerance)
-        except (TypeError, ValueError):
-            raise ValueError(f"tolerance = {tolerance!r}: must be a number") from None
-        super().__init__(model, tol, _check_threads(threads))
+        super().__init__(model, _args.number("tolerance", tolerance), _check_threads(threads))
 
 
 def _law_on_arrays(loop: Any, law: Any, vx: Any, vy: Any, omega: Any, jacobian: bool,
@@ -381,10 +379,12 @@ def fractional_resultants(
     return _law_on_arrays(_core._fractional_loop, law, vx, vy, omega, jacobian, threads)
 
 
-def shape_values(profile: PressureProfile, rho: ArrayLike) -> np.ndarray:
-    """The dimensionless shape p(rho) for rho in [0, 1] (after clipping if set; no shift)."""
+def shape_values(profile: Union[PressureProfile, str], rho: ArrayLike) -> np.ndarray:
+    """The dimensionless shape p(rho) for rho in [0, 1] (after clipping if set; no shift) of a
+    profile or a built-in profile's name ("uniform", "hertz", "seed-tire")."""
+    shape = _args.profile("profile", profile)
     r = _real_array("rho", rho)
     flat = np.ascontiguousarray(r).reshape(-1)
     out = np.empty((flat.size, 1))
-    profile._shape_values(flat, out)
+    shape._shape_values(flat, out)
     return out.reshape(r.shape)

@@ -20,16 +20,42 @@ from typing import Any, Iterator, Mapping, NamedTuple, Optional, Sequence, Union
 
 import numpy as np
 
-from . import _core, _parts
+from . import _args, _core, _parts
+from .friction import _check_threads
 
 _parts.require("gear")  # ImportError naming SUNDIALS when the build left it out
 
 MODELS = ("coupled", "decoupled", "von_schlippe")
+#: Other names of the models that contensou-shimmy takes too (its --set models=..., its
+#: configuration's "models"); the results name the model as in MODELS.
+MODEL_ALIASES = {"nonholonomic": "von_schlippe"}
+
+
+def _non_finite(node: Any, prefix: str = "") -> Optional[tuple[str, float]]:
+    """The dotted name and value of the first NaN or infinity in a configuration, or None."""
+    if isinstance(node, Mapping):
+        for key, value in node.items():
+            found = _non_finite(value, f"{prefix}.{key}" if prefix else str(key))
+            if found:
+                return found
+    elif isinstance(node, (list, tuple)):
+        for i, value in enumerate(node):
+            found = _non_finite(value, f"{prefix}[{i}]")
+            if found:
+                return found
+    elif isinstance(node, (float, np.floating)) and not np.isfinite(node):
+        return prefix, float(node)
+    return None
 
 
 def _normalise(data: Mapping[str, Any]) -> dict[str, Any]:
     """Every key, defaults for those left out; ValueError naming a bad key or value (the
-    reader's line and column refer to no file here, so they are left out)."""
+    reader's line and column refer to no file here, so they are left out). A NaN or infinity
+    is named as such (JSON has no such numbers: the reader would see invalid JSON)."""
+    bad = _non_finite(data)
+    if bad:
+        raise ValueError(f"{bad[0]} = {bad[1]}: NaN and infinities are not allowed (a finite "
+                         "number is needed)")
     try:
         return json.loads(_core._normalise_config(json.dumps(data), "<configuration>"))
     except ValueError as e:
@@ -173,9 +199,15 @@ def _config(config: Union[LandingConfig, Mapping[str, Any], None]) -> LandingCon
 
 
 def _model(model: str) -> str:
-    if model not in MODELS:
-        raise ValueError(f"model = {model!r}: must be one of {', '.join(MODELS)}")
-    return model
+    """The model's name (MODELS) for any name contensou-shimmy takes (MODEL_ALIASES too)."""
+    if not isinstance(model, str):
+        _args.wrong_type("model", model, f"a model's name ({', '.join(MODELS)})")
+    try:
+        return str(_core._contact_model(model))
+    except ValueError:
+        aliases = ", ".join(f"{a} for {m}" for a, m in MODEL_ALIASES.items())
+        raise ValueError(f"model = {model!r}: must be one of {', '.join(MODELS)} (also "
+                         f"{aliases})") from None
 
 
 @dataclass
@@ -258,9 +290,43 @@ def _axis(a: AxisLike) -> MapAxis:
         parameter, start, stop, points = a
     except (TypeError, ValueError):
         raise ValueError(f"axis {a!r}: expected (parameter, from, to, points)") from None
-    if isinstance(points, bool) or int(points) != points or not 1 <= int(points) <= 10000:
+    if not isinstance(parameter, str):
+        _args.wrong_type("axis parameter", parameter, "a gear parameter's dotted name")
+    start = _args.number(f"axis {parameter}: from", start)
+    stop = _args.number(f"axis {parameter}: to", stop)
+    n = _args.number(f"axis {parameter}: points", points)
+    if not n.is_integer() or not 1 <= n <= 10000:
         raise ValueError(f"axis {parameter}: points = {points!r}: must be an integer in 1..10000")
-    return MapAxis(str(parameter), float(start), float(stop), int(points))
+    return MapAxis(parameter, start, stop, int(n))
+
+
+def _is_one_axis(a: Any) -> bool:
+    """An axis itself (not a pair of them): a MapAxis, a mapping, or (parameter, ...)."""
+    return (isinstance(a, (MapAxis, Mapping))
+            or (isinstance(a, Sequence) and not isinstance(a, str) and len(a) > 0
+                and isinstance(a[0], str)))
+
+
+def _axes(cfg: "LandingConfig", axes: Any) -> tuple[MapAxis, MapAxis]:
+    """(x, y) from two axes; from one axis (alone or in a sequence of one), a 1-D sweep: y is a
+    1-point axis of another gear parameter at its configured value, so it changes nothing (the
+    C++ map is a grid of two axes; a 1-point axis is its 1-D form)."""
+    if _is_one_axis(axes):
+        axes = (axes,)
+    if isinstance(axes, str) or not isinstance(axes, Sequence) or not 1 <= len(axes) <= 2:
+        raise ValueError(f"axes = {axes!r}: give (x, y), two axes (parameter, from, to, points), "
+                         "or one axis for a 1-D sweep")
+    x = _axis(axes[0])
+    if len(axes) == 2:
+        return x, _axis(axes[1])
+    for other in _core._gear_parameter_names():
+        try:
+            value = cfg[other]
+        except KeyError:
+            continue
+        if other != x.parameter and isinstance(value, (int, float)) and not isinstance(value, bool):
+            return x, MapAxis(other, float(value), float(value), 1)
+    raise ValueError(f"axes: no other gear parameter to hold fixed for a 1-D sweep over {x.parameter}")
 
 
 @dataclass
@@ -342,7 +408,7 @@ def _progress(total: int, enabled: Optional[bool], label: str) -> Any:
 
 def stability_map(
     config: Union[LandingConfig, Mapping[str, Any], None],
-    axes: tuple[AxisLike, AxisLike],
+    axes: Union[AxisLike, Sequence[AxisLike]],
     client: Any = None,
     *,
     model: str = "coupled",
@@ -351,11 +417,16 @@ def stability_map(
     """A stability map over two gear parameters: one landing per cell.
 
     ``axes`` = (x, y), each (parameter, from, to, points), a ``MapAxis`` or a dict as in the
-    app's configuration. Cells run in this process one after another by default, or as tasks
-    on ``client`` (a ``dask.distributed.Client``). A tqdm progress bar counts cells when
+    app's configuration; or one axis alone for a 1-D sweep (one row: y is then a 1-point axis
+    of another parameter at its configured value, which changes nothing). Cells run in this
+    process one after another by default, or as tasks on ``client`` (a
+    ``dask.distributed.Client``). A tqdm progress bar counts cells when
     ``progress`` is True, or by default when standard error is a terminal."""
     cfg = _config(config)
-    x, y = (_axis(a) for a in axes)
+    x, y = _axes(cfg, axes)
+    if x.parameter == y.parameter:
+        raise ValueError(f"axes: x and y are both {x.parameter}: give two different parameters "
+                         "(or one axis for a 1-D sweep)")
     model = _model(model)
     text = cfg._text()
     names = set(_core._gear_parameter_names())
@@ -388,7 +459,7 @@ def stability_map(
 
 def stability_map_native(
     config: Union[LandingConfig, Mapping[str, Any], None],
-    axes: tuple[AxisLike, AxisLike],
+    axes: Union[AxisLike, Sequence[AxisLike]],
     *,
     model: str = "coupled",
     threads: int = 0,
@@ -396,6 +467,10 @@ def stability_map_native(
     """The same map by the C++ ``stability_map`` on threads (0: one per core), as
     contensou-shimmy --map runs it."""
     cfg = _config(config)
-    x, y = (_axis(a) for a in axes)
-    cells = _core._stability_map_cpp(cfg._text(), _model(model), x, y, int(threads))
+    x, y = _axes(cfg, axes)
+    if x.parameter == y.parameter:
+        raise ValueError(f"axes: x and y are both {x.parameter}: give two different parameters "
+                         "(or one axis for a 1-D sweep)")
+    model = _model(model)
+    cells = _core._stability_map_cpp(cfg._text(), model, x, y, _check_threads(threads))
     return StabilityMapResult._from_cells(x, y, model, cells)

@@ -16,7 +16,7 @@ from typing import Any, Dict, Mapping, Optional, Union
 
 import numpy as np
 
-from . import _core, _parts
+from . import _args, _core, _parts
 
 _parts.require("identification")  # ImportError naming Ceres when the build left it out
 
@@ -231,6 +231,20 @@ def _renames(
             for q, c in columns.items()}
 
 
+def _flag(name: str, value: Any) -> bool:
+    """A bool (or numpy bool), else the short TypeError: 'no' or 0.5 is not a choice."""
+    if not isinstance(value, (bool, np.bool_)):
+        _args.wrong_type(name, value, "True or False")
+    return bool(value)
+
+
+def _text(name: str, value: Any) -> str:
+    """A str, else the short TypeError (a number is not a name)."""
+    if not isinstance(value, str):
+        _args.wrong_type(name, value, "a str")
+    return value
+
+
 def identify(
     data: Union[str, os.PathLike, Mapping[str, Any], np.ndarray, Any],
     *,
@@ -271,22 +285,27 @@ def identify(
 
     The keys:
     """
+    # Numbers by the package's one rule (contensou._args: a str is a TypeError, not converted).
     request = _core._IdentifyRequest()
-    request.radius = float(radius)
-    request.normal_load = None if normal_load is None else float(normal_load)
+    request.radius = _args.number("radius", radius)
+    request.normal_load = _args.optional_number("normal_load", normal_load)
+    if profile is not None and not isinstance(profile, (str, os.PathLike)):
+        _args.wrong_type("profile", profile, "a built-in profile's name (uniform, hertz, "
+                         "seed-tire) or the path of a profile CSV")
     request.profile = "" if profile is None else os.fspath(profile)
-    request.pressure = None if pressure is None else float(pressure)
-    request.profile_smoothing = int(profile_smoothing)
-    request.profile_clip = bool(profile_clip)
-    request.fix = {str(k): float(v) for k, v in (fix or {}).items()}
-    request.loss = str(loss)
-    request.loss_scale = float(loss_scale)
-    request.noise_model = str(noise_model)
-    request.noise_scale = [] if noise_scale is None else [float(x) for x in noise_scale]
-    request.loop = bool(loop)
-    request.alpha = float(alpha)
-    request.speed_inside_integrals = bool(speed_inside_integrals)
-    request.outliers = bool(outliers)
+    request.pressure = _args.optional_number("pressure", pressure)
+    request.profile_smoothing = _args.integer("profile_smoothing", profile_smoothing)
+    request.profile_clip = _flag("profile_clip", profile_clip)
+    request.fix = {_text("fix", k): _args.number(f"fix[{k!r}]", v) for k, v in (fix or {}).items()}
+    request.loss = _text("loss", loss)
+    request.loss_scale = _args.number("loss_scale", loss_scale)
+    request.noise_model = _text("noise_model", noise_model)
+    request.noise_scale = [] if noise_scale is None else [
+        _args.number(f"noise_scale[{i}]", x) for i, x in enumerate(noise_scale)]
+    request.loop = _flag("loop", loop)
+    request.alpha = _args.number("alpha", alpha)
+    request.speed_inside_integrals = _flag("speed_inside_integrals", speed_inside_integrals)
+    request.outliers = _flag("outliers", outliers)
     renames = _renames(columns)
     if isinstance(data, (str, os.PathLike)):
         path = os.fspath(data)

@@ -8,6 +8,10 @@ One call registers it with MuJoCo, before the first model that uses it::
     contensou.mujoco.load_plugin()
     model = mujoco.MjModel.from_xml_string(xml)   # <plugin plugin="contensou.friction">...
 
+MuJoCo compiles a configuration key given an empty value (``value=""``) as a key left out, so
+the plugin cannot see it; ``model_from_xml(xml)`` (or ``check_config(spec)`` before compiling a
+``mujoco.MjSpec``) refuses it, naming the key.
+
 The plugin links the libmujoco of the installed ``mujoco`` package (it is not copied into this
 package), so that package must be the MuJoCo version the plugin was built against
 (``built_against()``); ``load_plugin()`` checks it.
@@ -18,7 +22,7 @@ from __future__ import annotations
 import importlib
 from pathlib import Path
 from types import ModuleType
-from typing import Optional
+from typing import Any, Optional
 
 from . import _build
 
@@ -81,6 +85,33 @@ def load_plugin() -> Path:
         raise ImportError(f"MuJoCo could not load contensou's plugin {path}: {e}") from e
     _loaded = path
     return path
+
+
+def check_config(spec: Any) -> None:
+    """Refuses an empty value of a ``contensou.friction`` configuration key in ``spec`` (a
+    ``mujoco.MjSpec``, or MJCF text): MuJoCo compiles ``<config key="law" value=""/>`` exactly as
+    a key left out, so the plugin itself would take the default. An empty value is not a
+    choice: ValueError naming the instance and the key (leave the key out for its default)."""
+    mujoco: Any = importlib.import_module("mujoco")
+    if isinstance(spec, str):
+        spec = mujoco.MjSpec.from_string(spec)
+    for plugin in spec.plugins:
+        if plugin.plugin_name != PLUGIN_NAME:
+            continue
+        for key, value in dict(plugin.config).items():
+            if not str(value).strip():
+                raise ValueError(
+                    f"{PLUGIN_NAME}: instance '{plugin.name}': config '{key}' is empty: an empty "
+                    "value is not a choice (leave the key out for its default)")
+
+
+def model_from_xml(xml: str) -> Any:
+    """``mujoco.MjModel`` of MJCF text, after ``check_config``: the same model as
+    ``mujoco.MjModel.from_xml_string(xml)``, with empty configuration values refused."""
+    mujoco: Any = importlib.import_module("mujoco")
+    spec = mujoco.MjSpec.from_string(xml)
+    check_config(spec)
+    return spec.compile()
 
 
 def _no_plugin() -> str:

@@ -3,6 +3,7 @@
 
 #include <nanobind/nanobind.h>
 #include <nanobind/ndarray.h>
+#include <nanobind/stl/vector.h>
 
 #include <algorithm>
 #include <atomic>
@@ -160,6 +161,46 @@ auto run_interruptible_if(bool long_call, Body&& body) -> decltype(body(StopRequ
   if (long_call) return run_interruptible(std::forward<Body>(body));
   nb::gil_scoped_release release;
   return body(StopRequest{});
+}
+
+// The package's one rule for an argument (python/contensou/_args.py): `check`(name, value) of
+// that module, whose TypeError names the argument and what it accepts (a number is an int, a
+// float or a numpy scalar, never a str or a bool; a profile a PressureProfile or a built-in
+// profile's name).
+inline nb::object checked_argument(const char* check, const char* name, nb::handle value) {
+  return nb::module_::import_("contensou._args").attr(check)(name, value);
+}
+
+// A value of the wrong type for argument `name` (accepted: what it takes, in words): the
+// package's short TypeError.
+[[noreturn]] inline void wrong_type(const char* name, nb::handle value, const char* accepted) {
+  nb::module_::import_("contensou._args").attr("wrong_type")(name, value, accepted);
+  throw std::logic_error("contensou._args.wrong_type returned");  // it always raises
+}
+
+// A bound object of type T as argument `name`, or the short TypeError.
+template <class T>
+const T& object_argument(const char* name, nb::handle value, const char* accepted) {
+  T* p = nullptr;
+  if (!nb::try_cast<T*>(value, p) || !p) wrong_type(name, value, accepted);
+  return *p;
+}
+
+inline double number_argument(const char* name, nb::handle value) {
+  return nb::cast<double>(checked_argument("number", name, value));
+}
+
+inline int integer_argument(const char* name, nb::handle value) {
+  return nb::cast<int>(checked_argument("integer", name, value));
+}
+
+inline std::vector<double> numbers_argument(const char* name, nb::handle value) {
+  return nb::cast<std::vector<double>>(checked_argument("numbers", name, value));
+}
+
+inline std::optional<double> optional_number_argument(const char* name, nb::handle value) {
+  if (value.is_none()) return std::nullopt;
+  return number_argument(name, value);
 }
 
 // Names the point of a bad input: "<the library's message> (point i of the flattened input)".

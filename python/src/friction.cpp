@@ -158,15 +158,37 @@ double cpp_loop_fractional(const FractionalLaw<double>& law, InArray vx, InArray
   return std::chrono::duration<double>(t1 - t0).count();
 }
 
+// A patch argument: a ContactPatch, else a short TypeError naming the argument.
+const ContactPatch& patch_argument(const char* name, nb::handle value) {
+  return object_argument<ContactPatch>(name, value, "a ContactPatch");
+}
+
+// The arguments of ContactPatch(...), each checked by the package's rule (common.hpp).
+struct PatchArguments {
+  nb::object radius_m, pressure, friction, kappa, profile, slip, normal_load;
+};
+
 // ContactPatch(radius_m, reference_pressure_pa, friction, kappa, profile, slip_speed_friction,
-// *, normal_load): every argument checked here, so that a bad patch fails where it is made.
-void init_patch(ContactPatch* self, std::optional<double> radius_m, std::optional<double> pressure,
-                std::optional<double> friction, double kappa,
-                std::optional<PressureProfile> profile,
-                std::optional<SlipSpeedFriction<double>> slip, std::optional<double> normal_load) {
+// *, normal_load): every argument checked here, so that a bad patch fails where it is made; a
+// profile is a PressureProfile or a built-in profile's name, as identify(profile=...) takes.
+ContactPatch make_patch(const PatchArguments& a) {
   const char* const how =
       "ContactPatch(radius_m=..., normal_load=... or reference_pressure_pa=..., friction=...); "
       "ContactPatch.seed_tire() is the seed's tire";
+  const std::optional<double> radius_m = optional_number_argument("radius_m", a.radius_m);
+  const std::optional<double> pressure =
+      optional_number_argument("reference_pressure_pa", a.pressure);
+  const std::optional<double> friction = optional_number_argument("friction", a.friction);
+  const std::optional<double> normal_load = optional_number_argument("normal_load", a.normal_load);
+  const double kappa = number_argument("kappa", a.kappa);
+  const PressureProfile shape =
+      a.profile.is_none()
+          ? uniform_profile()
+          : nb::cast<PressureProfile>(checked_argument("profile", "profile", a.profile));
+  std::optional<SlipSpeedFriction<double>> slip;
+  if (!a.slip.is_none())
+    slip = object_argument<SlipSpeedFriction<double>>("slip_speed_friction", a.slip,
+                                                      "a SlipSpeedFriction or None");
   if (!radius_m) throw InvalidArgument("radius_m", "missing", std::string("needed: ") + how);
   require_positive("radius_m", *radius_m);
   if (!friction) throw InvalidArgument("friction", "missing", std::string("needed: ") + how);
@@ -174,7 +196,6 @@ void init_patch(ContactPatch* self, std::optional<double> radius_m, std::optiona
     throw InvalidArgument("normal_load, reference_pressure_pa",
                           normal_load ? "both given" : "neither given",
                           "give one: the load N [N] or the reference pressure p* [Pa]");
-  const PressureProfile shape = profile ? *profile : uniform_profile();
   ContactPatch p;
   if (normal_load) {
     p = ContactPatch::from_normal_load(*radius_m, *normal_load, shape, *friction, kappa);
@@ -187,7 +208,53 @@ void init_patch(ContactPatch* self, std::optional<double> radius_m, std::optiona
   }
   p.slip_speed_friction = slip;
   validate(p);
-  new (self) ContactPatch(std::move(p));
+  return p;
+}
+
+// The profiles' factories and readers, their numbers checked by the package's rule.
+void bind_profile_functions(nb::module_& m) {
+  m.def("uniform_profile", &uniform_profile, "p(rho) = 1");
+  m.def("hertz_profile", &hertz_profile, "p(rho) = sqrt(1 - rho^2)");
+  m.def(
+      "cosine_series_profile",
+      [](nb::handle w, nb::handle a) {
+        return cosine_series_profile(number_argument("w", w), numbers_argument("a", a));
+      },
+      "w"_a, "a"_a,
+      nb::sig("def cosine_series_profile(w: float, a: collections.abc.Sequence[float]) -> "
+              "PressureProfile"),
+      "p(rho) = sum_k a_k cos(pi k w rho) (seed eq. 8)");
+  m.def(
+      "tabulated_profile",
+      [](nb::handle rho, nb::handle p) {
+        return tabulated_profile(numbers_argument("rho", rho), numbers_argument("p", p));
+      },
+      "rho"_a, "p"_a,
+      nb::sig("def tabulated_profile(rho: collections.abc.Sequence[float], p: "
+              "collections.abc.Sequence[float]) -> PressureProfile"),
+      "a table p(rho) at increasing rho from the centre, 0, to the rim, 1 (knots at least 1e-9 "
+      "apart), monotone cubic in rho^2");
+  m.def("seed_tire_profile", &seed_tire_profile, "the tire of the seed (Table 1)");
+  m.def(
+      "read_profile_csv",
+      [](const std::string& path) {
+        MeasuredProfile r = read_profile_csv(path);
+        return std::make_pair(r.profile, r.reference_pressure_pa);
+      },
+      "path"_a,
+      "a profile CSV (rho, pressure_Pa): (profile, reference pressure = mean pressure [Pa])");
+  m.def(
+      "smoothed_profile",
+      [](nb::handle rho, nb::handle p, nb::handle terms) {
+        SmoothedProfile s = smoothed_profile(numbers_argument("rho", rho), numbers_argument("p", p),
+                                             integer_argument("terms", terms));
+        return std::make_pair(s.profile, std::make_pair(s.rms_residual, s.max_residual));
+      },
+      "rho"_a, "p"_a, "terms"_a,
+      nb::sig("def smoothed_profile(rho: collections.abc.Sequence[float], p: "
+              "collections.abc.Sequence[float], terms: int) -> tuple[PressureProfile, "
+              "tuple[float, float]]"),
+      "least-squares Chebyshev series in rho^2: (profile, (rms residual, max residual))");
 }
 
 void bind_profiles(nb::module_& m) {
@@ -200,7 +267,13 @@ void bind_profiles(nb::module_& m) {
       .def_rw("clip_negative", &PressureProfile::clip_negative, "replace p by max(p, 0)")
       .def_rw("keep_negative", &PressureProfile::keep_negative,
               "use a negative part as given (else make_exact_model refuses it)")
-      .def("moment", &moment, "n"_a, "A^n = integral_0^1 p(rho) rho^n d rho")
+      .def(
+          "moment",
+          [](const PressureProfile& p, nb::handle n) {
+            return moment(p, integer_argument("n", n));
+          },
+          "n"_a, nb::sig("def moment(self, n: int) -> float"),
+          "A^n = integral_0^1 p(rho) rho^n d rho")
       .def("negative_intervals", &negative_intervals,
            "intervals of rho where the unclipped shape is negative")
       .def("negative_load_share", &negative_load_share)
@@ -225,66 +298,81 @@ void bind_profiles(nb::module_& m) {
           },
           "rho"_a, "out"_a);
 
-  m.def("uniform_profile", &uniform_profile, "p(rho) = 1");
-  m.def("hertz_profile", &hertz_profile, "p(rho) = sqrt(1 - rho^2)");
-  m.def("cosine_series_profile", &cosine_series_profile, "w"_a, "a"_a,
-        "p(rho) = sum_k a_k cos(pi k w rho) (seed eq. 8)");
-  m.def("tabulated_profile", &tabulated_profile, "rho"_a, "p"_a,
-        "a table p(rho) at increasing rho in [0, 1] ending at 1, monotone cubic in rho^2");
-  m.def("seed_tire_profile", &seed_tire_profile, "the tire of the seed (Table 1)");
-  m.def(
-      "read_profile_csv",
-      [](const std::string& path) {
-        MeasuredProfile r = read_profile_csv(path);
-        return std::make_pair(r.profile, r.reference_pressure_pa);
-      },
-      "path"_a,
-      "a profile CSV (rho, pressure_Pa): (profile, reference pressure = mean pressure [Pa])");
-  m.def(
-      "smoothed_profile",
-      [](const std::vector<double>& rho, const std::vector<double>& p, int terms) {
-        SmoothedProfile s = smoothed_profile(rho, p, terms);
-        return std::make_pair(s.profile, std::make_pair(s.rms_residual, s.max_residual));
-      },
-      "rho"_a, "p"_a, "terms"_a,
-      "least-squares Chebyshev series in rho^2: (profile, (rms residual, max residual))");
+  bind_profile_functions(m);
 }
 
-void bind_patch(nb::module_& m) {
+// SlipSpeedFriction, its numbers checked by the package's rule (common.hpp).
+void bind_slip_speed_friction(nb::module_& m) {
   nb::class_<SlipSpeedFriction<double>>(
       m, "SlipSpeedFriction", "f(w) = f_k + (f_s - f_k) exp(-(w / w_s)^delta), w the slip speed")
       .def(
           "__init__",
-          [](SlipSpeedFriction<double>* s, double fs, double fk, double ws, double delta) {
-            new (s) SlipSpeedFriction<double>{fs, fk, ws, delta};
+          [](SlipSpeedFriction<double>* s, nb::handle fs, nb::handle fk, nb::handle ws,
+             nb::handle delta) {
+            new (s) SlipSpeedFriction<double>{number_argument("static_coefficient", fs),
+                                              number_argument("kinetic_coefficient", fk),
+                                              number_argument("reference_speed", ws),
+                                              number_argument("exponent", delta)};
           },
           "static_coefficient"_a = 0.3, "kinetic_coefficient"_a = 0.3, "reference_speed"_a = 1.0,
-          "exponent"_a = 1.0)
+          "exponent"_a = 1.0,
+          nb::sig("def __init__(self, static_coefficient: float = 0.3, kinetic_coefficient: "
+                  "float = 0.3, reference_speed: float = 1.0, exponent: float = 1.0) -> None"))
       .def_rw("static_coefficient", &SlipSpeedFriction<double>::static_coefficient)
       .def_rw("kinetic_coefficient", &SlipSpeedFriction<double>::kinetic_coefficient)
       .def_rw("reference_speed", &SlipSpeedFriction<double>::reference_speed)
       .def_rw("exponent", &SlipSpeedFriction<double>::exponent);
+}
 
+void bind_patch(nb::module_& m) {
+  bind_slip_speed_friction(m);
   nb::class_<ContactPatch>(m, "ContactPatch",
                            "Geometry, load, pressure and friction of the exact model (SI units). "
                            "Give radius_m, friction and either normal_load [N] (p* = N / (2 pi "
                            "R^2 A^1) is derived) or reference_pressure_pa; checked at once. "
                            "ContactPatch.seed_tire() is the seed's tire.")
-      .def("__init__", &init_patch, "radius_m"_a.none() = nb::none(),
-           "reference_pressure_pa"_a.none() = nb::none(), "friction"_a.none() = nb::none(),
-           "kappa"_a = 1.0, "profile"_a.none() = nb::none(),
-           "slip_speed_friction"_a.none() = nb::none(), nb::kw_only(),
-           "normal_load"_a.none() = nb::none())
-      .def_static("from_normal_load", &ContactPatch::from_normal_load, "radius_m"_a,
-                  "normal_load"_a, "profile"_a, "friction"_a, "kappa"_a = 1.0,
-                  "the patch carrying the load N [N]: p* = N / (2 pi R^2 A^1)")
+      .def(
+          "__init__",
+          [](ContactPatch* self, nb::object radius_m, nb::object pressure, nb::object friction,
+             nb::object kappa, nb::object profile, nb::object slip, nb::object normal_load) {
+            new (self) ContactPatch(
+                make_patch({radius_m, pressure, friction, kappa, profile, slip, normal_load}));
+          },
+          "radius_m"_a.none() = nb::none(), "reference_pressure_pa"_a.none() = nb::none(),
+          "friction"_a.none() = nb::none(), "kappa"_a = 1.0, "profile"_a.none() = nb::none(),
+          "slip_speed_friction"_a.none() = nb::none(), nb::kw_only(),
+          "normal_load"_a.none() = nb::none(),
+          nb::sig("def __init__(self, radius_m: float | None = None, reference_pressure_pa: "
+                  "float | None = None, friction: float | None = None, kappa: float = 1.0, "
+                  "profile: PressureProfile | str | None = None, slip_speed_friction: "
+                  "SlipSpeedFriction | None = None, *, normal_load: float | None = None) -> None"))
+      .def_static(
+          "from_normal_load",
+          [](nb::handle radius_m, nb::handle normal_load, nb::handle profile, nb::handle friction,
+             nb::handle kappa) {
+            return ContactPatch::from_normal_load(
+                number_argument("radius_m", radius_m), number_argument("normal_load", normal_load),
+                nb::cast<PressureProfile>(checked_argument("profile", "profile", profile)),
+                number_argument("friction", friction), number_argument("kappa", kappa));
+          },
+          "radius_m"_a, "normal_load"_a, "profile"_a, "friction"_a, "kappa"_a = 1.0,
+          nb::sig("def from_normal_load(radius_m: float, normal_load: float, profile: "
+                  "PressureProfile | str, friction: float, kappa: float = 1.0) -> ContactPatch"),
+          "the patch carrying the load N [N]: p* = N / (2 pi R^2 A^1)")
       .def_static("seed_tire", &ContactPatch::seed_tire,
                   "the seed's tire: R = 0.087 m, p* = 210 kPa (N = 4535 N), f = 0.3")
       .def_rw("radius_m", &ContactPatch::radius_m)
       .def_rw("reference_pressure_pa", &ContactPatch::reference_pressure_pa)
       .def_rw("friction", &ContactPatch::friction)
       .def_rw("kappa", &ContactPatch::kappa)
-      .def_rw("profile", &ContactPatch::profile)
+      .def_prop_rw(
+          "profile", [](ContactPatch& p) -> PressureProfile& { return p.profile; },
+          [](ContactPatch& p, nb::handle profile) {
+            p.profile = nb::cast<PressureProfile>(checked_argument("profile", "profile", profile));
+          },
+          nb::for_getter(nb::rv_policy::reference_internal),  // patch.profile.kx = 0.1 sets it
+          nb::for_setter(nb::sig("def profile(self, arg: PressureProfile | str, /) -> None")),
+          "the pressure profile (set: a PressureProfile or a built-in profile's name)")
       .def_rw("slip_speed_friction", &ContactPatch::slip_speed_friction, nb::arg().none())
       .def_prop_ro(
           "normal_load", [](const ContactPatch& p) { return p.normal_load(); },
@@ -305,10 +393,13 @@ void bind_laws(nb::module_& m) {
                                  "evaluate many times")
       .def(
           "__init__",
-          [](ExactModel<double>* e, const ContactPatch& patch, double tol) {
-            new (e) ExactModel<double>(make_exact_model(patch, tol));
+          [](ExactModel<double>* e, nb::handle patch, nb::handle tol) {
+            new (e) ExactModel<double>(make_exact_model(
+                patch_argument("patch", patch), number_argument("representation_tolerance", tol)));
           },
-          "patch"_a, "representation_tolerance"_a = 1e-15)
+          "patch"_a, "representation_tolerance"_a = 1e-15,
+          nb::sig("def __init__(self, patch: ContactPatch, representation_tolerance: float = "
+                  "1e-15) -> None"))
       .def_ro("radius", &ExactModel<double>::radius)
       .def_ro("representation_error", &ExactModel<double>::representation_error)
       .def_ro("load_area", &ExactModel<double>::load_area);
@@ -317,13 +408,28 @@ void bind_laws(nb::module_& m) {
                                     "The fractional (Pade-type) law, seed eqs. 5-7 in vector form")
       .def(
           "__init__",
-          [](FractionalLaw<double>* l, double F0, double M0, double a, double mm, double kx,
-             double ky, double kappa, double c, double Mk, double a_k, double radius, double eps) {
-            new (l) FractionalLaw<double>{F0, M0, a, mm, kx, ky, kappa, c, Mk, a_k, radius, eps};
+          [](FractionalLaw<double>* l, nb::handle F0, nb::handle M0, nb::handle a, nb::handle mm,
+             nb::handle kx, nb::handle ky, nb::handle kappa, nb::handle c, nb::handle Mk,
+             nb::handle a_k, nb::handle radius, nb::handle eps) {
+            // Every value checked here (a number, then validate), as ContactPatch's: a bad law
+            // fails where it is made.
+            const FractionalLaw<double> law{
+                number_argument("F0", F0),         number_argument("M0", M0),
+                number_argument("a", a),           number_argument("m", mm),
+                number_argument("kx", kx),         number_argument("ky", ky),
+                number_argument("kappa", kappa),   number_argument("c", c),
+                number_argument("Mk", Mk),         number_argument("a_k", a_k),
+                number_argument("radius", radius), number_argument("regularization_speed", eps)};
+            validate(law);
+            new (l) FractionalLaw<double>(law);
           },
           "F0"_a = 0.0, "M0"_a = 0.0, "a"_a = 1.0, "m"_a = 64.0 / 9.0, "kx"_a = 0.0, "ky"_a = 0.0,
           "kappa"_a = 1.0, "c"_a = 4.0, "Mk"_a = 0.0, "a_k"_a = 1.0, "radius"_a = 0.1,
-          "regularization_speed"_a = 1e-4)
+          "regularization_speed"_a = 1e-4,
+          nb::sig("def __init__(self, F0: float = 0.0, M0: float = 0.0, a: float = 1.0, m: float "
+                  "= 7.111111111111111, kx: float = 0.0, ky: float = 0.0, kappa: float = 1.0, c: "
+                  "float = 4.0, Mk: float = 0.0, a_k: float = 1.0, radius: float = 0.1, "
+                  "regularization_speed: float = 0.0001) -> None"))
       .def_rw("F0", &FractionalLaw<double>::F0)
       .def_rw("M0", &FractionalLaw<double>::M0)
       .def_rw("a", &FractionalLaw<double>::a)
@@ -343,11 +449,22 @@ void bind_laws(nb::module_& m) {
                ", kx=" + format_value(l.kx) + ", ky=" + format_value(l.ky) +
                ", kappa=" + format_value(l.kappa) + ", R=" + format_value(l.radius) + " m>";
       });
-  m.def("fractional_law_from_patch", &fractional_law_from_patch, "patch"_a,
-        "asymptote-matched coefficients from the patch's moments");
-  m.def("fractional_law_fitted", &fractional_law_fitted, "patch"_a, "psi_min"_a = 1e-2,
-        "psi_max"_a = 1e2, "n"_a = 41,
-        "a and m (c, a_k) fitted by least squares to the exact integrals over psi");
+  m.def(
+      "fractional_law_from_patch",
+      [](nb::handle patch) { return fractional_law_from_patch(patch_argument("patch", patch)); },
+      "patch"_a, nb::sig("def fractional_law_from_patch(patch: ContactPatch) -> FractionalLaw"),
+      "asymptote-matched coefficients from the patch's moments");
+  m.def(
+      "fractional_law_fitted",
+      [](nb::handle patch, nb::handle psi_min, nb::handle psi_max, nb::handle n) {
+        return fractional_law_fitted(patch_argument("patch", patch),
+                                     number_argument("psi_min", psi_min),
+                                     number_argument("psi_max", psi_max), integer_argument("n", n));
+      },
+      "patch"_a, "psi_min"_a = 1e-2, "psi_max"_a = 1e2, "n"_a = 41,
+      nb::sig("def fractional_law_fitted(patch: ContactPatch, psi_min: float = 0.01, psi_max: "
+              "float = 100.0, n: int = 41) -> FractionalLaw"),
+      "a and m (c, a_k) fitted by least squares to the exact integrals over psi");
 }
 
 void bind_loops(nb::module_& m) {

@@ -136,6 +136,14 @@ void bind_gear(nb::module_& m) {
       "every key");
   m.def("_gear_parameter_names", &gear_parameter_names);
   m.def(
+      "_contact_model",
+      [](const std::string& name) {
+        return std::string(to_string(contact_model_from_string(name)));
+      },
+      "name"_a,
+      "the contact model's name for a name contensou-shimmy takes (its aliases too); "
+      "ValueError for another");
+  m.def(
       "_config_keys",
       [] {
         app::ShimmyConfig defaults;

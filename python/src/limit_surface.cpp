@@ -100,6 +100,36 @@ void bind_surface_methods(Class& c) {
           "the set, -s+ normal to it at w (exactly 0 when it sticks)");
 }
 
+// EllipsoidalLimitSurface, its numbers checked by the package's rule (common.hpp).
+void bind_ellipsoid(nb::module_& m) {
+  auto ellipsoid = nb::class_<EllipsoidalLimitSurface>(
+      m, "EllipsoidalLimitSurface",
+      "(Fx/F)^2 + (Fy/(kappa F))^2 + (Mz/(F L))^2 <= 1 (MuJoCo's elliptic cone)");
+  ellipsoid
+      .def(
+          "__init__",
+          [](EllipsoidalLimitSurface* e, nb::handle force_limit, nb::handle torsional_length,
+             nb::handle radius, nb::handle kappa) {
+            new (e) EllipsoidalLimitSurface{number_argument("force_limit", force_limit),
+                                            number_argument("torsional_length", torsional_length),
+                                            number_argument("radius", radius),
+                                            number_argument("kappa", kappa)};
+          },
+          "force_limit"_a, "torsional_length"_a, "radius"_a, "kappa"_a = 1.0,
+          nb::sig("def __init__(self, force_limit: float, torsional_length: float, radius: float, "
+                  "kappa: float = 1.0) -> None"))
+      .def_ro("force_limit", &EllipsoidalLimitSurface::force_limit)
+      .def_ro("torsional_length", &EllipsoidalLimitSurface::torsional_length)
+      .def_ro("radius", &EllipsoidalLimitSurface::radius)
+      .def_ro("kappa", &EllipsoidalLimitSurface::kappa)
+      .def("__repr__", [](const EllipsoidalLimitSurface& e) {
+        return "<EllipsoidalLimitSurface F=" + std::to_string(e.force_limit) +
+               " N, L=" + std::to_string(e.torsional_length) +
+               " m, kappa=" + std::to_string(e.kappa) + ">";
+      });
+  bind_surface_methods<EllipsoidalLimitSurface>(ellipsoid);
+}
+
 }  // namespace
 
 void bind_limit_surface(nb::module_& m) {
@@ -136,10 +166,13 @@ void bind_limit_surface(nb::module_& m) {
   exact
       .def(
           "__init__",
-          [](LimitSurface* s, const ContactPatch& patch, double tolerance) {
-            new (s) LimitSurface(make_limit_surface(patch, tolerance));
+          [](LimitSurface* s, nb::handle patch, nb::handle tolerance) {
+            new (s) LimitSurface(
+                make_limit_surface(object_argument<ContactPatch>("patch", patch, "a ContactPatch"),
+                                   number_argument("tolerance", tolerance)));
           },
-          "patch"_a, "tolerance"_a = 1e-12)
+          "patch"_a, "tolerance"_a = 1e-12,
+          nb::sig("def __init__(self, patch: ContactPatch, tolerance: float = 1e-12) -> None"))
       .def_ro("radius", &LimitSurface::radius)
       .def_ro("force_scale", &LimitSurface::force_scale)
       .def_ro("tolerance", &LimitSurface::tolerance)
@@ -155,27 +188,7 @@ void bind_limit_surface(nb::module_& m) {
           "radial error 1/g_E - 1 of an ellipsoid at the exact surface's boundary points");
   bind_surface_methods<LimitSurface>(exact);
 
-  auto ellipsoid = nb::class_<EllipsoidalLimitSurface>(
-      m, "EllipsoidalLimitSurface",
-      "(Fx/F)^2 + (Fy/(kappa F))^2 + (Mz/(F L))^2 <= 1 (MuJoCo's elliptic cone)");
-  ellipsoid
-      .def(
-          "__init__",
-          [](EllipsoidalLimitSurface* e, double force_limit, double torsional_length, double radius,
-             double kappa) {
-            new (e) EllipsoidalLimitSurface{force_limit, torsional_length, radius, kappa};
-          },
-          "force_limit"_a, "torsional_length"_a, "radius"_a, "kappa"_a = 1.0)
-      .def_ro("force_limit", &EllipsoidalLimitSurface::force_limit)
-      .def_ro("torsional_length", &EllipsoidalLimitSurface::torsional_length)
-      .def_ro("radius", &EllipsoidalLimitSurface::radius)
-      .def_ro("kappa", &EllipsoidalLimitSurface::kappa)
-      .def("__repr__", [](const EllipsoidalLimitSurface& e) {
-        return "<EllipsoidalLimitSurface F=" + std::to_string(e.force_limit) +
-               " N, L=" + std::to_string(e.torsional_length) +
-               " m, kappa=" + std::to_string(e.kappa) + ">";
-      });
-  bind_surface_methods<EllipsoidalLimitSurface>(ellipsoid);
+  bind_ellipsoid(m);
 }
 
 }  // namespace contensou::python

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <numbers>
 #include <utility>
 
@@ -10,6 +11,12 @@
 namespace contensou {
 
 namespace {
+
+// Knots at rho a < b are far enough apart: b - a >= kMinProfileKnotStep up to the rounding of
+// the two (a relative 1e-6 of the step: 0.999999999 and 1 are 1e-9 apart).
+bool knots_apart(double a, double b) {
+  return b - a >= kMinProfileKnotStep * (1.0 - 1e-6);
+}
 
 // The profile's shape and shift. A shape filled by hand (not by its factory) is checked here:
 // an empty or inconsistent table would be read out of bounds by the interpolation (and by
@@ -29,13 +36,14 @@ void check_profile(const PressureProfile& profile) {
       require_finite("tabulated rho", t->rho[i]);
       require_finite("tabulated p", t->p[i]);
       require_finite("tabulated slope", t->slope[i]);
-      if (i > 0 && !(t->rho[i] > t->rho[i - 1]))
-        throw InvalidArgument("tabulated rho", format_value(t->rho[i]),
-                              "must be strictly increasing");
+      if (i > 0 && !knots_apart(t->rho[i - 1], t->rho[i]))
+        throw InvalidArgument(
+            "tabulated rho", format_value(t->rho[i]),
+            "must increase by at least 1e-9 a knot (previous " + format_value(t->rho[i - 1]) + ")");
     }
-    if (t->rho.front() < 0.0 || t->rho.back() != 1.0)
+    if (t->rho.front() != 0.0 || t->rho.back() != 1.0)
       throw InvalidArgument("profile", describe(profile),
-                            "tabulated rho must lie in [0, 1] and end at the rim, 1");
+                            "tabulated rho must start at the centre, 0, and end at the rim, 1");
   }
   if (const auto* c = std::get_if<ChebyshevShape>(&profile.shape)) {
     if (c->c.empty())
@@ -116,6 +124,9 @@ void validate(const ContactPatch& patch) {
   require_positive("radius_m", patch.radius_m);
   require_positive("reference_pressure_pa", patch.reference_pressure_pa);
   require_non_negative("friction", patch.friction);
+  if (patch.friction > 0.0 && patch.friction < std::numeric_limits<double>::min())
+    throw InvalidArgument("friction", format_value(patch.friction),
+                          "is below 2.2e-308, the smallest normal double: use 0 for none");
   require_positive("kappa", patch.kappa);
   require_finite("kx", patch.profile.kx);
   require_finite("ky", patch.profile.ky);

@@ -2,7 +2,9 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <numbers>
+#include <utility>
 
 #include "contensou/friction/error.hpp"
 #include "contensou/friction/exact_resultants.hpp"
@@ -17,6 +19,15 @@ void validate(const FractionalLaw<double>& p) {
   if (!(k < 1.0))
     throw InvalidArgument("|(kx, ky)|", format_value(k),
                           "the pressure shift must be < 1 so that the pressure stays positive");
+  // The scales 0 or normal doubles, as loads and radii are (require_positive): a subnormal one
+  // has lost its precision (the law's evaluation accepts it; validate, which every binding calls
+  // first, refuses it).
+  const std::pair<const char*, double> scales[] = {{"F0", p.F0}, {"M0", p.M0}, {"Mk", p.Mk}};
+  for (const auto& [name, v] : scales)
+    if (v > 0.0 && v < std::numeric_limits<double>::min())
+      throw InvalidArgument(
+          name, format_value(v),
+          "is below 2.2e-308, the smallest normal double: use other units (or 0)");
 }
 
 namespace {

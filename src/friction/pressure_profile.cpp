@@ -197,11 +197,105 @@ std::vector<double> sign_changes(const PressureProfile& profile) {
   return roots;
 }
 
+// Knots at rho a < b are far enough apart: b - a >= kMinProfileKnotStep up to the rounding of
+// the two (a relative 1e-6 of the step: 0.999999999 and 1 are 1e-9 apart).
+bool knots_apart(double a, double b) {
+  return b - a >= kMinProfileKnotStep * (1.0 - 1e-6);
+}
+
 // Why a table of more than kMaxProfilePoints points is refused, and what to do instead.
 std::string too_many_points_advice() {
   return "a tabulated profile takes at most " + std::to_string(kMaxProfilePoints) +
          " points (its exact model and law take about 1.7 KB a point to build): resample it, "
          "or fit smoothed_profile";
+}
+
+// The knots of a table (tabulated_profile's checks), with a first rho within 1e-9 of the
+// centre set to 0 and a last within 1e-9 of the rim set to 1; errors name the knot.
+std::vector<double> checked_knots(std::vector<double> rho, const std::vector<double>& p) {
+  if (rho.size() < 2)
+    throw InvalidArgument("rho", "(" + std::to_string(rho.size()) + " points)",
+                          "a tabulated profile needs at least 2 points");
+  if (rho.size() > kMaxProfilePoints)
+    throw InvalidArgument("rho", "(" + std::to_string(rho.size()) + " points)",
+                          too_many_points_advice());
+  if (rho.size() != p.size())
+    throw InvalidArgument("p", "(" + std::to_string(p.size()) + " values)",
+                          "must have as many values as rho (" + std::to_string(rho.size()) + ")");
+  for (std::size_t k = 0; k < rho.size(); ++k) {
+    const std::string name = "rho[" + std::to_string(k) + "]";
+    require_finite(name.c_str(), rho[k]);
+    require_finite(("p[" + std::to_string(k) + "]").c_str(), p[k]);
+    if (rho[k] < 0.0 || rho[k] > 1.0 + 1e-12)
+      throw InvalidArgument(name, format_value(rho[k]), "must lie in [0, 1]");
+    rho[k] = std::min(rho[k], 1.0);  // past the rim by rounding: on it (then check increase)
+    if (k > 0 && !(rho[k] > rho[k - 1]))
+      throw InvalidArgument(
+          name, format_value(rho[k]),
+          "rho must be strictly increasing (previous " + format_value(rho[k - 1]) + ")");
+  }
+  if (rho.front() > 1e-9)
+    throw InvalidArgument("rho[0]", format_value(rho.front()),
+                          "a tabulated profile must start at the centre, rho = 0: it is not "
+                          "extended below its first knot (add the knot rho = 0 with the "
+                          "centre's pressure)");
+  if (rho.back() < 1.0 - 1e-9)
+    throw InvalidArgument("rho[last]", format_value(rho.back()),
+                          "a tabulated profile must reach the rim, rho = 1");
+  rho.front() = 0.0;
+  rho.back() = 1.0;
+  for (std::size_t k = 1; k < rho.size(); ++k)
+    if (!knots_apart(rho[k - 1], rho[k]))
+      throw InvalidArgument(
+          "rho[" + std::to_string(k) + "]", format_value(rho[k]),
+          "knots " + std::to_string(k - 1) + " (rho = " + format_value(rho[k - 1]) + ") and " +
+              std::to_string(k) + " are " + format_value(rho[k] - rho[k - 1]) +
+              " apart, closer than 1e-9 (of the radius): the interpolant's slope between them "
+              "is not defined to a double's precision; merge the two knots");
+  return rho;
+}
+
+// Each piece of the table's cubic in t = rho^2 (the Hermite form of set_table_pieces: p_k,
+// d_k, (3 del - 2 d_k - d_k+1) / h, (d_k + d_k+1 - 2 del) / h^2, del = (p_k+1 - p_k) / h)
+// must be finite: values too large for their knot step are refused naming the two knots.
+void check_pieces(const TabulatedShape& t) {
+  for (std::size_t k = 0; k + 1 < t.rho.size(); ++k) {
+    const double h = t.rho[k + 1] * t.rho[k + 1] - t.rho[k] * t.rho[k];
+    const double del = (t.p[k + 1] - t.p[k]) / h, d0 = t.slope[k], d1 = t.slope[k + 1];
+    const double c2 = (3.0 * del - 2.0 * d0 - d1) / h, c3 = (d0 + d1 - 2.0 * del) / (h * h);
+    if (std::isfinite(d0) && std::isfinite(d1) && std::isfinite(c2) && std::isfinite(c3)) continue;
+    throw InvalidArgument(
+        "p[" + std::to_string(k) + "], p[" + std::to_string(k + 1) + "]",
+        format_value(t.p[k]) + ", " + format_value(t.p[k + 1]) +
+            " at rho = " + format_value(t.rho[k]) + ", " + format_value(t.rho[k + 1]),
+        "the interpolant between these knots overflows a double (its slope in rho^2 is " +
+            format_value(del) + "): give the values in other units, or the knots farther apart");
+  }
+}
+
+// A row of a profile CSV after its predecessor (nullptr for the first row): the first must be
+// the centre (rho within 1e-9 of 0), each next at least kMinProfileKnotStep past the previous.
+void check_profile_row(const CsvTable& table, int line, int column, double rho,
+                       const double* previous) {
+  if (!previous) {
+    if (rho > 1e-9)
+      throw table.cell_error(line, column,
+                             "rho = " + format_value(rho) +
+                                 ": the first row must be the centre, rho = 0 (the profile is "
+                                 "not extended below its first row; add a row at rho = 0)");
+    return;
+  }
+  if (!(rho > *previous))
+    throw table.cell_error(line, column,
+                           "rho = " + format_value(rho) + " not increasing (previous " +
+                               format_value(*previous) + ")");
+  if (!knots_apart(*previous, rho))
+    throw table.cell_error(line, column,
+                           "rho = " + format_value(rho) + " is " + format_value(rho - *previous) +
+                               " past the previous row's " + format_value(*previous) +
+                               ", closer than 1e-9 (of the radius): the interpolant's slope "
+                               "between them is not defined to a double's precision; merge the "
+                               "two rows");
 }
 
 }  // namespace
@@ -227,37 +321,14 @@ PressureProfile cosine_series_profile(double w, std::vector<double> a) {
 }
 
 PressureProfile tabulated_profile(std::vector<double> rho, std::vector<double> p) {
-  if (rho.size() < 2)
-    throw InvalidArgument("rho", "(" + std::to_string(rho.size()) + " points)",
-                          "a tabulated profile needs at least 2 points");
-  if (rho.size() > kMaxProfilePoints)
-    throw InvalidArgument("rho", "(" + std::to_string(rho.size()) + " points)",
-                          too_many_points_advice());
-  if (rho.size() != p.size())
-    throw InvalidArgument("p", "(" + std::to_string(p.size()) + " values)",
-                          "must have as many values as rho (" + std::to_string(rho.size()) + ")");
-  for (std::size_t k = 0; k < rho.size(); ++k) {
-    const std::string name = "rho[" + std::to_string(k) + "]";
-    require_finite(name.c_str(), rho[k]);
-    require_finite(("p[" + std::to_string(k) + "]").c_str(), p[k]);
-    if (rho[k] < 0.0 || rho[k] > 1.0 + 1e-12)
-      throw InvalidArgument(name, format_value(rho[k]), "must lie in [0, 1]");
-    rho[k] = std::min(rho[k], 1.0);  // past the rim by rounding: on it (then check increase)
-    if (k > 0 && !(rho[k] > rho[k - 1]))
-      throw InvalidArgument(
-          name, format_value(rho[k]),
-          "rho must be strictly increasing (previous " + format_value(rho[k - 1]) + ")");
-  }
-  if (rho.back() < 1.0 - 1e-9)
-    throw InvalidArgument("rho[last]", format_value(rho.back()),
-                          "a tabulated profile must reach the rim, rho = 1");
-  rho.back() = 1.0;
+  rho = checked_knots(std::move(rho), p);
   TabulatedShape t;
   std::vector<double> knots_t(rho.size());
   for (std::size_t k = 0; k < rho.size(); ++k) knots_t[k] = rho[k] * rho[k];
   t.slope = pchip_slopes(knots_t, p);
   t.rho = std::move(rho);
   t.p = std::move(p);
+  check_pieces(t);
   PressureProfile out;
   out.shape = std::move(t);
   return out;
@@ -298,11 +369,8 @@ ProfileTable read_profile_table(const std::string& path) {
     if (v[0] < 0.0 || v[0] > 1.0 + 1e-12)
       throw table.cell_error(row.line, ir, "rho = " + format_value(v[0]) + " outside [0, 1]");
     const double r = std::min(v[0], 1.0);  // past the rim by rounding: on it
-    if (!out.rho.empty() && !(r > out.rho.back()))
-      throw table.cell_error(row.line, ir,
-                             "rho = " + format_value(r) + " not increasing (previous " +
-                                 format_value(out.rho.back()) + ")");
-    out.rho.push_back(r);
+    check_profile_row(table, row.line, ir, r, out.rho.empty() ? nullptr : &out.rho.back());
+    out.rho.push_back(out.rho.empty() ? 0.0 : r);  // within 1e-9 of the centre: the centre
     out.pressure_pa.push_back(v[1]);
   }
   if (out.rho.size() < 2)
@@ -311,21 +379,32 @@ ProfileTable read_profile_table(const std::string& path) {
         "a profile needs at least 2 rows (found " + std::to_string(out.rho.size()) + ")");
   if (out.rho.back() < 1.0 - 1e-9)
     throw table.cell_error(table.rows.back().line, ir, "the last rho must be 1 (the rim)");
+  out.rho.back() = 1.0;  // snapping the ends only widens their steps
   return out;
 }
 
 MeasuredProfile read_profile_csv(const std::string& path) {
-  const ProfileTable t = read_profile_table(path);
+  ProfileTable t = read_profile_table(path);
+  // The pressures scaled by a power of two, 2^-e, so that the largest is below 1: exact, and
+  // the interpolant is homogeneous in p, so the shape divided by the mean is the same to the
+  // bit, while slopes of pressures near the largest double stay finite.
+  double largest = 0.0;
+  for (double x : t.pressure_pa) largest = std::max(largest, std::abs(x));
+  int e = 0;
+  std::frexp(largest, &e);
+  for (double& x : t.pressure_pa) x = std::ldexp(x, -e);
   MeasuredProfile out;
   out.profile = tabulated_profile(t.rho, t.pressure_pa);
-  // Mean pressure = 2 integral_0^1 p rho d rho (in Pa, before normalising).
-  const double mean = 2.0 * moment(out.profile, 1);
-  if (!(mean > 0.0 && std::isfinite(mean)))
-    throw ParseError(path, 0, 0, "the profile's mean pressure is not positive and finite");
+  // Mean pressure = 2 integral_0^1 p rho d rho (theory.md section 4: N = pi R^2 p_mean).
+  const double mean = 2.0 * moment(out.profile, 1), mean_pa = std::ldexp(mean, e);
+  if (!(mean > 0.0 && std::isfinite(mean_pa)))
+    throw ParseError(path, 0, 0,
+                     "the profile's mean pressure, " + format_value(mean_pa) +
+                         " Pa, is not positive and finite");
   auto& tab = std::get<TabulatedShape>(out.profile.shape);
   for (double& x : tab.p) x /= mean;
   for (double& x : tab.slope) x /= mean;
-  out.reference_pressure_pa = mean;
+  out.reference_pressure_pa = mean_pa;
   return out;
 }
 

@@ -343,3 +343,30 @@ TEST(FractionalEdges, ShiftJacobianIsContinuousThroughRest) {
     }
   }
 }
+
+// Scales of the law and the patch's friction are 0 or normal doubles, as loads and radii are: a
+// subnormal F0, M0, Mk or friction (below 2.2e-308) is refused naming it, where it was accepted
+// and lost its precision; 0 and the smallest normal double are accepted.
+TEST(Edges, SubnormalScalesOfTheLawAreRefusedNamingThem) {
+  const FractionalLaw<double> good = fractional_law_from_patch(shifted_seed(0.14, 0.05, 0.9));
+  for (const char* name : {"F0", "M0", "Mk"}) {
+    for (double v : {1e-310, 0.0, 2.3e-308}) {
+      FractionalLaw<double> law = good;
+      (name[0] == 'F' ? law.F0 : name[1] == '0' ? law.M0 : law.Mk) = v;
+      if (v > 0.0 && v < 2.2e-308) {
+        try {
+          validate(law);
+          ADD_FAILURE() << name << " = " << v << " accepted";
+        } catch (const InvalidArgument& e) {
+          EXPECT_EQ(e.parameter(), name);
+          EXPECT_NE(std::string(e.what()).find("smallest normal double"), std::string::npos);
+        }
+      } else {
+        EXPECT_NO_THROW(validate(law)) << name << " " << v;
+      }
+    }
+  }
+  ContactPatch patch = seed_tire_patch();
+  patch.friction = 1e-310;
+  EXPECT_THROW(validate(patch), InvalidArgument);
+}

@@ -775,12 +775,15 @@ ContactPatch random_knot_patch(std::vector<double>& rho) {
 }
 
 // Tables with uneven knots: 1,001 random knots with 5 % noise (intervals from 1e-7 to 1e-2
-// wide side by side) and 401 knots from rho = 0.3 (the constant below them one wide interval).
+// wide side by side) and 401 knots from rho = 0.3 after one at the centre with the same value
+// (a constant piece below them, one wide interval).
 // Where a chord's near pieces are much narrower than their distance they are integrated, not
 // summed as antiderivatives at the knots (with those the random table's far-knot series
 // deviated by 1e-9); at 1e-12 in three regimes against the ring oracle.
 TEST(ExactResultants, TablesWithUnevenKnotsStayExact) {
   std::vector<std::vector<double>> rhos(2), ps(2);
+  rhos[1].push_back(0.0);
+  ps[1].push_back(1.0 + 0.4 * 0.09 - 0.9 * std::pow(0.3, 4));  // the value at rho = 0.3
   for (int i = 0; i <= 400; ++i) {
     rhos[1].push_back(0.3 + 0.7 * i / 400.0);
     ps[1].push_back(1.0 + 0.4 * std::pow(rhos[1].back(), 2) - 0.9 * std::pow(rhos[1].back(), 4));

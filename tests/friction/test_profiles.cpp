@@ -7,6 +7,7 @@
 #include <string>
 #include <variant>
 
+#include "contensou/friction/contact_patch.hpp"
 #include "contensou/friction/error.hpp"
 #include "contensou/friction/exact_resultants.hpp"
 #include "contensou/friction/pressure_profile.hpp"
@@ -171,7 +172,7 @@ TEST(Profiles, ProfileCsvErrorsNameLineAndColumn) {
 // passed the increase check, then the last knot was set to 1, leaving two equal knots (zero
 // width piece, division by zero in the slopes).
 TEST(Profiles, KnotsOnTheRimUpToRoundingMustStillIncrease) {
-  expect_invalid([] { tabulated_profile({0.2, 1.0, 1.0 + 1e-12}, {2e5, 57e5, -1e6}); }, "rho[2]");
+  expect_invalid([] { tabulated_profile({0.0, 1.0, 1.0 + 1e-12}, {2e5, 57e5, -1e6}); }, "rho[2]");
   // A last knot past the rim by rounding is the rim.
   const PressureProfile p = tabulated_profile({0.0, 0.5, 1.0 + 1e-12}, {1.0, 1.0, 1.0});
   EXPECT_EQ(std::get<TabulatedShape>(p.shape).rho.back(), 1.0);
@@ -181,12 +182,121 @@ TEST(Profiles, KnotsOnTheRimUpToRoundingMustStillIncrease) {
 }
 
 // Found by the invariants of fuzz_profile_csv on a hand-written edge case: pressures of +-1.7e308
-// overflow the slopes, the mean pressure came out infinite and was accepted, and the profile
-// divided by it was all zeros.
-TEST(Profiles, ProfileCsvWithAnInfiniteMeanPressureIsAnError) {
-  EXPECT_THROW(read_profile_csv(
-                   write_temp("huge.csv", "rho,pressure_Pa\n0,1.7e308\n0.5,-1.7e308\n1,1.7e308\n")),
-               ParseError);
+// overflowed the slopes, the mean pressure came out infinite and was accepted, and the profile
+// divided by it was all zeros. The reader now scales the pressures by a power of two first, so
+// the slopes stay finite and the mean, at most the largest pressure (the monotone cubic has no
+// new extrema), is a double: the same file gives a finite profile and mean; pressures near the
+// largest double give the same shape as the same table in other units (to rounding); a mean that
+// is not positive is an error naming it.
+TEST(Profiles, ProfileCsvNearTheLargestDoubleIsFiniteOrAnError) {
+  for (const char* text : {"rho,pressure_Pa\n0,1.7e308\n0.5,-1.7e308\n1,1.7e308\n",
+                           "rho,pressure_Pa\n0,1.7e308\n0.5,1.7e308\n1,1.7e308\n"}) {
+    try {
+      const MeasuredProfile huge = read_profile_csv(write_temp("huge.csv", text));
+      EXPECT_TRUE(std::isfinite(huge.reference_pressure_pa) && huge.reference_pressure_pa > 0.0);
+      EXPECT_NEAR(2.0 * moment(huge.profile, 1), 1.0, 1e-14);
+    } catch (const ParseError& e) {  // a mean that is not positive: named
+      EXPECT_NE(std::string(e.what()).find("mean pressure"), std::string::npos) << e.what();
+    }
+  }
+  EXPECT_NEAR(read_profile_csv(write_temp("flat.csv", "rho,pressure_Pa\n0,1.7e308\n1,1.7e308\n"))
+                  .reference_pressure_pa,
+              1.7e308, 1e-14 * 1.7e308);
+  try {
+    read_profile_csv(write_temp("negative.csv", "rho,pressure_Pa\n0,-1e308\n0.5,-1e308\n1,0\n"));
+    ADD_FAILURE() << "a negative mean pressure accepted";
+  } catch (const ParseError& e) {
+    EXPECT_NE(std::string(e.what()).find("mean pressure, -"), std::string::npos) << e.what();
+  }
+  const MeasuredProfile big = read_profile_csv(
+      write_temp("big.csv", "rho,pressure_Pa\n0,1.7e308\n0.5,1.2e308\n0.7,0.4e308\n1,0\n"));
+  const MeasuredProfile small =
+      read_profile_csv(write_temp("small.csv", "rho,pressure_Pa\n0,1.7\n0.5,1.2\n0.7,0.4\n1,0\n"));
+  const auto& a = std::get<TabulatedShape>(big.profile.shape);
+  const auto& b = std::get<TabulatedShape>(small.profile.shape);
+  for (std::size_t k = 0; k < a.p.size(); ++k) {
+    EXPECT_NEAR(a.p[k], b.p[k], 1e-14 * std::abs(b.p[k]) + 1e-300) << k;
+    EXPECT_NEAR(a.slope[k], b.slope[k], 1e-13 * std::abs(b.slope[k]) + 1e-300) << k;
+  }
+  EXPECT_NEAR(big.reference_pressure_pa / small.reference_pressure_pa, 1e308, 1e293);
+}
+
+// A table is interpolated from the centre to the rim, never extended: a first knot past the
+// centre is an error naming it (rho[0], or the file's line and column), so that a table of the
+// outer ring alone is not read as flat inside without a word. Within 1e-9 of the centre is it.
+TEST(Profiles, TableThatStartsPastTheCentreIsRefused) {
+  try {
+    tabulated_profile({0.5, 1.0}, {1.0, 0.5});
+    ADD_FAILURE() << "a table from rho = 0.5 accepted";
+  } catch (const InvalidArgument& e) {
+    EXPECT_EQ(e.parameter(), "rho[0]");
+    EXPECT_NE(std::string(e.what()).find("rho[0] = 0.5: a tabulated profile must start at the "
+                                         "centre, rho = 0"),
+              std::string::npos)
+        << e.what();
+  }
+  const PressureProfile near = tabulated_profile({5e-10, 0.5, 1.0}, {1.0, 0.8, 0.5});
+  EXPECT_EQ(std::get<TabulatedShape>(near.shape).rho.front(), 0.0);
+  try {
+    read_profile_csv(write_temp("ring.csv", "# a ring\nrho,pressure_Pa\n0.5,2e5\n1,1e5\n"));
+    ADD_FAILURE() << "a file from rho = 0.5 accepted";
+  } catch (const ParseError& e) {
+    EXPECT_EQ(e.line(), 3);
+    EXPECT_NE(std::string(e.what()).find("column 'rho' (1): rho = 0.5: the first row must be the "
+                                         "centre, rho = 0"),
+              std::string::npos)
+        << e.what();
+  }
+  // A shape filled by hand is checked the same way when a patch uses it.
+  ContactPatch patch = seed_tire_patch();
+  TabulatedShape hand;
+  hand.rho = {0.5, 1.0};
+  hand.p = {1.0, 1.0};
+  hand.slope = {0.0, 0.0};
+  patch.profile.shape = hand;
+  EXPECT_THROW(validate(patch), InvalidArgument);
+}
+
+// Knots closer than kMinProfileKnotStep = 1e-9 (of the radius) are refused naming both (index
+// and rho): a step of 5e-324 at the centre squared to a zero step in t = rho^2 and gave
+// "slope = nan" naming no knot. 1e-9 apart is accepted, with finite slopes, at the centre and at
+// the rim; the reader names the line.
+TEST(Profiles, KnotsCloserThanTheStatedStepAreRefusedNamingThem) {
+  try {
+    tabulated_profile({0.0, 5e-324, 1.0}, {1.0, 1.0, 0.5});
+    ADD_FAILURE() << "a step of 5e-324 accepted";
+  } catch (const InvalidArgument& e) {
+    EXPECT_EQ(e.parameter(), "rho[1]");
+    EXPECT_NE(std::string(e.what()).find("knots 0 (rho = 0) and 1 are 5e-324 apart, closer than "
+                                         "1e-9"),
+              std::string::npos)
+        << e.what();
+  }
+  EXPECT_THROW(tabulated_profile({0.0, 0.5, 0.5 + 1e-10, 1.0}, {1, 1, 1, 1}), InvalidArgument);
+  for (const std::vector<double>& rho :
+       {std::vector<double>{0.0, 1e-9, 1.0}, std::vector<double>{0.0, 0.5, 1.0 - 1e-9, 1.0}}) {
+    std::vector<double> p(rho.size());
+    for (std::size_t k = 0; k < p.size(); ++k)
+      p[k] = 1.0 - 0.5 * rho[k] * rho[k] + 0.1 * static_cast<double>(k);
+    const PressureProfile t = tabulated_profile(rho, p);
+    for (double d : std::get<TabulatedShape>(t.shape).slope) EXPECT_TRUE(std::isfinite(d)) << d;
+    EXPECT_TRUE(std::isfinite(moment(t, 1)));
+  }
+  try {
+    read_profile_csv(write_temp("close.csv", "rho,pressure_Pa\n0,2e5\n5e-324,2e5\n1,1e5\n"));
+    ADD_FAILURE() << "a file with a step of 5e-324 accepted";
+  } catch (const ParseError& e) {
+    EXPECT_EQ(e.line(), 3);
+    EXPECT_NE(std::string(e.what()).find("closer than 1e-9"), std::string::npos) << e.what();
+  }
+  // Values too large for their step: the interpolant's slope overflows; refused naming the knots.
+  try {
+    tabulated_profile({0.0, 1e-9, 1.0}, {1e300, -1e300, 0.0});
+    ADD_FAILURE() << "an overflowing interpolant accepted";
+  } catch (const InvalidArgument& e) {
+    EXPECT_EQ(e.parameter(), "p[0], p[1]") << e.what();
+    EXPECT_NE(std::string(e.what()).find("overflows a double"), std::string::npos) << e.what();
+  }
 }
 
 // A smoothing fit (for noisy film data): a Chebyshev series in t = rho^2 by least squares.

@@ -116,9 +116,10 @@ def test_plugin_wrench_equals_library_at_a_frozen_state(variant, profile, stiffn
 def multi_pair_mjcf(profile: str = "uniform", kappa: float = 1.0, tolerance: str = "1e-6",
                     pairs: str = "disk0 floor; disk1 floor; ball block; disk2 floor",
                     law: str = "exact", second_instance: str = "") -> str:
-    """Three disks (R = 0.1 m) on a plane, a ball (r = 0.05 m) on a box (MuJoCo orders that
-    contact (ball, block): tire first) and a fourth disk that no pair names (condim 1: no
-    friction at all); one plugin instance for `pairs`, R = 0.1 m, f = 0.5."""
+    """Three disks (R = 0.1 m) on a plane, a ball (r = 0.1 m: a patch is no wider than its tire)
+    on a box (MuJoCo orders that contact (ball, block): tire first) and a fourth disk that no
+    pair names (condim 1: no friction at all); one plugin instance for `pairs`, R = 0.1 m,
+    f = 0.5."""
     tol = f'<config key="tolerance" value="{tolerance}"/>' if tolerance else ""
     disks = "".join(
         f'<body pos="{0.4 * i} 0 0.005"><freejoint/><geom name="disk{i}" type="cylinder" '
@@ -131,8 +132,8 @@ def multi_pair_mjcf(profile: str = "uniform", kappa: float = 1.0, tolerance: str
       </instance>{second_instance}</plugin></extension>
       <worldbody><geom name="floor" type="plane" size="5 5 .1" condim="1"/>
         <geom name="block" type="box" pos="3 0 0.1" size="0.3 0.3 0.1" condim="1"/>
-        <body pos="3 0 0.25"><freejoint/>
-          <geom name="ball" type="sphere" size="0.05" density="1000" condim="1"/></body>
+        <body pos="3 0 0.3"><freejoint/>
+          <geom name="ball" type="sphere" size="0.1" density="1000" condim="1"/></body>
         {disks}</worldbody></mujoco>"""
 
 
@@ -264,6 +265,126 @@ def test_plugin_rejects_bad_set_valued_configuration():
             law, law + '<config key="regularization" value="1e-3"/>')))
     with pytest.raises(Exception, match="kappa.*'-0.5'.*positive"):
         mujoco.MjData(mujoco.MjModel.from_xml_string(mc.disk_mjcf(disk, "exact", kappa=-0.5)))
+
+
+def disk_with(key: str, value: str, law: str = "exact") -> str:
+    """The disk of mc.disk_mjcf (R = 0.1 m, f = 0.5) with one configuration value replaced or
+    added (radius for stiffness, regularization with the fractional law)."""
+    xml = mc.disk_mjcf(mc.Disk(timestep=1e-3), law)
+    if key == "stiffness":
+        return xml.replace('<config key="radius" value="0.1"/>',
+                           f'<config key="stiffness" value="{value}"/>')
+    if f'key="{key}"' in xml:
+        start = xml.index(f'<config key="{key}" value="')
+        end = xml.index("/>", start) + 2
+        return xml[:start] + f'<config key="{key}" value="{value}"/>' + xml[end:]
+    return xml.replace("</instance>", f'<config key="{key}" value="{value}"/></instance>')
+
+
+# The numeric keys and their ranges (docs/mujoco.md, "Valid values"): a value outside is an
+# error naming the key, the value as written and the range, when the model is compiled (the
+# ranges of the doubles and of MuJoCo's own numbers) or when its data is made (those of the tire
+# geom: its bounding radius, 0.100125 m for the disk, and the weight it carries, 3.08 N).
+@pytest.mark.parametrize("key,value,law,message", [
+    ("radius", "1e308", "exact", r"'radius' = '1e308' is outside \[1e-15, 1e\+10\] m"),
+    ("radius", "1e-310", "exact", r"'radius' = '1e-310' is outside \[1e-15, 1e\+10\] m"),
+    ("radius", "0.5", "exact",
+     r"'radius' = '0.5' is outside \[1e-15, 0.100125\] m: .*bounding radius \(pair 'disk floor'\)"),
+    ("radius", "0.10013", "exact", r"'radius' = '0.10013' is outside \[1e-15, 0.100125\] m"),
+    ("stiffness", "1e-300", "exact", r"'stiffness' = '1e-300' is outside \[1e-45, 1e\+55\] N/m\^3"),
+    ("stiffness", "1e-5", "exact",
+     r"'stiffness' = '1e-5' is outside \[3\d\d\d\.\d*, .*\] N/m\^3: the patch \(W / k\)\^\(1/3\) "
+     r"under the weight W = 3\.08\d* N"),
+    ("stiffness", "1e50", "exact", r"'stiffness' = '1e50' is outside \[3\d\d\d"),
+    ("kappa", "1e300", "exact", r"'kappa' = '1e300' is outside \[0\.001, 1000\]"),
+    ("kappa", "1e-300", "set-valued", r"'kappa' = '1e-300' is outside \[0\.001, 1000\]"),
+    ("friction", "1e300", "fractional", r"'friction' = '1e300' is outside \[1e-06, 100\]"),
+    ("friction", "1e-310", "exact", r"'friction' = '1e-310' is outside \[1e-06, 100\]"),
+    ("regularization", "1e300", "fractional",
+     r"'regularization' = '1e300' is outside \[1e-15, 1e\+10\] m/s"),
+    ("regularization", "1e-310", "fractional",
+     r"'regularization' = '1e-310' is outside \[1e-15, 1e\+10\] m/s"),
+    ("radius", "1e400", "exact", r"'radius' = '1e400' is not a positive number"),
+    ("friction", "0.5 ", "exact", r"'friction' = '0.5 ' is not a positive number"),
+])
+def test_numeric_keys_outside_their_range_are_errors_naming_key_value_and_range(key, value, law,
+                                                                                 message):
+    with pytest.raises(Exception, match=message):
+        mujoco.MjData(mujoco.MjModel.from_xml_string(disk_with(key, value, law)))
+
+
+@pytest.mark.parametrize("key,value,law", [
+    ("radius", "0.100125", "exact"), ("radius", "1e-15", "exact"), ("kappa", "1e3", "set-valued"),
+    ("kappa", "1e-3", "exact"), ("kappa", "1e-3", "set-valued"), ("friction", "100", "set-valued"),
+    ("friction", "10", "exact"), ("friction", "1e-6", "fractional"),
+    ("regularization", "1e-15", "fractional"), ("regularization", "1e10", "fractional"),
+    ("stiffness", "3070.38", "exact"), ("stiffness", "3e45", "fractional"),
+])
+def test_values_at_the_ends_of_their_ranges_step_to_finite_states(key, value, law):
+    """At the ends of each range (as the messages show them) the law builds (the exact law also
+    at kappa = 1e3, test below) and a sliding, spinning disk steps 200 times to a finite state,
+    without MuJoCo's reset (|qacc| below mjMAXVAL). The explicit laws (fractional, exact) are
+    run at f max(1, kappa) <= 10: at dt = 1e-3 from about 50 on (f = 100, or kappa = 1e3 with
+    f = 0.5) they blew this disk up, as a disk with f above R / h = 20 would tip over anyway;
+    the set-valued law stayed put at f = 100 and kappa = 1e3."""
+    m = mujoco.MjModel.from_xml_string(disk_with(key, value, law))
+    d = mujoco.MjData(m)
+    for _ in range(20):
+        mujoco.mj_step(m, d)
+    d.qvel[0], d.qvel[5] = 0.5, 5.0
+    for _ in range(200):
+        mujoco.mj_step(m, d)
+    assert np.isfinite(d.qpos).all() and np.isfinite(d.qvel).all()
+    assert np.isfinite(d.plugin_state).all()
+    assert d.warning[int(mujoco.mjtWarning.mjWARN_BADQACC)].number == 0
+
+
+def test_the_exact_law_builds_across_the_range_of_kappa_and_names_kappa_when_it_cannot():
+    """kappa = 1e3 and 1e-3 reach the default tolerance 1e-8; the law's error relative to f N
+    grows with kappa (1.6e-10 at 1e3), so a tolerance of 1e-11 there is an error naming kappa."""
+    for kappa in ("1e3", "1e-3"):
+        mujoco.MjData(mujoco.MjModel.from_xml_string(disk_with("kappa", kappa)))
+    xml = disk_with("kappa", "1e3").replace(
+        "</instance>", '<config key="tolerance" value="1e-11"/></instance>')
+    with pytest.raises(Exception, match=r"'tolerance' = 1e-11: the exact law reached .* grows "
+                                        r"with kappa = 1000"):
+        mujoco.MjData(mujoco.MjModel.from_xml_string(xml))
+
+
+def test_a_patch_from_the_stiffness_stays_within_the_tire():
+    """R = (N / k)^(1/3) is kept within [1e-15 m, the tire geom's bounding radius]: at a normal
+    force that would make it wider (an impact) it is the bounding radius, and the wrench is the
+    library's for that patch; at a tiny force it is (N / k)^(1/3) itself."""
+    disk = mc.Disk(timestep=1e-3)
+    m, d = settled_disk("exact", disk, stiffness=3100.0)  # k_min = W / widest^3 = 3070.38
+    widest = float(m.geom_rbound[mujoco.mj_name2id(m, mujoco.mjtObj.mjOBJ_GEOM, "disk")])
+    d.qvel[:] = [0.3, 0.0, 0.0, 0.0, 0.0, 2.0]
+    for N, R in ((1e4, widest), (1e-6, (1e-6 / 3100.0) ** (1 / 3))):
+        d.plugin_state[0] = N
+        mujoco.mj_forward(m, d)
+        s = d.plugin_state
+        assert s[2] == pytest.approx(R, rel=1e-12)
+        patch = contensou.ContactPatch(radius_m=R, normal_load=N, friction=disk.friction)
+        want = contensou.exact_resultants(patch, *s[3:6], tolerance=1e-12).resultants
+        assert s[6:9] == pytest.approx(want, rel=1e-6, abs=1e-7 * disk.friction * N)
+
+
+def test_an_empty_value_is_refused_before_compiling():
+    """MuJoCo compiles value="" as a key left out (the plugin sees the default); the package's
+    model_from_xml (check_config) refuses it naming the instance and the key, and gives the same
+    model as MuJoCo's compiler otherwise."""
+    import contensou.mujoco as cm
+
+    for key in ("law", "profile", "surface", "kappa"):
+        xml = disk_with(key, "") if key != "surface" else disk_with("surface", "", "set-valued")
+        with pytest.raises(ValueError, match=f"instance 'patch': config '{key}' is empty: an "
+                                             "empty value is not a choice"):
+            cm.model_from_xml(xml)
+        mujoco.MjModel.from_xml_string(xml)  # MuJoCo's own compiler cannot tell: the default
+    good = mc.disk_mjcf(mc.Disk(timestep=1e-3), "exact")
+    a, b = cm.model_from_xml(good), mujoco.MjModel.from_xml_string(good)
+    assert bytes(a.plugin_attr) == bytes(b.plugin_attr) and a.nplugin == b.nplugin == 1
+    assert np.array_equal(a.geom_rbound, b.geom_rbound)
 
 
 @pytest.mark.parametrize("variant", ["fractional", "exact", "set-valued", "set-valued-ellipsoid"])

@@ -65,11 +65,20 @@ struct PressureProfile {
 // the outer rule's interval counts (int) would overflow.
 inline constexpr std::size_t kMaxProfilePoints = 1'000'000;
 
+// The closest two knots of a tabulated profile may be in rho (a fraction of the patch radius):
+// the monotone cubic lives in t = rho^2, and knots closer than this would give steps in t that
+// a double resolves to no better than 1e-7 of themselves (near the rim) or not at all (near
+// the centre: rho = 5e-324 squares to 0), and slopes that are noise or NaN.
+inline constexpr double kMinProfileKnotStep = 1e-9;
+
 PressureProfile uniform_profile();
 PressureProfile hertz_profile();
 PressureProfile cosine_series_profile(double w, std::vector<double> a);
-// Validates rho (strictly increasing, within [0, 1], ending at 1, 2 to kMaxProfilePoints
-// points) and p (finite); a first rho > 0 is extended flat to the centre.
+// Validates rho (strictly increasing, from the centre, 0, to the rim, 1, knots at least
+// kMinProfileKnotStep apart, 2 to kMaxProfilePoints points; a first rho within 1e-9 of 0 is
+// the centre and a last within 1e-9 of 1 the rim) and p (finite, with an interpolant that
+// stays finite). A table that starts past the centre is refused, not extended: add the knot at
+// rho = 0. Errors name the knot (rho[k], p[k]) and its value.
 PressureProfile tabulated_profile(std::vector<double> rho, std::vector<double> p);
 
 // A least-squares Chebyshev series in t = rho^2 with `terms` terms through tabulated values
