@@ -1,4 +1,5 @@
-// contensou-fmu: writes Functional Mock-up Units (FMI 2.0) of contensou (docs/fmu.md).
+// contensou-fmu: writes Functional Mock-up Units (FMI 2.0, or 3.0 with --fmi 3) of contensou
+// (docs/fmu.md).
 //   contensou-fmu law --out law.fmu --radius 0.087 --pressure 2.1e5 --profile seed-tire
 //                     --friction 0.3 [--kx 0.14] [--law exact|fractional] [--tolerance 1e-8]
 //   contensou-fmu gear --out gear.fmu
@@ -27,6 +28,7 @@ struct LawArguments {
   std::string out, profile = "uniform", law = "exact", model_name = "contensou_law";
   std::optional<double> radius, load, pressure, friction;
   std::vector<double> slip_speed;
+  int fmi = 2;
   double kappa = 1.0, kx = 0.0, ky = 0.0, tolerance = 1e-8;
   bool clip_negative = false, keep_negative = false;
 };
@@ -143,6 +145,9 @@ void add_law_options(CLI::App& law, LawArguments& a) {
       ->capture_default_str();
   law.add_option("--model-name", a.model_name, "modelName in modelDescription.xml")
       ->capture_default_str();
+  law.add_option("--fmi", a.fmi, "the standard: 2 (FMI 2.0) or 3 (FMI 3.0)")
+      ->check(CLI::IsMember({2, 3}))
+      ->capture_default_str();
 }
 
 void print(const fmu::FmuExport& e, const char* what) {
@@ -162,10 +167,14 @@ int main(int argc, char** argv) {
                                      "Fx, Fy, Mz out");
   add_law_options(*law, a);
   std::string gear_out;
+  int gear_fmi = 2;
   CLI::App* gear = app.add_subcommand("gear",
                                       "the shimmy demo's landing gear (Co-Simulation, "
                                       "CVODE inside)");
   gear->add_option("--out,-o", gear_out, "the .fmu to write")->required();
+  gear->add_option("--fmi", gear_fmi, "the standard: 2 (FMI 2.0) or 3 (FMI 3.0)")
+      ->check(CLI::IsMember({2, 3}))
+      ->capture_default_str();
   contensou::app::add_conventions(app, "contensou-fmu");
   contensou::app::prepare_output();
   if (const std::optional<int> status = contensou::app::parse(app, argc, argv)) return *status;
@@ -176,6 +185,7 @@ int main(int argc, char** argv) {
       o.law = a.law == "exact" ? fmu::FmuLaw::exact : fmu::FmuLaw::fractional;
       o.tolerance = a.tolerance;
       o.model_name = a.model_name;
+      o.fmi_version = a.fmi;
       o.profile_text = a.profile.size() > 4 && a.profile.substr(a.profile.size() - 4) == ".csv"
                            ? describe(patch.profile) + " from " + a.profile
                            : "";
@@ -188,7 +198,7 @@ int main(int argc, char** argv) {
                     e.table_bytes, e.error_bound);
       std::printf("\n");
     } else if (gear->parsed()) {
-      print(fmu::export_gear_fmu(gear_out), "gear FMU");
+      print(fmu::export_gear_fmu(gear_out, gear_fmi), "gear FMU");
     }
     return contensou::app::finish_output(contensou::app::kExitSuccess);
   } catch (const std::exception& e) {

@@ -1,5 +1,6 @@
-"""The friction law of a contact patch and the landing gear as Functional Mock-up Units (FMI 2.0)
-for Modelica tools, Simulink's FMU Import block, FMPy and any other FMI importer (docs/fmu.md).
+"""The friction law of a contact patch and the landing gear as Functional Mock-up Units (FMI 2.0
+or 3.0) for Modelica tools, Simulink's FMU Import block, FMPy and any other FMI importer
+(docs/fmu.md).
 
 ``export(patch, path)`` writes the law's FMU (inputs vx, vy, omega, N; outputs Fx, Fy, Mz; Model
 Exchange and Co-Simulation, directional derivatives), ``export_gear(path)`` the shimmy demo's
@@ -92,11 +93,13 @@ def export(
     law: str = "exact",
     tolerance: float = 1e-8,
     model_name: str = "contensou_law",
+    fmi_version: int = 2,
 ) -> Path:
     """Writes the law FMU of ``patch`` to ``path`` (.fmu) and returns the path.
 
     ``law``: "exact" (the exact law's tables, built here to ``tolerance`` relative to f N and
-    f N R, shipped in resources/law.txt) or "fractional". Raises ValueError with contensou-fmu's
+    f N R, shipped in resources/law.txt) or "fractional"; ``fmi_version`` 2 (FMI 2.0) or 3
+    (FMI 3.0). Raises ValueError with contensou-fmu's
     message for a bad patch or option, FileNotFoundError when contensou-fmu is not found.
     """
     patch.validate()
@@ -111,15 +114,15 @@ def export(
             arguments += ["--friction", repr(patch.friction)]
         arguments += ["--kappa", repr(patch.kappa), "--kx", repr(patch.profile.kx)]
         arguments += ["--ky", repr(patch.profile.ky), "--law", law, "--tolerance", repr(tolerance)]
-        arguments += ["--model-name", model_name]
+        arguments += ["--model-name", model_name, "--fmi", str(fmi_version)]
         _run(arguments)
     return Path(path)
 
 
-def export_gear(path: PathLike) -> Path:
+def export_gear(path: PathLike, *, fmi_version: int = 2) -> Path:
     """Writes the landing-gear FMU (Co-Simulation; parameters the shimmy demo's configuration
-    keys) to ``path`` and returns the path."""
-    _run(["gear", "--out", os.fspath(path)])
+    keys; FMI 2.0, or 3.0 with ``fmi_version=3``) to ``path`` and returns the path."""
+    _run(["gear", "--out", os.fspath(path), "--fmi", str(fmi_version)])
     return Path(path)
 
 

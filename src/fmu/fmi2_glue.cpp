@@ -172,6 +172,16 @@ std::unique_ptr<Instance> make_instance(fmi2String name, fmi2Type type, fmi2Stri
   return in;
 }
 
+// The law has no continuous states: nx and ni must be 0.
+fmi2Status no_states(fmi2Component c, const char* what, size_t n) {
+  return guarded(c, what, kInitialized, [&](Instance& in) {
+    if (in.cosimulation)
+      throw InvalidArgument(what, "called", "is Model Exchange: this is a Co-Simulation instance");
+    if (n != 0) throw InvalidArgument("nx", std::to_string(n), "must be 0: this FMU has no states");
+    return fmi2OK;
+  });
+}
+
 }  // namespace
 }  // namespace contensou::fmu
 
@@ -461,30 +471,20 @@ fmi2Status fmi2SetTime(fmi2Component c, fmi2Real time) {
                      });
 }
 
-// The law has no continuous states: nx and ni must be 0.
-fmi2Status no_states(fmi2Component c, const char* what, size_t n) {
-  return cf::guarded(c, what, cf::kInitialized, [&](Instance& in) {
-    if (in.cosimulation)
-      throw InvalidArgument(what, "called", "is Model Exchange: this is a Co-Simulation instance");
-    if (n != 0) throw InvalidArgument("nx", std::to_string(n), "must be 0: this FMU has no states");
-    return fmi2OK;
-  });
-}
-
 fmi2Status fmi2SetContinuousStates(fmi2Component c, const fmi2Real[], size_t nx) {
-  return no_states(c, "fmi2SetContinuousStates", nx);
+  return cf::no_states(c, "fmi2SetContinuousStates", nx);
 }
 fmi2Status fmi2GetDerivatives(fmi2Component c, fmi2Real[], size_t nx) {
-  return no_states(c, "fmi2GetDerivatives", nx);
+  return cf::no_states(c, "fmi2GetDerivatives", nx);
 }
 fmi2Status fmi2GetEventIndicators(fmi2Component c, fmi2Real[], size_t ni) {
-  return no_states(c, "fmi2GetEventIndicators", ni);
+  return cf::no_states(c, "fmi2GetEventIndicators", ni);
 }
 fmi2Status fmi2GetContinuousStates(fmi2Component c, fmi2Real[], size_t nx) {
-  return no_states(c, "fmi2GetContinuousStates", nx);
+  return cf::no_states(c, "fmi2GetContinuousStates", nx);
 }
 fmi2Status fmi2GetNominalsOfContinuousStates(fmi2Component c, fmi2Real[], size_t nx) {
-  return no_states(c, "fmi2GetNominalsOfContinuousStates", nx);
+  return cf::no_states(c, "fmi2GetNominalsOfContinuousStates", nx);
 }
 
 // ---- Co-Simulation ----

@@ -1,5 +1,5 @@
-// Functional Mock-up Units (FMI 2.0) of contensou, for Modelica, Simulink, FMPy and any other
-// FMI importer (docs/fmu.md):
+// Functional Mock-up Units (FMI 2.0; the law also FMI 3.0) of contensou, for Modelica, Simulink,
+// FMPy and any other FMI importer (docs/fmu.md):
 //   - the friction law of a contact patch: inputs vx, vy, omega, N; outputs Fx, Fy, Mz; Model
 //     Exchange and Co-Simulation in one archive, directional derivatives from the law's
 //     Jacobian, the exact law's tables built here and shipped in resources/law.txt;
@@ -20,6 +20,7 @@ enum class FmuLaw { exact, fractional };
 
 struct LawFmuOptions {
   FmuLaw law = FmuLaw::exact;
+  int fmi_version = 2;      // 2 (FMI 2.0) or 3 (FMI 3.0: binaries/x86_64-linux)
   double tolerance = 1e-8;  // the exact law's, relative to f N and f N R (ExactLawOptions)
   unsigned threads = 0;     // of the exact law's build (0: one a core)
   std::string model_name = "contensou_law";  // modelName in modelDescription.xml
@@ -41,7 +42,7 @@ struct FmuExport {
 FmuExport export_law_fmu(const ContactPatch& patch, const std::string& path,
                          const LawFmuOptions& options = {});
 
-// Writes the gear FMU to `path`.
-FmuExport export_gear_fmu(const std::string& path);
+// Writes the gear FMU to `path` (FMI 2.0 or 3.0, Co-Simulation).
+FmuExport export_gear_fmu(const std::string& path, int fmi_version = 2);
 
 }  // namespace contensou::fmu
