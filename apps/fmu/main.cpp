@@ -81,7 +81,24 @@ PressureProfile profile_of(const std::string& spec, std::optional<double>& file_
                         "pressure_Pa)");
 }
 
+// Every number given on the command line finite, named by its option (the library's own checks
+// then name the patch's field).
+void require_finite_options(const LawArguments& a) {
+  const std::pair<const char*, std::optional<double>> given[] = {{"--radius", a.radius},
+                                                                 {"--load", a.load},
+                                                                 {"--pressure", a.pressure},
+                                                                 {"--friction", a.friction},
+                                                                 {"--kappa", a.kappa},
+                                                                 {"--kx", a.kx},
+                                                                 {"--ky", a.ky},
+                                                                 {"--tolerance", a.tolerance}};
+  for (const auto& [name, value] : given)
+    if (value) require_finite(name, *value);
+  for (double v : a.slip_speed) require_finite("--slip-speed-friction", v);
+}
+
 ContactPatch patch_of(const LawArguments& a) {
+  require_finite_options(a);
   std::optional<double> file_pressure;
   PressureProfile profile = profile_of(a.profile, file_pressure);
   profile.kx = a.kx;
