@@ -146,18 +146,28 @@ void require_array(const T* p, size_t n, const char* what) {
   if (n > 0 && !p) throw InvalidArgument(what, "NULL", "must point to the values");
 }
 
-std::unique_ptr<Instance> make_instance(fmi2String name, fmi2Type type, fmi2String guid,
+// An enum argument's value as the host passed it, read as bytes: a host may pass any int, and a
+// typed load of a value outside the enum's would be undefined.
+template <class Enum>
+int raw(const Enum& e) {
+  static_assert(sizeof(Enum) == sizeof(int));
+  int v = 0;
+  std::memcpy(&v, &e, sizeof v);
+  return v;
+}
+
+std::unique_ptr<Instance> make_instance(fmi2String name, int type, fmi2String guid,
                                         fmi2String location, const fmi2CallbackFunctions* functions,
                                         fmi2Boolean logging) {
   auto in = std::make_unique<Instance>();
   in->name = name ? name : "";
   in->callbacks = *functions;
-  in->cosimulation = type == fmi2CoSimulation;
+  in->cosimulation = type == static_cast<int>(fmi2CoSimulation);
   in->logging = logging == fmi2True;
   try {
     if (!name || !*name) throw InvalidArgument("instanceName", "empty", "must be a name");
-    if (type != fmi2ModelExchange && type != fmi2CoSimulation)
-      throw InvalidArgument("fmuType", std::to_string(int(type)), "must be 0 or 1");
+    if (type != static_cast<int>(fmi2ModelExchange) && type != static_cast<int>(fmi2CoSimulation))
+      throw InvalidArgument("fmuType", std::to_string(type), "must be 0 or 1");
     if (!guid) throw InvalidArgument("fmuGUID", "NULL", "must be the modelDescription's guid");
     in->guid = guid;
     in->resources = resource_path(location);
@@ -212,7 +222,7 @@ fmi2Component fmi2Instantiate(fmi2String name, fmi2Type type, fmi2String guid, f
                               fmi2Boolean logging) {
   if (!functions) return nullptr;  // no logger to say why
   try {
-    return cf::make_instance(name, type, guid, location, functions, logging).release();
+    return cf::make_instance(name, cf::raw(type), guid, location, functions, logging).release();
   } catch (...) {  // std::bad_alloc making the instance itself
     return nullptr;
   }
@@ -532,8 +542,8 @@ fmi2Status fmi2GetStatus(fmi2Component c, const fmi2StatusKind, fmi2Status* valu
 fmi2Status fmi2GetRealStatus(fmi2Component c, const fmi2StatusKind kind, fmi2Real* value) {
   return cf::guarded(c, "fmi2GetRealStatus", cf::kInitialized, [&](Instance& in) {
     if (!value) throw InvalidArgument("value", "NULL", "must be a pointer");
-    if (kind != fmi2LastSuccessfulTime)
-      throw InvalidArgument("fmi2StatusKind", std::to_string(int(kind)),
+    if (cf::raw(kind) != static_cast<int>(fmi2LastSuccessfulTime))
+      throw InvalidArgument("fmi2StatusKind", std::to_string(cf::raw(kind)),
                             "only fmi2LastSuccessfulTime is a Real status");
     *value = in.time;
     return fmi2OK;
@@ -545,8 +555,8 @@ fmi2Status fmi2GetIntegerStatus(fmi2Component c, const fmi2StatusKind, fmi2Integ
 fmi2Status fmi2GetBooleanStatus(fmi2Component c, const fmi2StatusKind kind, fmi2Boolean* value) {
   return cf::guarded(c, "fmi2GetBooleanStatus", cf::kInitialized, [&](Instance&) {
     if (!value) throw InvalidArgument("value", "NULL", "must be a pointer");
-    if (kind != fmi2Terminated)
-      throw InvalidArgument("fmi2StatusKind", std::to_string(int(kind)),
+    if (cf::raw(kind) != static_cast<int>(fmi2Terminated))
+      throw InvalidArgument("fmi2StatusKind", std::to_string(cf::raw(kind)),
                             "only fmi2Terminated is a Boolean status");
     *value = fmi2False;
     return fmi2OK;
