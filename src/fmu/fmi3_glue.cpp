@@ -189,6 +189,7 @@ fmi3Instance fmi3InstantiateCoSimulation(fmi3String name, fmi3String token, fmi3
                                          fmi3InstanceEnvironment environment,
                                          fmi3LogMessageCallback logger,
                                          fmi3IntermediateUpdateCallback) {
+  // #lizard forgives: the eleven parameters are the FMI 3.0 standard's signature
   if (event_mode) {  // hasEventMode is false
     if (logger)
       logger(environment, fmi3Error, "logStatusError",
@@ -203,6 +204,7 @@ fmi3Instance fmi3InstantiateScheduledExecution(fmi3String, fmi3String, fmi3Strin
                                                fmi3LogMessageCallback logger,
                                                fmi3ClockUpdateCallback, fmi3LockPreemptionCallback,
                                                fmi3UnlockPreemptionCallback) {
+  // #lizard forgives: the ten parameters are the FMI 3.0 standard's signature
   if (logger)
     logger(environment, fmi3Error, "logStatusError",
            "fmi3InstantiateScheduledExecution: not provided by this FMU");
