@@ -7,7 +7,8 @@
 #     uses the one of the installed `mujoco` package);
 #  2. in a fresh virtual environment with LD_LIBRARY_PATH empty: the wheel with mujoco 4.0.0;
 #     `ldd` on the extension and the plugin finds nothing outside the wheel and `mujoco` but the
-#     C/C++ runtime, and the README's Python and MuJoCo quick starts run on the copies only;
+#     C/C++ runtime, and the README's Python and MuJoCo quick starts run on the copies only; the
+#     apps run as the wheel's commands, and contensou.fmu.export writes an FMU with them;
 #  3. friction only, installed with pip from a read-only copy of the tree: the bindings against
 #     build/prefix with Ceres and SUNDIALS hidden (as on a machine with Eigen alone); `import
 #     contensou` and the friction functions work, identification and gear raise ImportError
@@ -122,6 +123,24 @@ for name in ("libsundials_cvode", "libglog", "libcholmod"):
 mujocos = {m for m in after if Path(m).name.startswith("libmujoco.so")}
 assert mujocos == {str((site / "mujoco").resolve() / f"libmujoco.so.{contensou.mujoco.built_against()}")}, mujocos
 print(f"quick starts ran with {len(bundled)} bundled libraries and mujoco's libmujoco")
+
+# The apps as commands of the wheel (its scripts; auditwheel gave them the bundled libraries),
+# and the FMU exporter of the Python package running the wheel's contensou-fmu.
+bindir = Path(sys.executable).parent
+for app in ("contensou-identify", "contensou-shimmy", "contensou-engine-coefficients", "contensou-fmu"):
+    out = subprocess.run([str(bindir / app), "--version"], check=True, capture_output=True,
+                         text=True).stdout
+    assert out.startswith(app + " "), (app, out)
+import tempfile
+
+import contensou.fmu
+
+assert contensou.fmu.command() == bindir / "contensou-fmu", contensou.fmu.command()
+with tempfile.TemporaryDirectory() as folder:
+    fmu = contensou.fmu.export(contensou.seed_tire_patch(), Path(folder) / "law.fmu")
+    assert fmu.stat().st_size > 1_000_000, fmu.stat()
+print("apps: contensou-identify, -shimmy, -engine-coefficients, -fmu run as commands; "
+      "contensou.fmu.export wrote an FMU")
 
 # The full package's numbers, which the friction-only build below must repeat.
 import json

@@ -15,6 +15,7 @@
 #include <vector>
 
 #include "contensou/friction/error.hpp"
+#include "contensou/gear/gear_parameters.hpp"
 
 namespace contensou {
 
@@ -429,7 +430,124 @@ void integrate(Cvode& cv, Problem& problem, const SolverOptions& options, Record
   add_counters(cv.mem, run);
 }
 
+// The stepper's integration from its time to tout: CVODE's interpolant at tout, or the events
+// on the way (the same handling as integrate()).
+struct Stepping {
+  GearModel model;
+  SolverOptions options;
+  Problem problem;
+  Cvode cv;
+  Progress progress;
+  LandingRun run;  // events and counters
+  double t = 0.0;
+  GearState x = GearState::Zero();
+};
+
+void restart(Stepping& s) {
+  from_state(s.problem, s.x, s.cv.y);
+  check(CVodeReInit(s.cv.mem, s.t, s.cv.y), "CVodeReInit", s.t);
+  s.progress = Progress{};
+  s.progress.reached = s.t;
+}
+
+void advance(Stepping& s, double tout) {
+  while (s.t < tout) {
+    // An event within rounding of tout: its state stands for tout's (as integrate() records it).
+    if (tout - s.t <= 1e-12 * std::max(1.0, std::abs(tout))) {
+      s.t = tout;
+      return;
+    }
+    step_to(s.cv, tout, s.model, s.options, s.progress);
+    Progress& p = s.progress;
+    if (!p.root || tout < p.root_t) {
+      check(CVodeGetDky(s.cv.mem, tout, 0, s.cv.out), "CVodeGetDky", tout);
+      s.x = to_state(s.problem, s.cv.out);
+      s.t = tout;
+      p.steps_since_output = 0;
+      return;
+    }
+    p.root = false;
+    std::array<int, kRoots> found{};
+    check(CVodeGetRootInfo(s.cv.mem, found.data()), "CVodeGetRootInfo", p.root_t);
+    s.x = to_state(s.problem, s.cv.y);
+    s.t = apply_events(s.problem, found, p.root_t, s.x, s.run);
+    add_counters(s.cv.mem, s.run);
+    restart(s);
+  }
+}
+
 }  // namespace
+
+struct LandingStepper::Impl : Stepping {};
+
+LandingStepper::LandingStepper(const GearModel& model, const SolverOptions& options,
+                               const LandingInputs& inputs)
+    : impl_(std::make_unique<Impl>()) {
+  Stepping& s = *impl_;
+  s.model = model;
+  s.model.config.scenario.braking = false;  // the brake is the input's
+  s.options = options;
+  validate(s.model.config);
+  require_positive("solver.relative_tolerance", options.relative_tolerance);
+  if (options.max_steps < 1)
+    throw InvalidArgument("solver.max_steps", std::to_string(options.max_steps), "must be >= 1");
+  s.problem = Problem{&s.model, initial_mode(s.model), active_states(s.model)};
+  s.x = initial_state(s.model);
+  start_cvode(s.cv, s.problem, s.x, options);
+  set_inputs(inputs);
+}
+
+LandingStepper::~LandingStepper() = default;
+
+void LandingStepper::set_inputs(const LandingInputs& inputs) {
+  Stepping& s = *impl_;
+  LandingScenario& scenario = s.model.config.scenario;
+  if (inputs.forward_speed_mps == scenario.forward_speed_mps &&
+      inputs.brake_torque_nm == scenario.brake_max_torque_nm &&
+      s.problem.mode.brake_command == (inputs.brake_torque_nm > 0.0))
+    return;
+  GearConfig trial = s.model.config;
+  trial.scenario.forward_speed_mps = inputs.forward_speed_mps;
+  check_gear_parameter(*find_gear_parameter("scenario.forward_speed_mps"), trial);
+  require_finite("brake_torque_nm", inputs.brake_torque_nm);
+  require_non_negative("brake_torque_nm", inputs.brake_torque_nm);
+  scenario.forward_speed_mps = inputs.forward_speed_mps;
+  scenario.brake_max_torque_nm = inputs.brake_torque_nm;
+  const bool brake = inputs.brake_torque_nm > 0.0;
+  if (brake != s.problem.mode.brake_command)
+    s.run.events.push_back({s.t, brake ? "brake on" : "brake off"});
+  s.problem.mode.brake_command = brake;
+  restart(s);  // the right-hand side jumps: CVODE starts afresh from the state at time()
+}
+
+void LandingStepper::advance_to(double t) {
+  require_finite("t", t);
+  if (!(t > impl_->t))
+    throw InvalidArgument("t", format_value(t),
+                          "must be after the stepper's time " + format_value(impl_->t) + " s");
+  advance(*impl_, t);
+}
+
+double LandingStepper::time() const {
+  return impl_->t;
+}
+const GearState& LandingStepper::state() const {
+  return impl_->x;
+}
+const GearMode& LandingStepper::mode() const {
+  return impl_->problem.mode;
+}
+const GearModel& LandingStepper::model() const {
+  return impl_->model;
+}
+const std::vector<LandingEvent>& LandingStepper::events() const {
+  return impl_->run.events;
+}
+
+LandingSample LandingStepper::sample() const {
+  const Stepping& s = *impl_;
+  return {s.t, s.x, contact_state(s.model, s.problem.mode, s.t, s.x), s.problem.mode.rolling};
+}
 
 LandingRun simulate_landing(const GearModel& model, const SolverOptions& options,
                             const ShimmyCriterion& criterion) {

@@ -3,7 +3,8 @@
 (tests/python/doc_blocks.py says how), as a user would from the repository root: in a fresh
 folder holding `data/` (the repository's) and `build/apps/` (the apps under test), with
 `bash -eu -o pipefail`. A block that calls anything else fails here, so it must be a fragment.
-Usage: doc_shell_blocks.py SOURCE_DIR APP...  (contensou-identify, -shimmy, -engine-coefficients)
+Usage: doc_shell_blocks.py SOURCE_DIR APP...  (contensou-identify, -shimmy, -engine-coefficients,
+-fmu)
 """
 
 from __future__ import annotations

@@ -4,6 +4,7 @@
 // renewed sliding (rolling -> sliding), brake on, brake off (docs/shimmy.md).
 #pragma once
 
+#include <memory>
 #include <optional>
 #include <string>
 #include <vector>
@@ -92,5 +93,45 @@ std::pair<double, double> analysis_window(const LandingScenario& scenario);
 // the integrator gives up.
 LandingRun simulate_landing(const GearModel& model, const SolverOptions& options = {},
                             const ShimmyCriterion& criterion = {});
+
+// The inputs of a landing driven step by step (LandingStepper): the forward speed V [m/s] and
+// the brake torque command [N m], the anti-skid's T_max (landing_gear.hpp, LandingScenario).
+struct LandingInputs {
+  double forward_speed_mps = 70.0;
+  double brake_torque_nm = 0.0;  // 0: brake off
+};
+
+// A landing integrated piecewise by a host that drives it (the gear's Co-Simulation FMU): the
+// same CVODE set-up, events, mode switches and interpolated outputs as simulate_landing, with the
+// forward speed and the brake command as inputs held over each step instead of the scenario's
+// constant speed and brake events (scenario.braking, brake_on_s, brake_off_s and
+// brake_max_torque_nm are not used; the brake acts while the command is > 0, through the
+// scenario's anti-skid). A change of the inputs restarts the integrator where it stands.
+class LandingStepper {
+ public:
+  // Throws InvalidArgument for a bad configuration, solver option or input.
+  LandingStepper(const GearModel& model, const SolverOptions& options, const LandingInputs& inputs);
+  ~LandingStepper();
+  LandingStepper(const LandingStepper&) = delete;
+  LandingStepper& operator=(const LandingStepper&) = delete;
+
+  // Throws InvalidArgument for a speed outside scenario.forward_speed_mps's range or a negative
+  // or non-finite torque.
+  void set_inputs(const LandingInputs& inputs);
+  // Integrates from time() to t > time(), through the events on the way. Throws as
+  // simulate_landing does when the integrator gives up.
+  void advance_to(double t);
+
+  double time() const;
+  const GearState& state() const;
+  const GearMode& mode() const;
+  LandingSample sample() const;    // time, state, contact and mode at time()
+  const GearModel& model() const;  // with the current inputs
+  const std::vector<LandingEvent>& events() const;
+
+ private:
+  struct Impl;
+  std::unique_ptr<Impl> impl_;
+};
 
 }  // namespace contensou
