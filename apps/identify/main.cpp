@@ -336,8 +336,8 @@ void add_fit_options(CLI::App& app, FitArgs& a, FitOptionHandles& h) {
   app.add_option("data", a.data_path,
                  "measured diagrams (CSV: vx_mps, vy_mps, omega_radps, Fx_N, ...)");
   h.radius = app.add_option(opt("radius"), r.radius_m, key_help("radius"));
-  auto* load = app.add_option(opt("normal_load"), r.normal_load_n, key_help("normal_load"));
-  app.add_option(opt("profile"), r.profile, key_help("profile"))->excludes(load);
+  app.add_option(opt("normal_load"), r.normal_load_n, key_help("normal_load"));
+  app.add_option(opt("profile"), r.profile, key_help("profile"));
   app.add_option(opt("pressure"), r.pressure_pa, key_help("pressure"));
   app.add_option("--json", a.json_path, "write the report as JSON (whole or not at all)");
   app.add_option("--plots", a.plots_dir, "write pictures (PNG via gnuplot) and their data here");

@@ -6,6 +6,8 @@
 #include <limits>
 #include <tuple>
 
+#include "contensou/identification/effect_catalogue.hpp"
+#include "contensou/identification/residual_trace.hpp"
 #include "contensou/identification/statistics.hpp"
 
 namespace contensou {
@@ -15,46 +17,101 @@ constexpr int K = kModelParameters;
 constexpr std::size_t kMaxFitted = 4;  // candidates fitted per step at most
 
 struct Candidate {
-  std::string effect;
+  Candidate(Effect e, std::string d, std::vector<int> p, int s, bool scan = false, int sl = -1,
+            std::optional<Covariate> c = std::nullopt)
+      : effect(e),
+        detail(std::move(d)),
+        parameters(std::move(p)),
+        scored(s),
+        scan_speed(scan),
+        slot(sl),
+        covariate(std::move(c)) {}
+  Effect effect;
   std::string detail;
   std::vector<int> parameters;  // made free when the effect is fitted
-  int scored = -1;              // the parameter whose score ranks the candidate
+  int scored = -1;              // the parameter whose score ranks the candidate (-1: derived)
   bool scan_speed = false;      // speed_dependence: scan w_s
+  int slot = -1;                // friction_dependence(_curve): its slot
+  std::optional<Covariate> covariate;  // friction_dependence: the variable
 };
 
-std::vector<Candidate> catalogue(const MeasuredData& data, const ModelSpec& s) {
+// The first slot no variable uses, or -1.
+int free_slot(const ModelSpec& s) {
+  for (int j = 0; j < kDependenceSlots; ++j)
+    if (!s.dependence[j]) return j;
+  return -1;
+}
+
+bool slot_holds(const ModelSpec& s, const Covariate& c) {
+  for (const std::optional<Covariate>& d : s.dependence)
+    if (d && d->kind == c.kind && d->recorded == c.recorded) return true;
+  return false;
+}
+
+// The rig's kinematics, the patch's growth and friction that follows a recorded variable.
+void conditions_catalogue(const MeasuredData& data, const ModelSpec& s,
+                          const std::vector<Covariate>& covariates, std::vector<Candidate>& out) {
+  bool longitudinal = false;
+  for (const MeasuredPoint& p : data.points) longitudinal = longitudinal || p.kinematics.vx != 0.0;
+  if (!s.free[kSlipAngleOffset] && longitudinal && data.count(1) > 0)
+    out.push_back({Effect::slip_angle_offset, "", {kSlipAngleOffset}, kSlipAngleOffset});
+  if (!s.free[kSpinOffset]) out.push_back({Effect::spin_offset, "", {kSpinOffset}, kSpinOffset});
+  const bool load_varies =
+      std::any_of(covariates.begin(), covariates.end(),
+                  [](const Covariate& c) { return c.kind == Covariate::Kind::load; });
+  if (!s.free[kPatchGrowth] && s.reference_load_n && load_varies)
+    out.push_back({Effect::patch_growth, "", {kPatchGrowth}, kPatchGrowth});
+  const int slot = free_slot(s);
+  for (const Covariate& c : covariates)
+    if (slot >= 0 && !slot_holds(s, c))
+      out.push_back({Effect::friction_dependence,
+                     c.name,
+                     {dependence_parameter(slot, false)},
+                     -1,
+                     false,
+                     slot,
+                     c});
+  for (int j = 0; j < kDependenceSlots; ++j)
+    if (s.dependence[j] && !s.free[dependence_parameter(j, true)])
+      out.push_back({Effect::friction_dependence_curve,
+                     s.dependence[j]->name,
+                     {dependence_parameter(j, true)},
+                     -1,
+                     false,
+                     j,
+                     s.dependence[j]});
+}
+
+std::vector<Candidate> catalogue(const MeasuredData& data, const ModelSpec& s,
+                                 const std::vector<Covariate>& covariates) {
   std::vector<Candidate> out;
   if (!s.uses_exact()) {
-    Candidate shape{"shape",
+    Candidate shape{Effect::shape,
                     s.profile_model ? "exact integrals over the profile"
                                     : "exact integrals, profile identified",
                     {kShapeBlend},
-                    kShapeBlend,
-                    false};
+                    kShapeBlend};
     if (!s.profile_model) shape.parameters = {kShapeBlend, kProfileB1, kProfileB2};
     out.push_back(shape);
   }
-  if (!s.free[kKappa]) out.push_back({"anisotropy", "", {kKappa}, kKappa, false});
-  if (!s.free[kKy]) out.push_back({"pressure_shift_y", "", {kKy}, kKy, false});
+  if (!s.free[kKappa]) out.push_back({Effect::anisotropy, "", {kKappa}, kKappa});
+  if (!s.free[kKy]) out.push_back({Effect::pressure_shift_y, "", {kKy}, kKy});
   if (!s.free[kSpeedDrop])
-    out.push_back({"speed_dependence", "", {kSpeedDrop, kSpeedRef}, kSpeedDrop, true});
+    out.push_back({Effect::speed_dependence, "", {kSpeedDrop, kSpeedRef}, kSpeedDrop, true});
   for (int c = 0; c < kChannels; ++c) {
     if (data.count(c) == 0) continue;
     if (!s.free[offset_parameter(c)])
-      out.push_back({"channel_offset",
-                     kChannelColumns[c],
-                     {offset_parameter(c)},
-                     offset_parameter(c),
-                     false});
+      out.push_back(
+          {Effect::channel_offset, kChannelColumns[c], {offset_parameter(c)}, offset_parameter(c)});
     for (int d = 0; d < kChannels; ++d) {
       if (d == c || s.free[crosstalk_parameter(c, d)]) continue;
-      out.push_back({"channel_crosstalk",
+      out.push_back({Effect::channel_crosstalk,
                      std::string(kChannelColumns[c]) + " <- " + kChannelColumns[d],
                      {crosstalk_parameter(c, d)},
-                     crosstalk_parameter(c, d),
-                     false});
+                     crosstalk_parameter(c, d)});
     }
   }
+  conditions_catalogue(data, s, covariates, out);
   return out;
 }
 
@@ -72,9 +129,9 @@ Eigen::MatrixXd free_columns(const Eigen::MatrixXd& J, const ModelSpec& s) {
 // The direction in which a candidate moves the weighted residual, its Jacobian column with the
 // free columns A projected out, (I - P_A) z: two candidates with nearly parallel directions
 // explain the same residual.
-Eigen::VectorXd score_direction(const Eigen::MatrixXd& J, const ModelSpec& s, int j) {
+Eigen::VectorXd score_direction(const Eigen::MatrixXd& J, const ModelSpec& s,
+                                const Eigen::VectorXd& z) {
   const Eigen::MatrixXd A = free_columns(J, s);
-  const Eigen::VectorXd z = J.col(j);
   return z - A * A.colPivHouseholderQr().solve(z);
 }
 
@@ -93,7 +150,24 @@ double score_statistic(const Eigen::VectorXd& r, const Eigen::VectorXd& z,
 }
 
 double lm_statistic(const Eigen::VectorXd& r, const Eigen::MatrixXd& J, const ModelSpec& s, int j) {
-  return score_statistic(r, J.col(j), score_direction(J, s, j), s);
+  return score_statistic(r, J.col(j), score_direction(J, s, J.col(j)), s);
+}
+
+// The Jacobian column of a friction_dependence(_curve) candidate at its null, from the column of
+// the friction scale s (the friction part of each row): z_i (linear) or T2(z_i) / (1 + b1 z_i)
+// (the curve of a slot whose linear term is b1) times it, z_i the row's scaled variable.
+Eigen::VectorXd dependence_column(const MeasuredData& data, const Eigen::MatrixXd& J,
+                                  const std::vector<int>& row_point,
+                                  const std::array<double, K>& theta, const Candidate& c) {
+  Eigen::VectorXd z(J.rows());
+  const double b1 = theta[dependence_parameter(c.slot, false)];
+  for (Eigen::Index row = 0; row < J.rows(); ++row) {
+    const double x = c.covariate->scaled(data.points[row_point[static_cast<std::size_t>(row)]]);
+    const double factor =
+        c.effect == Effect::friction_dependence_curve ? (2.0 * x * x - 1.0) / (1.0 + b1 * x) : x;
+    z(row) = factor * J(row, kFrictionScale);
+  }
+  return z;
 }
 
 double direction_correlation(const Eigen::VectorXd& a, const Eigen::VectorXd& b) {
@@ -103,41 +177,56 @@ double direction_correlation(const Eigen::VectorXd& a, const Eigen::VectorXd& b)
 }
 
 std::string label(const Candidate& c) {
-  return c.detail.empty() ? c.effect : c.effect + " (" + c.detail + ")";
+  const std::string name = describe(c.effect).name;
+  return c.detail.empty() ? name : name + " (" + c.detail + ")";
 }
 
 // What data would tell two candidate effects apart, from what each depends on: an offset does
 // not follow the motion, a slip-speed law follows the spin speed, anisotropy, a lateral shift
 // and crosstalk into or from Fy show in lateral sliding, a crosstalk follows its source
-// channel, the shape shows across psi.
+// channel, the shape shows across psi, two recorded variables that rise together are told apart
+// by rows where one changes alone; else the catalogue's own words for the first of the two.
 std::string separating_measurement(const Candidate& a, const Candidate& b,
                                    const MeasuredData& data) {
-  auto either = [&](const std::string& e) { return a.effect == e || b.effect == e; };
+  auto either = [&](Effect e) { return a.effect == e || b.effect == e; };
   auto involves_fy = [](const Candidate& c) {
-    return c.effect == "anisotropy" || c.effect == "pressure_shift_y" ||
-           (c.effect == "channel_crosstalk" && c.detail.find("Fy_N") != std::string::npos);
+    return c.effect == Effect::anisotropy || c.effect == Effect::pressure_shift_y ||
+           (c.effect == Effect::channel_crosstalk && c.detail.find("Fy_N") != std::string::npos);
+  };
+  auto variable = [](const Candidate& c) {
+    return c.effect == Effect::friction_dependence ? c.detail
+           : c.effect == Effect::speed_dependence  ? std::string("the slip speed")
+                                                   : std::string();
   };
   bool lateral = false;
   for (const MeasuredPoint& p : data.points)
     lateral = lateral || std::abs(p.kinematics.vy) > 0.2 * std::abs(p.kinematics.vx);
-  if (either("channel_offset"))
+  if (!variable(a).empty() && !variable(b).empty())
+    return variable(a) + " and " + variable(b) +
+           " change together in these data: rows where one changes while the other is held (a "
+           "sweep repeated at another value of one of them) separate them";
+  if (either(Effect::channel_offset))
     return "rows at rest (v = omega = 0) and sweeps with both signs of v and omega separate them: "
            "an offset does not change sign with the motion";
-  if (either("speed_dependence"))
+  if (either(Effect::speed_dependence))
     return "a second sweep at another spin speed u = |omega| R separates them: the slip speed "
            "changes, the ratio psi does not";
+  if (either(Effect::slip_angle_offset))
+    return std::string(describe(Effect::slip_angle_offset).separate) + " separate them";
   if ((involves_fy(a) || involves_fy(b)) && !lateral)
     return "a lateral sweep (sliding along y) separates them";
-  if (either("pressure_shift_y"))
+  if (either(Effect::pressure_shift_y))
     return "pure-spin rows in both spin directions separate them: Fx from ky changes sign with "
            "omega";
-  if (either("channel_crosstalk"))
+  if (either(Effect::channel_crosstalk))
     return "sweeps in other sliding directions separate them: a crosstalk follows its source "
            "channel, friction follows the motion";
-  if (either("shape"))
+  if (either(Effect::shape))
     return "more points with psi between 0.1 and 10, where the law's own error is largest, "
            "separate them";
-  return "sweeps in other sliding directions and at another spin speed separate them";
+  const Candidate& first = a.effect == Effect::friction_dependence ? b : a;
+  return effect_in_words(first.effect, first.detail) + ": " + describe(first.effect).separate +
+         " would show it";
 }
 
 // The scan of w_s for speed_dependence: log-spaced over the data's effective slip speeds.
@@ -234,16 +323,18 @@ std::vector<CandidateScore> score_candidates(const MeasuredData& data, const Loo
                                              std::vector<Eigen::VectorXd>* directions) {
   ModelSpec scoring = st.spec;
   if (!st.spec.uses_exact()) scoring.free[kShapeBlend] = true;
+  scoring.differentiate_kinematics = true;  // the rig's kinematics scored at their nulls
   const NoiseScales scales = st.fit.noise_scales();
   build_laws(scoring, noise.stop);
   Eigen::VectorXd r;
   Eigen::MatrixXd J;
-  weighted_jacobian(data, scoring, st.theta, scales, &r, &J);
+  std::vector<int> row_point;
+  weighted_jacobian(data, scoring, st.theta, scales, &r, &J, {}, &row_point);
   const std::vector<double> grid = speed_grid(data, st.spec.radius_m);
   *best_speed_ref = grid[grid.size() / 2];
   std::vector<CandidateScore> scores;
   for (const Candidate& c : cands) {
-    CandidateScore sc{c.effect, c.detail, 0.0, 1.0};
+    CandidateScore sc{describe(c.effect).name, c.detail, 0.0, 1.0};
     if (c.scan_speed) {
       ModelSpec sp = st.spec;
       sp.speed_in_exact = loop.speed_inside_integrals && st.spec.uses_exact();
@@ -265,8 +356,10 @@ std::vector<CandidateScore> score_candidates(const MeasuredData& data, const Loo
       sc.p_value = std::min(1.0, chi2_survival(best, 1.0) * static_cast<double>(grid.size()));
       directions->emplace_back();  // scanned: no single direction
     } else {
-      directions->push_back(score_direction(J, st.spec, c.scored));
-      sc.statistic = score_statistic(r, J.col(c.scored), directions->back(), st.spec);
+      const Eigen::VectorXd z = c.scored >= 0 ? Eigen::VectorXd(J.col(c.scored))
+                                              : dependence_column(data, J, row_point, st.theta, c);
+      directions->push_back(score_direction(J, st.spec, z));
+      sc.statistic = score_statistic(r, z, directions->back(), st.spec);
       sc.p_value = chi2_survival(sc.statistic, 1.0);
     }
     scores.push_back(sc);
@@ -282,7 +375,8 @@ ModelSpec extend(const ModelSpec& spec, const Candidate& c, double speed_ref,
                  const ClosedLoopOptions& loop) {
   ModelSpec ext = spec;
   for (int p : c.parameters) ext.free[p] = true;
-  if (c.effect == "shape") {
+  if (c.effect == Effect::friction_dependence) ext.dependence[c.slot] = c.covariate;
+  if (c.effect == Effect::shape) {
     ext.exact_only = true;
     for (int p : {kA, kM0, kMShape, kShapeBlend}) ext.free[p] = false;
     ext.value[kShapeBlend] = 1.0;
@@ -300,7 +394,8 @@ ModelSpec extend(const ModelSpec& spec, const Candidate& c, double speed_ref,
 LoopStep test_extension(const MeasuredData& data, const LoopState& cur, const LoopState& ext,
                         const Candidate& c, double threshold, const ClosedLoopOptions& loop) {
   LoopStep trial;
-  trial.effect = c.effect;
+  trial.kind = c.effect;
+  trial.effect = describe(c.effect).name;
   trial.detail = c.detail;
   const int q = static_cast<int>(c.parameters.size());
   trial.lr = std::max(0.0, cur.fit.m2ll - ext.fit.m2ll);
@@ -320,7 +415,7 @@ LoopStep test_extension(const MeasuredData& data, const LoopState& cur, const Lo
       std::string(lr_ok ? "LR significant" : "LR not significant") +
       (bic_ok ? ", BIC improves" : ", BIC does not improve") +
       (cv_ok ? ", cross-validated error improves" : ", cross-validated error does not improve");
-  if (c.effect == "shape" && trial.accepted)
+  if (c.effect == Effect::shape && trial.accepted)
     trial.verdict += "; the exact integrals replace the law";
   trial.error_before = cur.fit.error;
   trial.channels_before = cur.fit.channels;
@@ -328,7 +423,7 @@ LoopStep test_extension(const MeasuredData& data, const LoopState& cur, const Lo
   for (const ParameterEstimate& e : ext.fit.parameters)
     for (int p : c.parameters)
       if (e.name == parameter_info(p).name) trial.parameters.push_back(e);
-  if (c.effect == "shape") {  // the blend at its end point: the exact integrals alone
+  if (c.effect == Effect::shape) {  // the blend at its end point: the exact integrals alone
     ParameterEstimate blend;
     blend.name = parameter_info(kShapeBlend).name;
     blend.unit = parameter_info(kShapeBlend).unit;
@@ -354,7 +449,7 @@ void prune(const MeasuredData& data, const NoiseSettings& noise, const ClosedLoo
     const double threshold = loop.alpha / static_cast<double>(report.accepted_effects.size());
     for (std::size_t k = 0; k < report.steps.size() && !removed; ++k) {
       LoopStep& acc = report.steps[k];
-      if (!acc.accepted || acc.effect == "shape" || acc.removed) continue;
+      if (!acc.accepted || acc.kind == Effect::shape || acc.removed) continue;
       ModelSpec without = st.spec;
       for (const ParameterEstimate& e : acc.parameters) {
         const int i = parameter_index_by_name(e.name);
@@ -362,6 +457,15 @@ void prune(const MeasuredData& data, const NoiseSettings& noise, const ClosedLoo
         without.free[i] = false;
         without.value[i] = parameter_info(i).null_value;
       }
+      if (acc.kind == Effect::friction_dependence)  // the slot, and a curve on it, go with it
+        for (int j = 0; j < kDependenceSlots; ++j)
+          if (without.dependence[j] && without.dependence[j]->name == acc.detail) {
+            for (bool curve : {false, true}) {
+              without.free[dependence_parameter(j, curve)] = false;
+              without.value[dependence_parameter(j, curve)] = 0.0;
+            }
+            without.dependence[j].reset();
+          }
       set_speed_inside(without, loop);
       say(loop, "backward: refitting without " + acc.effect);
       const LoopState wo = fit_state(data, without, noise);
@@ -376,6 +480,15 @@ void prune(const MeasuredData& data, const NoiseSettings& noise, const ClosedLoo
         const auto it =
             std::find(report.accepted_effects.begin(), report.accepted_effects.end(), acc.effect);
         if (it != report.accepted_effects.end()) report.accepted_effects.erase(it);
+        for (LoopStep& curve : report.steps)  // a curve on the variable goes with it
+          if (acc.kind == Effect::friction_dependence && curve.accepted && !curve.removed &&
+              curve.kind == Effect::friction_dependence_curve && curve.detail == acc.detail) {
+            curve.removed = true;
+            curve.verdict += "; removed with " + acc.effect + " (" + acc.detail + ")";
+            const auto c = std::find(report.accepted_effects.begin(), report.accepted_effects.end(),
+                                     curve.effect);
+            if (c != report.accepted_effects.end()) report.accepted_effects.erase(c);
+          }
         say(loop, "backward: " + acc.effect + " removed");
         removed = true;
       }
@@ -417,7 +530,8 @@ void test_noise_growth(const MeasuredData& data, const NoiseSettings& noise,
   say(loop, "noise: refitting with a scale that grows with the value (a + b |y|)");
   const LoopState grown = fit_state(data, st.spec, affine);
   LoopStep step;
-  step.effect = kNoiseGrowthEffect;
+  step.kind = Effect::noise_growth;
+  step.effect = describe(Effect::noise_growth).name;
   step.detail = "a + b |y|";
   step.lr_dof = static_cast<int>(st.fit.channels.size());
   step.lr = std::max(0.0, st.fit.m2ll - grown.fit.m2ll);
@@ -435,12 +549,25 @@ void test_noise_growth(const MeasuredData& data, const NoiseSettings& noise,
   step.parameters = noise_parameters(grown.fit);
   const bool lr_ok = step.lr_p_value < step.threshold;
   const bool bic_ok = step.bic_after < step.bic_before;
-  step.accepted = lr_ok && bic_ok;
-  step.verdict = std::string(lr_ok ? "LR significant" : "LR not significant") +
-                 (bic_ok ? ", BIC improves" : ", BIC does not improve") +
-                 (step.accepted ? "; the noise grows with the value: the final fit weights each "
-                                  "value by 1 / (a + b |y|)"
-                                : "; one constant noise scale per channel is kept");
+  // A load cell's noise grows by a few tenths of a percent of the value: a share b above
+  // kPlausibleNoiseGrowth is a misfit that grows with the value (a missing effect, gross errors
+  // left in), not noise, and is not taken for it.
+  std::string implausible;
+  for (const ChannelDiagnostics& ch : grown.fit.channels)
+    if (ch.noise_slope > kPlausibleNoiseGrowth)
+      implausible +=
+          (implausible.empty() ? "" : ", ") + ch.channel + " b = " + std::to_string(ch.noise_slope);
+  step.accepted = lr_ok && bic_ok && implausible.empty();
+  step.verdict =
+      std::string(lr_ok ? "LR significant" : "LR not significant") +
+      (bic_ok ? ", BIC improves" : ", BIC does not improve") +
+      (implausible.empty() ? ""
+                           : "; implausible as noise (" + implausible + " of |y|, above " +
+                                 std::to_string(kPlausibleNoiseGrowth) +
+                                 "): the misfit grows with the value, the model lacks something") +
+      (step.accepted ? "; the noise grows with the value: the final fit weights each "
+                       "value by 1 / (a + b |y|)"
+                     : "; one constant noise scale per channel is kept");
   say(loop, std::string("noise: a scale growing with the value ") +
                 (step.accepted ? "accepted" : "rejected") + " (" + step.verdict + ")");
   report.steps.push_back(step);
@@ -544,7 +671,9 @@ Trial* choose_among(std::vector<Trial>& trials, const std::vector<Candidate>& ca
       if (t.step.accepted)
         t.step.verdict += "; passes too, but " + label(b) + " has the lower BIC (by " +
                           std::to_string(dbic) + ")";
-      if ((t.step.accepted && dbic < 2.0) || (significant && corr > 0.9)) {
+      // Parallel score directions with BIC within 10 of each other (beyond, the data prefer one
+      // very strongly: Kass and Raftery's scale) leave the two apart only by their form.
+      if ((t.step.accepted && dbic < 2.0) || (significant && corr > 0.9 && dbic < 10.0)) {
         LoopStep& chosen = best->step;
         t.step.verdict += "; ambiguous with the accepted " + label(b);
         chosen.ambiguous_with.push_back(label(c));
@@ -568,11 +697,13 @@ ClosedLoopReport close_the_loop(const MeasuredData& data, const IdentificationOp
   ClosedLoopReport report;
   const NoiseSettings noise = noise_settings_for(options);
   say(loop, "fitting the base law");
+  const std::vector<Covariate> covariates = covariates_of(data);
   LoopState st = fit_state(data, base_spec_for(data, options), noise);
+  st.fit.trace = trace_residual(data, st.fit, st.spec.radius_m, covariates);
   report.base = st.fit;
   say(loop, "base law fitted: BIC " + std::to_string(st.fit.bic));
   for (int step = 1; step <= loop.max_steps; ++step) {
-    const std::vector<Candidate> cands = catalogue(data, st.spec);
+    const std::vector<Candidate> cands = catalogue(data, st.spec, covariates);
     if (cands.empty()) break;
     say(loop, step_label(step) + "scoring " + std::to_string(cands.size()) + " candidate effects");
     double speed_ref = 0.0;
@@ -599,7 +730,7 @@ ClosedLoopReport close_the_loop(const MeasuredData& data, const IdentificationOp
       const ModelSpec ext_spec = extend(st.spec, c, speed_ref, loop);
       const int values = data.count(0) + data.count(1) + data.count(2);
       if (values < measured_values_needed(data, ext_spec, noise)) {
-        say(loop, step_label(step) + c.effect + " not fitted: too little data for its parameters");
+        say(loop, step_label(step) + label(c) + " not fitted: too little data for its parameters");
         continue;
       }
       say(loop, step_label(step) + "fitting " + label(c));
@@ -615,8 +746,13 @@ ClosedLoopReport close_the_loop(const MeasuredData& data, const IdentificationOp
     for (Trial& t : trials) report.steps.push_back(t.step);
     const bool accepted_any = best != nullptr;
     if (best) {
-      report.accepted_effects.push_back(cands[best->candidate].effect);
+      report.accepted_effects.push_back(describe(cands[best->candidate].effect).name);
       st = best->ext;
+      st.fit.trace = trace_residual(data, st.fit, st.spec.radius_m, covariates);
+      report
+          .steps[report.steps.size() - trials.size() +
+                 static_cast<std::size_t>(best - trials.data())]
+          .fit_after.trace = st.fit.trace;
     }
     if (!accepted_any) break;
   }
@@ -624,9 +760,10 @@ ClosedLoopReport close_the_loop(const MeasuredData& data, const IdentificationOp
   if (loop.choose_noise_model && noise.model == NoiseModel::additive && !noise.given)
     test_noise_growth(data, noise, loop, st, report);
   report.noise_model = st.fit.noise_model;
+  st.fit.trace = trace_residual(data, st.fit, st.spec.radius_m, covariates);
   report.final_fit = st.fit;
   report.final_spec = st.spec;
-  report.structure_remains = !st.fit.residual_white;
+  report.structure_remains = !st.fit.residual_white || !st.fit.trace.followed.empty();
   return report;
 }
 

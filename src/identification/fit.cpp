@@ -14,6 +14,7 @@
 
 #include "contensou/friction/error.hpp"
 #include "contensou/identification/effect_model.hpp"
+#include "contensou/identification/outliers.hpp"
 #include "contensou/identification/statistics.hpp"
 #include "point_batch.hpp"
 
@@ -284,6 +285,12 @@ ModelSpec base_spec_for(const MeasuredData& data, const IdentificationOptions& o
   if (o.normal_load_n) require_positive("normal load", *o.normal_load_n);
   ModelSpec s = base_model_spec(o.radius_m, o.normal_load_n);
   s.regularization_speed = o.regularization_speed;
+  // Rows with their own load (an Fz column): each at rho = N_i / N_ref, N_ref the load given (or
+  // the rows' mean), at which F0 and M0 are reported.
+  if (const std::optional<LoadFromData> rows = normal_load_from_data(data)) {
+    s.reference_load_n = o.normal_load_n.value_or(rows->mean_n);
+    s.normal_load_n = s.reference_load_n;
+  }
   if (o.profile) {
     // Only the profile's shape matters here: a unit load and unit friction.
     PressureProfile shape = *o.profile;
@@ -352,6 +359,12 @@ const char* noise_model_name(NoiseModel model) {
 
 NoiseScales noise_scales_of(const FitReport& fit) {
   return fit.noise_scales();
+}
+
+bool FitReport::within_noise() const {
+  return std::all_of(channels.begin(), channels.end(), [](const ChannelDiagnostics& c) {
+    return c.neighbour_scale <= 0.0 || c.rms <= 1.5 * c.neighbour_scale;
+  });
 }
 
 const ParameterEstimate* FitReport::parameter(const std::string& name) const {
@@ -592,6 +605,14 @@ double estimate_noise_scales(const FitSetup& s, const std::vector<Resultants<dou
     std::array<double, 2> ab{0.0, 0.0};
     if (s.noise.model == NoiseModel::affine) {
       ab = affine_noise(e, y, s.peak[c], dof_c, s_floor);
+    } else if (s.noise.loss != RobustLoss::none) {
+      // A robust fit's scale from the residuals' median, 1.4826 median |e| (the Gaussian's
+      // sigma), which the few values the loss discounts do not inflate.
+      std::vector<double> a(e.size());
+      for (std::size_t i = 0; i < e.size(); ++i) a[i] = std::abs(e[i]);
+      std::nth_element(a.begin(), a.begin() + static_cast<std::ptrdiff_t>(a.size() / 2), a.end());
+      const double med = a.empty() ? 0.0 : a[a.size() / 2];
+      ab[0] = std::max(1.4826 * med * std::sqrt(s.counts[c] / std::max(dof_c, 1.0)), s_floor);
     } else {
       double ss = 0.0;
       for (double ei : e) ss += ei * ei;
@@ -865,6 +886,27 @@ std::optional<Eigen::MatrixXd> parameter_covariance(const Eigen::MatrixXd& J,
   return cov;
 }
 
+// A friction_dependence parameter in the variable's units, at the middle of the range (z = 0,
+// f = f_ref (1 - b2)): (1/f) df/dX = b1 / (h (1 - b2)) and (1/f) d2f/dX2 = 4 b2 / (h^2 (1 - b2)),
+// h the half range (the note of each parameter shows its own term, the other at 0).
+std::string dependence_note(const ModelSpec& spec, int i, const ParameterEstimate& e) {
+  if (i < kDependence1 || i > kDependence3Curve) return "";
+  const int slot = (i - kDependence1) / 2;
+  const bool curve = (i - kDependence1) % 2 == 1;
+  if (!spec.dependence[slot]) return "";
+  const Covariate& c = *spec.dependence[slot];
+  const std::string unit = c.unit.empty() ? "row" : c.unit;
+  char buf[320];
+  const double per = curve ? 4.0 * e.value / (c.half_range * c.half_range * (1.0 - e.value))
+                           : e.value / c.half_range;
+  std::snprintf(
+      buf, sizeof buf,
+      "%s of f (1 + b1 z + b2 (2 z^2 - 1)), z = %s over %.6g to %.6g %s: %s = %.4g 1/%s%s",
+      curve ? "b2" : "b1", c.name.c_str(), c.mid - c.half_range, c.mid + c.half_range, unit.c_str(),
+      curve ? "(1/f) d2f/dX2" : "(1/f) df/dX", per, unit.c_str(), curve ? "^2" : "");
+  return buf;
+}
+
 ParameterEstimate estimate_of(int i, double value) {
   ParameterEstimate e;
   e.name = parameter_info(i).name;
@@ -892,6 +934,7 @@ void report_parameters(const ModelSpec& spec, const std::array<double, K>& theta
     } else {
       e.determined = false;
     }
+    e.note = dependence_note(spec, i, e);
     report.parameters.push_back(e);
   }
   if (spec.exact_only && spec.profile_model) {
@@ -953,9 +996,13 @@ void report_quality(const FitSetup& s, const Solution& sol, FitReport& report) {
   report.noise_scale = sol.scale;
   report.noise_slope = sol.slope;
   report.channels = residual_diagnostics(subset, sub_pred, s.spec.radius_m, sol.scale);
+  const std::array<double, kChannels> scatter = neighbour_scatter(subset, sub_pred);
   for (ChannelDiagnostics& d : report.channels)
     for (int c = 0; c < kChannels; ++c)
-      if (d.channel == kChannelColumns[c]) d.noise_slope = sol.slope[c];
+      if (d.channel == kChannelColumns[c]) {
+        d.noise_slope = sol.slope[c];
+        d.neighbour_scale = scatter[c];
+      }
   report.residual_white = std::all_of(report.channels.begin(), report.channels.end(),
                                       [](const ChannelDiagnostics& d) { return d.white; });
   double log_det = 0.0, err2 = 0.0;

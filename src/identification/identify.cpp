@@ -6,16 +6,60 @@ namespace contensou {
 
 namespace {
 
-// The index in `data` of a point of a subset of it (points keep their line; synthetic data
-// without lines are matched by value).
-int original_index(const MeasuredData& data, const MeasuredPoint& p) {
+// The data without the outlying values (a row left with no channel dropped), and for each of
+// its points the index of the point in the data given.
+MeasuredData clean_rows(const MeasuredData& data, const std::vector<Outlier>& outliers,
+                        std::vector<int>& origin) {
+  std::vector<std::array<bool, kChannels>> out(data.points.size());
+  for (const Outlier& o : outliers) out[static_cast<std::size_t>(o.point)][o.channel] = true;
+  MeasuredData clean;  // the data's description, and its points but for the outlying values
+  clean.source = data.source;
+  clean.sources = data.sources;
+  clean.column_notes = data.column_notes;
+  clean.recorded = data.recorded;
+  clean.columns_not_read = data.columns_not_read;
+  origin.clear();
   for (std::size_t i = 0; i < data.points.size(); ++i) {
-    const MeasuredPoint& q = data.points[i];
-    if (q.line == p.line && q.kinematics.vx == p.kinematics.vx &&
-        q.kinematics.vy == p.kinematics.vy && q.kinematics.omega == p.kinematics.omega)
-      return static_cast<int>(i);
+    MeasuredPoint p = data.points[i];
+    for (int c = 0; c < kChannels; ++c)
+      if (out[i][c]) p.force[c].reset();
+    if (!p.force[0] && !p.force[1] && !p.force[2]) continue;
+    clean.points.push_back(std::move(p));
+    origin.push_back(static_cast<int>(i));
   }
-  return -1;
+  return clean;
+}
+
+// The fit the gross errors are judged against: robust (Cauchy loss at 3 noise scales, the
+// scales from the residuals' median, fit.hpp), so that the glitches do not pull the model
+// towards them; the user's own robust loss when one is chosen.
+IdentificationOptions robust(const IdentificationOptions& o) {
+  IdentificationOptions r = o;
+  if (r.loss == RobustLoss::none) {
+    r.loss = RobustLoss::cauchy;
+    r.loss_scale = 3.0;
+  }
+  return r;
+}
+
+// The robust fit on `data`: the exact integrals over the profile (the given one, else the
+// two-coefficient profile identified with them, as the loop's shape step), since the law's own
+// misfit, several noise scales at a sweep's knee, would otherwise show between neighbouring
+// rows; the fractional law if that fit fails.
+FitReport judge_fit(const MeasuredData& data, const IdentificationOptions& judge) {
+  const ModelSpec base = base_spec_for(data, judge);
+  ModelSpec spec = base;
+  spec.exact_only = true;
+  for (int p : {kA, kM0, kMShape, kShapeBlend}) spec.free[p] = false;
+  spec.value[kShapeBlend] = 1.0;
+  if (!spec.profile_model) spec.free[kProfileB1] = spec.free[kProfileB2] = true;
+  try {
+    return fit_model(data, spec, noise_settings_for(judge));
+  } catch (const Interrupted&) {
+    throw;
+  } catch (const std::exception&) {
+    return fit_model(data, base, noise_settings_for(judge));
+  }
 }
 
 }  // namespace
@@ -24,37 +68,32 @@ Identification identify(const MeasuredData& data, const IdentifyOptions& options
   Identification r;
   r.fitted = data;
   if (options.leave_out_outliers) {
-    // One gross error at a time (the most extreme of each channel), refitting in between, so
-    // that a large one does not make its neighbours look wrong; the fractional law's fit is
-    // enough, since a smooth misfit cancels in the rule.
-    FitReport current = fit_fractional_law(data, options.fit);
-    for (int round = 0; round < 50; ++round) {
+    // Rounds of: the robust fit, every gross error it shows (outliers.hpp), the rows without
+    // them; a glitch hidden by glitched neighbours shows once they are out.
+    const IdentificationOptions judge = robust(options.fit);
+    std::vector<int> origin(data.points.size());
+    for (std::size_t i = 0; i < origin.size(); ++i) origin[i] = static_cast<int>(i);
+    FitReport current = judge_fit(data, judge);
+    for (int round = 0; round < 10; ++round) {
       const std::vector<Outlier> found = find_outliers(r.fitted, current.prediction);
       if (found.empty()) break;
-      std::vector<Outlier> worst;  // the most extreme of each channel (found is sorted)
-      for (const Outlier& o : found)
-        if (std::none_of(worst.begin(), worst.end(),
-                         [&](const Outlier& w) { return w.channel == o.channel; }))
-          worst.push_back(o);
-      const std::size_t before = r.outliers.size();
-      for (Outlier o : worst) {
-        o.point = original_index(data, r.fitted.points[o.point]);
-        if (o.point >= 0) r.outliers.push_back(o);
+      for (Outlier o : found) {
+        o.point = origin[static_cast<std::size_t>(o.point)];
+        r.outliers.push_back(o);
       }
-      if (r.outliers.size() == before) break;
-      r.fitted = without_outliers(data, r.outliers);
-      current = fit_fractional_law(r.fitted, options.fit);
+      r.fitted = clean_rows(data, r.outliers, origin);
+      current = judge_fit(r.fitted, judge);
     }
-    if (r.outliers.empty() && !options.loop) {
-      r.fit = current;
-      return r;
-    }
+    std::sort(r.outliers.begin(), r.outliers.end(), [](const Outlier& a, const Outlier& b) {
+      return std::abs(a.residual_sigma) > std::abs(b.residual_sigma);
+    });
   }
   if (options.loop) {
     r.loop = close_the_loop(r.fitted, options.fit, *options.loop);
     r.fit = r.loop->base;
   } else {
     r.fit = fit_fractional_law(r.fitted, options.fit);
+    r.fit.trace = trace_residual(r.fitted, r.fit, options.fit.radius_m, covariates_of(r.fitted));
   }
   return r;
 }

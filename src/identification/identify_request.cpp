@@ -14,8 +14,9 @@ const std::vector<RequestKey>& identify_request_keys() {
   static const std::vector<RequestKey> keys = {
       {"radius", "patch radius R [m] (required)"},
       {"normal_load",
-       "normal load N [N]: f = F0/N is reported (else N comes from the profile "
-       "with its pressure, or the mean of an Fz column)"},
+       "normal load N [N]: f = F0/N is reported, at this load (else N comes from the profile "
+       "with its pressure, or the mean of an Fz column; rows with an Fz value are each fitted "
+       "at their own load); with a profile, the profile gives only the shape"},
       {"profile",
        "pressure profile: uniform, hertz, seed-tire or a CSV rho,pressure_Pa (fixes "
        "the shape constants; a CSV, or a built-in one with its pressure, gives N)"},
@@ -93,9 +94,9 @@ void validate(const IdentifyRequest& r) {
   const auto key = [&](std::string_view k) { return key_name(k, r.style); };
   require_positive(key("radius").c_str(), r.radius_m);
   if (r.normal_load_n) require_positive(key("normal_load").c_str(), *r.normal_load_n);
-  if (r.normal_load_n && !r.profile.empty())
-    throw std::invalid_argument("give " + key("normal_load") + " or " + key("profile") +
-                                ", not both (the profile gives N)");
+  if (r.normal_load_n && r.pressure_pa)
+    throw std::invalid_argument("give " + key("normal_load") + " or " + key("pressure") +
+                                ", not both (with the profile, either gives the other)");
   if (r.pressure_pa && r.profile.empty())
     throw std::invalid_argument(key("pressure") + " " + format_value(*r.pressure_pa) +
                                 " is the reference pressure of a built-in " + key("profile") +
@@ -138,6 +139,7 @@ std::optional<double> load_from_profile(const IdentifyRequest& r, ProfileChoice&
   } catch (const std::runtime_error& e) {
     throw std::invalid_argument(e.what());  // a missing file or a refused table: bad input
   }
+  if (r.normal_load_n) return r.normal_load_n;  // the load given: the profile gives the shape
   const std::optional<double> ps =
       profile.reference_pressure ? profile.reference_pressure : r.pressure_pa;
   if (!ps) return std::nullopt;

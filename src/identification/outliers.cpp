@@ -4,6 +4,7 @@
 #include <cmath>
 #include <cstdio>
 #include <limits>
+#include <tuple>
 
 namespace contensou {
 
@@ -18,7 +19,7 @@ double median(std::vector<double> v) {
 }
 
 // Two rows in the same regime: both at rest, or spinning the same way with the sliding
-// direction within 0.2 rad and v / |omega| within a factor 3 (both pure spin or both pure
+// direction within 0.2 rad and v / |omega| within a factor 5 (both pure spin or both pure
 // sliding counting as equal). A glitch is judged only against rows like it: a lone row of
 // another regime (pure spin after a sweep) may differ from its neighbours for good reason.
 bool same_regime(const Kinematics<double>& a, const Kinematics<double>& b) {
@@ -31,7 +32,7 @@ bool same_regime(const Kinematics<double>& a, const Kinematics<double>& b) {
     const double turn = std::remainder(std::atan2(a.vy, a.vx) - std::atan2(b.vy, b.vx), 2 * M_PI);
     if (std::abs(turn) > 0.2) return false;
   }
-  if (va > 0.0 && wa > 0.0) return std::abs(std::log((va / wa) / (vb / wb))) < std::log(3.0);
+  if (va > 0.0 && wa > 0.0) return std::abs(std::log((va / wa) / (vb / wb))) < std::log(5.0);
   return true;
 }
 
@@ -67,24 +68,69 @@ double local_sigma(const std::vector<double>& d, std::size_t k) {
   return 1.4826 * std::max(before, after) / 1.14;
 }
 
-void examine_channel(const MeasuredData& data, const std::vector<Resultants<double>>& prediction,
-                     int c, double threshold, std::vector<Outlier>& out) {
+// Where a row stands among the others, whatever the file's order: its load (in steps of 2 %),
+// its spin sense, its sliding direction (in steps of 0.05 rad), then its log v / |omega| and
+// |omega|. Rows next to each other in this order are neighbours in the rig's programme.
+struct KinematicKey {
+  long load, spin, direction;
+  double ratio, rate;
+  bool operator<(const KinematicKey& o) const {
+    return std::tie(load, spin, direction, ratio, rate) <
+           std::tie(o.load, o.spin, o.direction, o.ratio, o.rate);
+  }
+};
+
+KinematicKey key_of(const MeasuredPoint& p) {
+  const Kinematics<double>& k = p.kinematics;
+  const double v = std::hypot(k.vx, k.vy), w = std::abs(k.omega);
+  KinematicKey key{};
+  key.load = p.normal_load && *p.normal_load > 0.0
+                 ? std::lround(std::log(*p.normal_load) / std::log(1.02))
+                 : 0;
+  key.spin = k.omega > 0.0 ? 1 : (k.omega < 0.0 ? -1 : 0);
+  key.direction = v > 0.0 ? std::lround(std::atan2(k.vy, k.vx) / 0.05) : 1000;
+  key.ratio = v > 0.0 && w > 0.0 ? std::log(v / w) : (v > 0.0 ? 1e300 : -1e300);
+  key.rate = w;
+  return key;
+}
+
+// A channel's measured rows in kinematic order, with their residuals.
+struct OrderedChannel {
   std::vector<int> rows;
   std::vector<double> e;
   std::vector<const Kinematics<double>*> kinematics;
+};
+
+OrderedChannel ordered_channel(const MeasuredData& data,
+                               const std::vector<Resultants<double>>& prediction, int c) {
+  std::vector<std::pair<KinematicKey, int>> keyed;
   for (std::size_t i = 0; i < data.points.size(); ++i)
-    if (const std::optional<double>& y = data.points[i].force[c]) {
-      rows.push_back(static_cast<int>(i));
-      e.push_back(*y - prediction[i].vector()(c));
-      kinematics.push_back(&data.points[i].kinematics);
-    }
-  if (e.size() < 8) return;
-  const std::vector<double> d = neighbour_differences(e, kinematics);
+    if (data.points[i].force[c]) keyed.emplace_back(key_of(data.points[i]), static_cast<int>(i));
+  std::stable_sort(keyed.begin(), keyed.end(),
+                   [](const auto& a, const auto& b) { return a.first < b.first; });
+  OrderedChannel out;
+  for (const auto& [key, i] : keyed) {
+    out.rows.push_back(i);
+    out.e.push_back(*data.points[i].force[c] - prediction[i].vector()(c));
+    out.kinematics.push_back(&data.points[i].kinematics);
+  }
+  return out;
+}
+
+void examine_channel(const MeasuredData& data, const std::vector<Resultants<double>>& prediction,
+                     int c, double threshold, std::vector<Outlier>& out) {
+  const OrderedChannel ch = ordered_channel(data, prediction, c);
+  const std::vector<int>& rows = ch.rows;
+  if (ch.e.size() < 8) return;
+  const std::vector<double> d = neighbour_differences(ch.e, ch.kinematics);
   double largest = 0.0;
   for (int i : rows) largest = std::max(largest, std::abs(*data.points[i].force[c]));
   for (std::size_t k = 0; k < d.size(); ++k) {
     const double sigma = std::max(local_sigma(d, k), 1e-9 * largest);  // exact data: no scatter
-    if (std::isfinite(d[k]) && sigma > 0.0 && std::abs(d[k]) > threshold * sigma) {
+    // The row's own residual must carry the difference (at least half of it, with its sign): a
+    // good row beside glitched ones differs from its neighbours by their residual, not its own.
+    const bool own = ch.e[k] * d[k] > 0.0 && std::abs(ch.e[k]) >= 0.5 * std::abs(d[k]);
+    if (std::isfinite(d[k]) && sigma > 0.0 && std::abs(d[k]) > threshold * sigma && own) {
       const MeasuredPoint& p = data.points[rows[k]];
       out.push_back({rows[k], p.line, c, *p.force[c], d[k] / sigma});
     }
@@ -98,6 +144,20 @@ std::string Outlier::describe(const std::string& source) const {
   std::snprintf(buf, sizeof buf, " %s %+.1f sigma (%.6g)", kChannelColumns[channel], residual_sigma,
                 value);
   return (line > 0 ? source + ":" + std::to_string(line) : "point " + std::to_string(point)) + buf;
+}
+
+std::array<double, kChannels> neighbour_scatter(const MeasuredData& data,
+                                                const std::vector<Resultants<double>>& prediction) {
+  std::array<double, kChannels> scale{};
+  if (prediction.size() != data.points.size()) return scale;
+  for (int c = 0; c < kChannels; ++c) {
+    const OrderedChannel ch = ordered_channel(data, prediction, c);
+    std::vector<double> ad;
+    for (double d : neighbour_differences(ch.e, ch.kinematics))
+      if (std::isfinite(d)) ad.push_back(std::abs(d));
+    scale[c] = ad.size() >= 4 ? 1.4826 * median(ad) / 1.14 : 0.0;
+  }
+  return scale;
 }
 
 std::vector<Outlier> find_outliers(const MeasuredData& data,

@@ -29,6 +29,7 @@ nlohmann::json model_json(const std::string& name, const std::vector<std::string
     e["derived_from_profile"] = p.derived;
     e["determined"] = p.determined || p.fixed;
     e["std_error"] = std::isfinite(p.std_error) ? nlohmann::json(p.std_error) : nlohmann::json();
+    if (!p.note.empty()) e["note"] = p.note;
     params[p.name] = e;
   }
   m["params"] = params;
@@ -42,6 +43,7 @@ nlohmann::json model_json(const std::string& name, const std::vector<std::string
                     {"runs_p_value", c.runs_p_value},
                     {"lag1_autocorrelation", c.lag1},
                     {"durbin_watson", c.durbin_watson},
+                    {"neighbour_scale", c.neighbour_scale},
                     {"white", c.white}});
   }
   m["rms"] = rms;
@@ -54,6 +56,19 @@ nlohmann::json model_json(const std::string& name, const std::vector<std::string
   }
   m["diagnostics"] = diag;
   m["residual_white"] = fit.residual_white;
+  m["within_noise"] = fit.within_noise();
+  nlohmann::json followed = nlohmann::json::array();
+  for (const TracedVariable& t : fit.trace.followed)
+    followed.push_back({{"channel", t.channel},
+                        {"variable", t.variable},
+                        {"kinematic", t.kinematic},
+                        {"test", t.test},
+                        {"statistic", t.statistic},
+                        {"p_value", t.p_value},
+                        {"p_adjusted", t.p_adjusted},
+                        {"size", t.size},
+                        {"spread_sigma", t.spread_sigma}});
+  m["trace"] = {{"tests", fit.trace.tests}, {"alpha", fit.trace.alpha}, {"followed", followed}};
   m["aic"] = fit.aic;
   m["bic"] = fit.bic;
   m["chi2"] = fit.chi2;

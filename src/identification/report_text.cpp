@@ -1,5 +1,6 @@
 #include "contensou/identification/report_text.hpp"
 
+#include <algorithm>
 #include <cstdio>
 #include <map>
 
@@ -53,19 +54,22 @@ std::string parameters_text(const FitReport& fit) {
     std::snprintf(line, sizeof line, "%-10s  %-13.6g  %-28s  %s\n", p.name.c_str(), p.value,
                   ci.c_str(), p.unit.c_str());
     s += line;
+    if (!p.note.empty()) s += "            " + p.note + "\n";
   }
   return s;
 }
 
 std::string channels_text(const FitReport& fit) {
-  std::string s = "\nchannel  points  rms          noise scale  runs p   lag-1   white\n";
+  std::string s =
+      "\nchannel  points  rms          noise scale  scatter      runs p   lag-1   white\n";
   for (const ChannelDiagnostics& c : fit.channels) {
-    char line[160];
-    std::snprintf(line, sizeof line, "%-7s  %6d  %-11.4g  %-11.4g  %-7.3f  %+6.3f  %s\n",
-                  c.channel.c_str(), c.points, c.rms, c.noise_scale, c.runs_p_value, c.lag1,
-                  c.white ? "yes" : "no");
+    char line[200];
+    std::snprintf(line, sizeof line, "%-7s  %6d  %-11.4g  %-11.4g  %-11.4g  %-7.3f  %+6.3f  %s\n",
+                  c.channel.c_str(), c.points, c.rms, c.noise_scale, c.neighbour_scale,
+                  c.runs_p_value, c.lag1, c.white ? "yes" : "no");
     s += line;
   }
+  s += "scatter = the residual's scatter between neighbouring rows (the noise the data show)\n";
   if (fit.noise_model == NoiseModel::affine) {
     s += "noise grows with the value: sigma = a + b |y|, a in the noise scale column, b =";
     for (const ChannelDiagnostics& c : fit.channels)
@@ -148,27 +152,15 @@ std::string accepted_text(const ClosedLoopReport& loop) {
   for (const std::string& n : notes) s += "\nAMBIGUOUS: " + n;
   s += "\nerror before " + fmt("%.4f", loop.base.error) + ", after " +
        fmt("%.4f", loop.final_fit.error) + "\n";
-  if (loop.structure_remains)
-    s += "STRUCTURE REMAINS: the final residual is still not white; the model lacks something the "
-         "catalogue does not name.\n";
+  if (loop.structure_remains || !loop.final_fit.trace.followed.empty()) {
+    const std::string where = loop.final_fit.trace.where();
+    s += "STRUCTURE REMAINS: " +
+         (where.empty() ? std::string("the final residual is still not white, and follows none of "
+                                      "the recorded variables")
+                        : "the final residual follows " + where) +
+         "; the model lacks something its catalogue does not add.\n";
+  }
   return s;
-}
-
-// The effects in words a test engineer uses.
-std::string in_words(const std::string& effect) {
-  static const std::map<std::string, std::string> words = {
-      {"shape",
-       "the pressure profile's shape matters (the exact integrals fit better than the "
-       "fractional law)"},
-      {"speed_dependence", "friction changes with the slip speed"},
-      {"anisotropy", "friction differs along and across the patch"},
-      {"pressure_shift_y", "the pressure centre is shifted sideways"},
-      {"channel_offset", "a channel reads a constant offset (load-cell zero drift)"},
-      {"channel_crosstalk", "one load-cell channel picks up another (crosstalk)"},
-      {kNoiseGrowthEffect,
-       "the noise grows with the value (sigma = a + b |y| per channel, as a load cell's)"}};
-  const auto it = words.find(effect);
-  return it == words.end() ? effect : it->second;
 }
 
 std::string join(const std::vector<std::string>& parts, const std::string& middle,
@@ -181,29 +173,88 @@ std::string join(const std::vector<std::string>& parts, const std::string& middl
 
 }  // namespace
 
+// A recorded variable as a report names it: the load, the time and the row order in words.
+std::string variable_in_words(const std::string& name) {
+  if (name == "Fz_N") return "the load (Fz_N)";
+  if (name == "t_s") return "the time (t_s): a drift over the run";
+  if (name == "row order") return "the row order: a drift over the run";
+  return name;
+}
+
+// What limits a fit, in words that hold on the data: the noise only when the residual is white,
+// follows none of the recorded variables and is no larger than its scatter between
+// neighbouring rows; else where the structure is.
+std::string limit_text(const FitReport& fit, bool structure_remains) {
+  const std::string where = fit.trace.where();
+  std::string worst;
+  double ratio = 0.0;
+  for (const ChannelDiagnostics& c : fit.channels)
+    if (c.neighbour_scale > 0.0 && c.rms / c.neighbour_scale > ratio) {
+      ratio = c.rms / c.neighbour_scale;
+      worst = c.channel;
+    }
+  if (!where.empty()) return "structure in the residual that the model lacks: it follows " + where;
+  if (structure_remains)
+    return "structure in the residual (not white along " +
+           std::string(fit.channels.empty() ? "the rows" : "psi or the time") +
+           ") that none of the recorded variables explains";
+  if (!fit.within_noise())
+    return "a misfit larger than the noise: " + worst + "'s rms is " + fmt("%.2g", ratio) +
+           " times its scatter between neighbouring rows";
+  const std::vector<std::string> warnings = fit_warnings(fit);
+  if (!warnings.empty()) return "the data: " + warnings.front();
+  return "the measurement noise (the residual is white, follows none of the recorded "
+         "variables and is no larger than its scatter between neighbouring rows; error " +
+         fmt("%.4f", fit.error) + ")";
+}
+
+std::string trace_text(const FitReport& fit) {
+  const ResidualTrace& t = fit.trace;
+  if (t.tests == 0) return "";
+  if (t.followed.empty())
+    return "residual traced: follows none of the variables (" + std::to_string(t.tests) +
+           " tests, Holm at " + fmt("%g", t.alpha) + ")\n";
+  std::string s = "residual traced (" + std::to_string(t.tests) + " tests, Holm at " +
+                  fmt("%g", t.alpha) + "), strongest first:\n";
+  for (const TracedVariable& v : t.followed) s += "  " + v.describe() + "\n";
+  return s;
+}
+
 std::string loop_summary(const ClosedLoopReport& loop) {
   std::vector<std::string> shown, not_needed, failed;
+  const auto step_name = [](const LoopStep& st) {
+    return st.detail.empty() || st.kind == Effect::shape || st.kind == Effect::noise_growth
+               ? st.effect
+               : st.effect + " (" + st.detail + ")";
+  };
   for (const LoopStep& st : loop.steps) {
+    const std::string name = step_name(st);
     if (step_fit_failed(st))
-      failed.push_back(st.effect);
+      failed.push_back(name);
     else if (st.accepted && !st.removed)
-      shown.push_back(in_words(st.effect));
+      shown.push_back(effect_in_words(st.kind, variable_in_words(st.detail)));
     else
-      not_needed.push_back(st.effect);
+      not_needed.push_back(name);
   }
+  // A candidate tried in several steps is named once, and not at all once it was accepted.
+  const auto once = [&](std::vector<std::string>& names) {
+    std::vector<std::string> kept;
+    for (const std::string& n : names)
+      if (std::find(kept.begin(), kept.end(), n) == kept.end()) kept.push_back(n);
+    names = kept;
+  };
+  for (const LoopStep& st : loop.steps)
+    if (st.accepted && !st.removed) {
+      std::erase(not_needed, step_name(st));
+      std::erase(failed, step_name(st));
+    }
+  once(not_needed);
+  once(failed);
   std::string s = shown.empty() ? "the data need nothing beyond the fractional law"
                                 : "the data show that " + join(shown, "; ", "; and ");
   if (!not_needed.empty()) s += ". Tried and not needed: " + join(not_needed, ", ", ", ");
   if (!failed.empty()) s += ". Not decided (the fit failed): " + join(failed, ", ", ", ");
-  const std::vector<std::string> warnings = fit_warnings(loop.final_fit);
-  s += ". The fit is limited by ";
-  if (loop.structure_remains)
-    s += "something the catalogue of effects does not name (structure remains in the residual)";
-  else if (!warnings.empty())
-    s += "the data: " + warnings.front();
-  else
-    s += "the measurement noise (the residual is white, error " +
-         fmt("%.4f", loop.final_fit.error) + ")";
+  s += ". The fit is limited by " + limit_text(loop.final_fit, loop.structure_remains);
   return s + ".";
 }
 
@@ -259,6 +310,7 @@ std::string fit_report_text(const ReportInput& input, const FitReport& fit) {
   s += fit.residual_white
            ? "residuals: white (no structure found by the runs and lag-1 tests)\n"
            : "residuals: NOT white: the model misses something the data show (see the pictures)\n";
+  s += trace_text(fit);
   s += "error = rms over the channels of (channel rms / channel's largest |value|)\n";
   for (const std::string& w : fit_warnings(fit)) s += "WARNING: " + w + "\n";
   return s;

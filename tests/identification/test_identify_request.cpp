@@ -95,8 +95,9 @@ TEST(IdentifyRequest, BadValuesAreRefusedNamingTheKeyAndTheRange) {
       {[](IdentifyRequest& q) {
          q.normal_load_n = 4000.0;
          q.profile = "hertz";
+         q.pressure_pa = 2e5;
        },
-       "give normal_load or profile, not both", "give --normal-load or --profile, not both"},
+       "give normal_load or pressure, not both", "give --normal-load or --pressure, not both"},
       {[](IdentifyRequest& q) { q.profile_smoothing = 4; }, "profile_smoothing needs profile",
        "--profile-smoothing needs --profile"},
       {[](IdentifyRequest& q) { q.fix["a"] = std::nan(""); }, "fix a = nan: must be finite",
@@ -151,6 +152,11 @@ TEST(IdentifyRequest, NormalLoadComesFromTheProfileOrElseFromTheFzColumn) {
   const IdentifyRun given = identify(sweep(4500.0), r);
   EXPECT_EQ(*given.input.normal_load_n, 4000.0);
   EXPECT_TRUE(given.input.normal_load_source.empty());
+  // Given with a built-in profile: the profile gives the shape, the load is the one given.
+  r.profile = "hertz";
+  const IdentifyRun given_with_profile = identify(sweep(std::nullopt), r);
+  EXPECT_EQ(*given_with_profile.input.normal_load_n, 4000.0);
+  r.profile.clear();
   // From a built-in profile and its pressure: N = 2 pi R^2 p* A1 (theory.md section 1), the
   // same as the contact patch computes.
   r.normal_load_n.reset();

@@ -31,11 +31,16 @@
 #include <string>
 #include <vector>
 
+#include "contensou/identification/effect_catalogue.hpp"
 #include "contensou/identification/fit.hpp"
 
 namespace contensou {
 
-// The effect name of the noise step.
+// The largest share b of |y| in sigma = a + b |y| the noise step takes for noise (a load cell's
+// is a few tenths of a percent); above it the growth is a misfit's, and the step is refused.
+inline constexpr double kPlausibleNoiseGrowth = 0.1;
+
+// The effect name of the noise step (describe(Effect::noise_growth).name).
 inline constexpr const char* kNoiseGrowthEffect = "noise_growth";
 
 struct CandidateScore {
@@ -47,7 +52,8 @@ struct CandidateScore {
 
 struct LoopStep {
   std::vector<CandidateScore> scores;  // every candidate tried, most significant first
-  std::string effect, detail;          // the one fitted
+  Effect kind = Effect::shape;         // the one fitted (effect_catalogue.hpp)
+  std::string effect, detail;          // its name (describe(kind).name) and detail
   bool accepted = false;
   bool removed = false;                       // accepted, then removed by the backward pass
   std::string verdict;                        // why it was accepted or not

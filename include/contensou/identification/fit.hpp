@@ -25,6 +25,7 @@
 #include "contensou/friction/pressure_profile.hpp"
 #include "contensou/identification/effect_model.hpp"
 #include "contensou/identification/measured_data.hpp"
+#include "contensou/identification/residual_trace.hpp"
 
 namespace contensou {
 
@@ -71,6 +72,10 @@ struct ParameterEstimate {
   bool derived = false;    // computed from the profile, not estimated
   double std_error = std::numeric_limits<double>::quiet_NaN();
   std::optional<std::array<double, 2>> ci95;
+  // What a parameter of a friction_dependence slot follows, and the dependence in the variable's
+  // units ("f (1 + b1 z), z = T [degC] over 293.15 to 313.15 K: (1/f) df/dX = -0.0042 1/K");
+  // "" for the others.
+  std::string note;
 };
 
 // Residual diagnostics of one channel, points ordered along psi = |v| / |omega R| (or time).
@@ -84,6 +89,9 @@ struct ChannelDiagnostics {
   double lag1 = 0.0;
   double durbin_watson = 2.0;
   bool white = true;
+  // The residual's scatter between neighbouring rows (outliers.hpp, neighbour_scatter): the
+  // noise as the data show it, whatever the model misses (0: too few rows to tell).
+  double neighbour_scale = 0.0;
 };
 
 // The noise scales of a fit: its model and the per-channel constants.
@@ -119,6 +127,12 @@ struct FitReport {
   bool residual_white = true;
   bool converged = false;
   std::string solver_summary;
+  // What the residual follows (residual_trace.hpp); filled by identify() and the closed loop
+  // for the fits they report (empty otherwise).
+  ResidualTrace trace;
+  // Every channel's rms within 1.5 times its scatter between neighbouring rows: the misfit is no
+  // larger than the noise the data show.
+  bool within_noise() const;
 
   const ParameterEstimate* parameter(const std::string& name) const;
   NoiseScales noise_scales() const { return {noise_model, noise_scale, noise_slope}; }

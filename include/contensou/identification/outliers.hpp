@@ -3,11 +3,17 @@
 // is reported, so that its parameters and intervals are those of the clean rows.
 //
 // The rule (documented in docs/identification.md): in each channel, the residual e_i = y_i -
-// model_i of a row is compared with the median of those of its four neighbours in file order (two
-// before, two after, where the channel was measured) that are in its regime (same spin sense,
-// sliding direction within 0.2 rad, v/omega within a factor 3; or all at rest), d_i = e_i - median;
+// model_i of a row is compared with the median of those of its four neighbours in kinematic order
+// (two before, two after, where the channel was measured; rows ordered by load, spin sense,
+// sliding direction, then v / |omega| and |omega|, whatever the order of the file) that are in
+// its regime (same spin sense,
+// sliding direction within 0.2 rad, v/omega within a factor 5; or all at rest), d_i = e_i - median;
 // a row with fewer than two such neighbours is not judged. A smooth misfit of the model (a missing
 // effect) hardly changes from one row to the next and cancels in d; an isolated glitch does not.
+// The row's own residual must carry at least half of d, with its sign: a good row beside glitched
+// ones (a run of sign flips at a sweep's peak) differs from them by their residual, not its own,
+// and is not named. The model is a robust fit (Cauchy loss, identify.hpp), which glitches do not
+// pull towards them.
 // The robust noise scale at the value is sigma = 1.4826 median|d| / 1.14 over the 16 values up
 // to it and over the 16 from it on, the larger (local, because noise changes along a file: it
 // grows with the load, sweeps in other directions have other scales; 1.14: d of Gaussian noise
@@ -40,6 +46,13 @@ struct Outlier {
 std::vector<Outlier> find_outliers(const MeasuredData& data,
                                    const std::vector<Resultants<double>>& prediction,
                                    double threshold_sigma = kOutlierThresholdSigma);
+
+// The scatter of each channel's residual between neighbouring rows (the rule's d, in kinematic
+// order): 1.4826 median |d| / 1.14 over the channel, a noise scale that a smooth misfit of the
+// model does not inflate (0 for a channel with fewer than four such differences). A residual
+// whose rms is several times it is a misfit, not noise.
+std::array<double, kChannels> neighbour_scatter(const MeasuredData& data,
+                                                const std::vector<Resultants<double>>& prediction);
 
 // The data with the outlying values marked not measured (a row left with no channel is
 // dropped).
