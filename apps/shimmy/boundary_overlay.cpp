@@ -131,7 +131,7 @@ nlohmann::json write_overlay(const OutputDir& dir, const std::vector<ComputedMap
       const auto at = inside_frame(m, c->x, c->y);
       labels << "set label " << 10 * (k + 1) + q << " \"" << to_string(m.contact)
              << " unstable: " << (om.lobes[q].source.empty() ? "?" : om.lobes[q].source) << "\" at "
-             << at[0] << "," << at[1] << " front center boxed tc rgb '" << colour
+             << at.x << "," << at.y << " " << at.align << " front boxed tc rgb '" << colour
              << "' font ',9'\n";
     }
     // A model without a boundary has no line to plot: its key entry comes from NaN.
@@ -149,8 +149,8 @@ nlohmann::json write_overlay(const OutputDir& dir, const std::vector<ComputedMap
   // The region where every model is stable, labelled at its centre.
   if (const MapCell* c = overlay.stable_cell) {
     const auto at = inside_frame(first, c->x, c->y);
-    labels << "set label 1 \"stable in every model\" at " << at[0] << "," << at[1]
-           << " center front boxed\n";
+    labels << "set label 1 \"stable in every model\" at " << at.x << "," << at.y << " " << at.align
+           << " front boxed\n";
   }
   // The operating point (the configuration's values of the two parameters).
   const ComputedMap& cm = maps[static_cast<std::size_t>(overlay.models.front().map)];

@@ -29,7 +29,7 @@ std::vector<HistoryFigure> history_figures(const GearStructure& structure) {
       {"torque",
        "moments on the strut about its axis: the torsion equation's terms",
        {{"offset drag -l Fx", "offset_drag_moment_nm"},
-        {"contact torque Mz (spin friction; string tire: aligning)", "Mz_nm", true},
+        {"contact torque Mz (spin or aligning)", "Mz_nm", true},
         {"trail -e Fy", "trail_moment_nm"},
         {"torque link -k psi - c dpsi/dt", "torque_link_nm"}}}};
   if (structure.fore_aft_stiffness_n_per_m > 0.0)

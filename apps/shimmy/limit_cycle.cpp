@@ -74,8 +74,9 @@ LimitCycle assess_limit_cycle(const LandingRun& run, const GearStructure& struct
     rate.push_back(s.x[kPsiDot]);
   }
   static_cast<CycleTrend&>(c) = cycle_trend(
-      t, psi, rate, structure, frequency_hz > 0.0 ? 1.0 / frequency_hz : 0.0, run.window_start_s,
-      run.window_end_s, eigen_growth_per_s, criterion.amplitude_threshold_rad);
+      t, psi, rate, structure,
+      {frequency_hz > 0.0 ? 1.0 / frequency_hz : 0.0, run.window_start_s, run.window_end_s},
+      eigen_growth_per_s, criterion.amplitude_threshold_rad);
   c.verdict = describe(c, criterion);
   return c;
 }

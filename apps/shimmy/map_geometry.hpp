@@ -100,13 +100,24 @@ inline const MapCell& lobe_centre(const StabilityMap& m, const std::vector<int>&
   return *best;
 }
 
-// A label's anchor kept clear of the frame: between 8 % and 92 % of each axis.
-inline std::array<double, 2> inside_frame(const StabilityMap& m, double x, double y) {
+// A label's anchor kept clear of the frame: between 3 % and 97 % of each axis, and the
+// alignment that keeps its text inside (left in the left third, right in the right third).
+struct LabelAnchor {
+  double x = 0.0, y = 0.0;
+  const char* align = "center";
+};
+inline LabelAnchor inside_frame(const StabilityMap& m, double x, double y) {
   const auto clamp = [](double v, double a, double b) {
-    const double lo = a + 0.08 * (b - a), hi = a + 0.92 * (b - a);
+    const double lo = a + 0.03 * (b - a), hi = a + 0.97 * (b - a);
     return lo <= hi ? std::min(std::max(v, lo), hi) : std::min(std::max(v, hi), lo);
   };
-  return {clamp(x, m.x.from, m.x.to), clamp(y, m.y.from, m.y.to)};
+  LabelAnchor l{clamp(x, m.x.from, m.x.to), clamp(y, m.y.from, m.y.to), "center"};
+  const double span = m.x.to - m.x.from;
+  const double rel = span != 0.0 ? (l.x - m.x.from) / span : 0.5;
+  l.align = rel < 0.3 ? "left" : rel > 0.7 ? "right" : "center";
+  // Keep the text off the frame's top and bottom lines too.
+  l.y = clamp(l.y, m.y.from + 0.02 * (m.y.to - m.y.from), m.y.to - 0.02 * (m.y.to - m.y.from));
+  return l;
 }
 
 }  // namespace contensou::app

@@ -61,8 +61,8 @@ std::string map_labels(const StabilityMap& m, double x0, double y0) {
     const auto at = inside_frame(m, c.x, c.y);
     char text[96];
     std::snprintf(text, sizeof text, "unstable (%zu cells): up to %+.2f 1/s", lobe.size(), g);
-    gp << "set label " << ++k << " \"" << text << "\" at " << at[0] << "," << at[1]
-       << " center front boxed font ',9'\n";
+    gp << "set label " << ++k << " \"" << text << "\" at " << at.x << "," << at.y << " " << at.align
+       << " front boxed font ',9'\n";
   }
   const bool in_x = (x0 - m.x.from) * (x0 - m.x.to) <= 0.0;
   const bool in_y = (y0 - m.y.from) * (y0 - m.y.to) <= 0.0;

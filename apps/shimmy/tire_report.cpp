@@ -154,11 +154,16 @@ void choose_model(const ReportSource& r, const nlohmann::json& j, TireReport& ou
         "final.params.a.value missing, and no base fit to fall back on (write the report "
         "with contensou-identify --json)");
   out.model = "base";
-  out.note = "the final model (" + model_words(fin) + ": " + extra_parameters(fin) + ") " +
-             (exact ? "is the exact law over a pressure profile, " : "") +
-             "not the fractional law the gear's tire is; the report's base fit, the fractional "
-             "law fitted to the same data, is the tire instead (the final model's effects are "
-             "not carried)";
+  const std::string extra = extra_parameters(fin);
+  out.note =
+      "the final model (" + model_words(fin) + (extra.empty() ? "" : ": " + extra) + ") " +
+      (exact ? std::string("is the exact law over a pressure profile") +
+                   (has_law(j, "final") ? " (its a, M0, m the profile's asymptotic values)" : "") +
+                   ", "
+             : std::string()) +
+      "not the fractional law the gear's tire is; the report's base fit, the fractional "
+      "law fitted to the same data, is the tire instead (the final model's effects are "
+      "not carried)";
 }
 
 }  // namespace

@@ -171,8 +171,9 @@ void run_to_settled(const GearModel& model, const StabilityReport& rep, const Ge
     const OscillationEstimate osc = analyse_oscillation(seg.t, seg.rate, seg.psi);
     p.frequency_hz = osc.valid() ? osc.frequency_hz : 0.0;
     if (osc.valid()) period = 1.0 / osc.frequency_hz;
-    trend = cycle_trend(seg.t, seg.psi, seg.rate, model.config.structure, period, seg.t.front(),
-                        seg.t.back(), rep.growth_rate_per_s, o.amplitude_threshold_rad);
+    trend = cycle_trend(seg.t, seg.psi, seg.rate, model.config.structure,
+                        {period, seg.t.front(), seg.t.back()}, rep.growth_rate_per_s,
+                        o.amplitude_threshold_rad);
     const bool done =
         trend.state == CycleState::limit_cycle || trend.state == CycleState::settled_small ||
         trend.state == CycleState::not_measured ||

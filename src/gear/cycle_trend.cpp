@@ -47,13 +47,12 @@ double log_slope(const std::vector<double>& t, const std::vector<double>& a) {
 }  // namespace
 
 CycleTrend cycle_trend(const std::vector<double>& t, const std::vector<double>& psi,
-                       const std::vector<double>& psi_rate, const GearStructure& g, double period_s,
-                       double window_start_s, double window_end_s, double eigen_growth_per_s,
-                       double threshold_rad) {
+                       const std::vector<double>& psi_rate, const GearStructure& g,
+                       const CycleWindow& w, double eigen_growth_per_s, double threshold_rad) {
   CycleTrend c;
   c.band_per_s = settling_band(eigen_growth_per_s);
-  const double P = period_s, end = window_end_s;
-  if (!(P > 0.0) || t.empty() || end - kTrendPeriods * P < window_start_s) return c;
+  const double P = w.period_s, end = w.end_s;
+  if (!(P > 0.0) || t.empty() || end - kTrendPeriods * P < w.start_s) return c;
   // Per period k (0: the last): the extremes of psi and of the torsional moment.
   constexpr double kInf = std::numeric_limits<double>::infinity();
   std::vector<double> lo(kTrendPeriods, kInf), hi(kTrendPeriods, -kInf);

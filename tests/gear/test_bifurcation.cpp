@@ -46,7 +46,7 @@ TEST(CycleTrend, RecoversTheGrowthOfASineAndClassifiesItAgainstTheBand) {
   GearStructure g;
   for (const double s : {-1.0, -0.2, 0.0, 0.02, 0.34, 2.0}) {
     const Synthetic x = damped_sine(0.03, s, 32.0, 1.0);
-    const CycleTrend c = cycle_trend(x.t, x.psi, x.rate, g, 1.0 / 32.0, 0.3, 1.0, 0.41, 1e-3);
+    const CycleTrend c = cycle_trend(x.t, x.psi, x.rate, g, {1.0 / 32.0, 0.3, 1.0}, 0.41, 1e-3);
     ASSERT_TRUE(c.measured);
     EXPECT_NEAR(c.trend_per_s, s, 0.02 + 0.01 * std::abs(s)) << "s = " << s;
     EXPECT_NEAR(c.band_per_s, 0.041, 1e-12);
@@ -65,14 +65,15 @@ TEST(CycleTrend, RecoversTheGrowthOfASineAndClassifiesItAgainstTheBand) {
   }
   // The case: a trend of +0.34 1/s against an eigenvalue of +0.41 1/s is not settled.
   const Synthetic x = damped_sine(0.03, 0.34, 32.0, 1.0);
-  EXPECT_EQ(cycle_trend(x.t, x.psi, x.rate, g, 1.0 / 32.0, 0.3, 1.0, 0.41, 1e-3).state,
+  EXPECT_EQ(cycle_trend(x.t, x.psi, x.rate, g, {1.0 / 32.0, 0.3, 1.0}, 0.41, 1e-3).state,
             CycleState::growing);
   // Fewer than kTrendPeriods periods in the window: not measured.
-  EXPECT_FALSE(cycle_trend(x.t, x.psi, x.rate, g, 1.0 / 32.0, 0.9, 1.0, 0.41, 1e-3).measured);
+  EXPECT_FALSE(cycle_trend(x.t, x.psi, x.rate, g, {1.0 / 32.0, 0.9, 1.0}, 0.41, 1e-3).measured);
   // A settled swing below the threshold is not a limit cycle.
   const Synthetic small = damped_sine(1e-4, 0.0, 32.0, 1.0);
-  EXPECT_EQ(cycle_trend(small.t, small.psi, small.rate, g, 1.0 / 32.0, 0.3, 1.0, -2.0, 1e-3).state,
-            CycleState::settled_small);
+  EXPECT_EQ(
+      cycle_trend(small.t, small.psi, small.rate, g, {1.0 / 32.0, 0.3, 1.0}, -2.0, 1e-3).state,
+      CycleState::settled_small);
 }
 
 namespace {

@@ -35,11 +35,16 @@ struct CycleTrend {
   double torque_link_nm = 0.0;  // half the swing of k_psi psi + c_psi psi' over the last period
 };
 
-// From samples (t ascending, psi, psi') over [window_start, window_end] with the oscillation's
-// period; `threshold_rad` tells a limit cycle from a settled small motion.
+// The oscillation's period and the window its samples are read over.
+struct CycleWindow {
+  double period_s = 0.0;
+  double start_s = 0.0, end_s = 0.0;
+};
+
+// From samples (t ascending, psi, psi') over the window; `threshold_rad` tells a limit cycle
+// from a settled small motion.
 CycleTrend cycle_trend(const std::vector<double>& t, const std::vector<double>& psi,
                        const std::vector<double>& psi_rate, const GearStructure& structure,
-                       double period_s, double window_start_s, double window_end_s,
-                       double eigen_growth_per_s, double threshold_rad);
+                       const CycleWindow& window, double eigen_growth_per_s, double threshold_rad);
 
 }  // namespace contensou
