@@ -58,7 +58,7 @@ std::string sweep_csv(const BifurcationSweep& s, const std::vector<SweepPoint>& 
     o << p.value << ',' << to_string(p.state) << ',' << finite_or_nan(p.amplitude_rad, p.valid)
       << ',' << finite_or_nan(p.torque_link_nm, p.valid) << ','
       << finite_or_nan(p.trend_per_s, p.valid) << ','
-      << finite_or_nan(p.frequency_hz, p.valid && p.frequency_hz > 0) << ','
+      << finite_or_nan(p.frequency_hz, cycle && p.frequency_hz > 0) << ','
       << finite_or_nan(p.eigen_growth_per_s, p.error.empty()) << ','
       << finite_or_nan(p.eigen_frequency_hz, p.error.empty()) << ','
       << finite_or_nan(p.onset_s, cycle) << ',' << p.run_s << ',' << p.valid << ",\"" << p.error
@@ -115,14 +115,16 @@ std::string panel(const std::vector<const BifurcationSweep*>& group, const std::
   return gp.str() + "\n";
 }
 
-std::string header(const std::string& name, const std::string& parameter, int rows,
+std::string header(const std::string& name, const MapAxis& axis, int rows,
                    const std::string& title) {
+  const std::string& parameter = axis.parameter;
   std::ostringstream gp;
   gp << "set terminal pngcairo noenhanced size 960," << 60 + 320 * rows << " font ',10'\n"
      << "set output '" << name << ".png'\nset datafile separator ','\n"
      << "set datafile columnheaders\nset datafile missing 'nan'\n"
      << "set multiplot layout " << rows << ",1 title \"" << title << "\"\n"
-     << "set xlabel '" << parameter_axis_label(parameter) << "'\nset grid\n"
+     << "set xlabel '" << parameter_axis_label(parameter) << "'\nset xrange [" << axis.from << ":"
+     << axis.to << "]\nset grid\n"
      << "set key outside right top vertical\nset lmargin 12\n";
   return gp.str();
 }
@@ -132,7 +134,7 @@ void draw_amplitudes(const OutputDir& out, const std::vector<const BifurcationSw
   const std::string& parameter = group.front()->axis.parameter;
   const std::string name = "bifurcation_" + short_name(parameter);
   std::ostringstream gp;
-  gp << header(name, parameter, 2,
+  gp << header(name, group.front()->axis, 2,
                "braked slide: limit cycle against " + parameter_axis_label(parameter) +
                    "\\ndotted: linear boundaries (" + boundary_words(group) +
                    ")\\nwhere the two directions part: hysteresis (a subcritical branch)")
@@ -147,7 +149,7 @@ void draw_linear(const OutputDir& out, const std::vector<const BifurcationSweep*
   const std::string& parameter = group.front()->axis.parameter;
   const std::string name = "bifurcation_" + short_name(parameter) + "_growth";
   std::ostringstream gp, freq, growth, onset;
-  gp << header(name, parameter, 3,
+  gp << header(name, group.front()->axis, 3,
                "braked slide against " + parameter_axis_label(parameter) +
                    ": linear growth rate, shimmy frequency, time to onset\\n(onset: from a "
                    "kick of psi' = 0.01 rad/s to half the settled amplitude)")

@@ -224,7 +224,17 @@ SweepPoint sweep_point(const GearModel& base, const MapAxis& axis, int i, bool u
     const double before = carry.any ? carry.amplitude_rad : 0.0;
     if (up && before < 0.1 * o.amplitude_threshold_rad) x0[kPsiDot] += o.seed_rate_radps;
     if (!up && !carry.any) x0[kPsi] += o.start_amplitude_rad;
-    run_to_settled(model, rep, x0, up && before < o.amplitude_threshold_rad, o, p, carry);
+    const bool from_small = up && before < o.amplitude_threshold_rad;
+    run_to_settled(model, rep, x0, from_small, o, p, carry);
+    // The time to onset where the up sweep carried a cycle in: a run of its own from the kick.
+    if (up && !from_small && p.state == CycleState::limit_cycle) {
+      GearState kicked = rep.state.x;
+      kicked[kPsiDot] += o.seed_rate_radps;
+      SweepPoint fresh = p;
+      Carry unused;
+      run_to_settled(model, rep, kicked, true, o, fresh, unused);
+      p.onset_s = fresh.onset_s;
+    }
   } catch (const Interrupted&) {
     throw;
   } catch (const std::exception& e) {

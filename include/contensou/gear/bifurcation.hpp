@@ -39,8 +39,9 @@ struct SweepPoint {
   double trend_per_s = 0.0;     // of ln(amplitude) over the last kTrendPeriods periods
   double frequency_hz = 0.0;    // of the simulated oscillation (zero crossings); 0 if none
   double run_s = 0.0;           // how long this point ran
-  // Up sweep, from a motion below the threshold: time from the point's start until the half
-  // swing first reaches half the settled amplitude (the time to onset); NaN otherwise.
+  // Up sweep, where it settles on a cycle: the time from a kick of seed_rate_radps at the
+  // quasi-steady state until the half swing first reaches half the settled amplitude (the time
+  // to onset; its own run where the sweep carried the cycle in); NaN otherwise.
   double onset_s = 0.0;
   double eigen_growth_per_s = 0.0;  // the linearisation's dominant oscillatory mode
   double eigen_frequency_hz = 0.0;
