@@ -230,7 +230,8 @@ def bench_table(path, out):
                    f"{fmt(rt, 4) + '×' if rt else '–'} | {fmt(r.get('steps'), 4)} | "
                    f"{fmt(r.get('rhs'), 4)} |")
     out.append("")
-    out.append(f"Medians of {len(rows) // max(len(medians), 1) - 1 if medians else 1} repetitions. "
+    reps = sum(1 for r in rows if r.get("run_type") == "iteration") // max(len(medians), 1)
+    out.append(f"Medians of {reps} repetitions (the machine is shared: times move with its load). "
                "BM_Rhs and BM_Jacobian: one right-hand side and one structured Jacobian at the "
                "braked slide's quasi-steady state; a landing's time less its RHS evaluations × "
                "BM_Rhs is CVODE's own work per step (error test, Nordsieck update, LU solves).")
