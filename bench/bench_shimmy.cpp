@@ -8,6 +8,7 @@
 #include <chrono>
 
 #include "contensou/gear/landing_simulation.hpp"
+#include "contensou/gear/linear_stability.hpp"
 #include "contensou/gear/stability_map.hpp"
 
 using namespace contensou;
@@ -56,7 +57,29 @@ void BM_LinearMap(benchmark::State& state) {
   state.counters["cells"] = 2500;
 }
 
+// Where a landing's time goes: one right-hand side and one structured Jacobian at the braked
+// slide's quasi-steady state (the landing's counters say how many of each it takes; the rest is
+// CVODE's own step, error test and LU).
+void BM_Rhs(benchmark::State& state, ContactModel contact) {
+  const GearModel m = make_gear_model(GearConfig{}, contact);
+  const QuasiSteadyState q = quasi_steady_state(m, StabilityPhase::braked_slide);
+  for (auto _ : state) benchmark::DoNotOptimize(gear_rhs(m, q.mode, q.t, q.x));
+}
+
+void BM_Jacobian(benchmark::State& state, ContactModel contact) {
+  const GearModel m = make_gear_model(GearConfig{}, contact);
+  const QuasiSteadyState q = quasi_steady_state(m, StabilityPhase::braked_slide);
+  for (auto _ : state) benchmark::DoNotOptimize(gear_jacobian(m, q.mode, q.t, q.x));
+}
+
 }  // namespace
+
+BENCHMARK_CAPTURE(BM_Rhs, coupled, ContactModel::coupled)->Unit(benchmark::kMicrosecond);
+BENCHMARK_CAPTURE(BM_Rhs, decoupled, ContactModel::decoupled)->Unit(benchmark::kMicrosecond);
+BENCHMARK_CAPTURE(BM_Rhs, von_schlippe, ContactModel::von_schlippe)->Unit(benchmark::kMicrosecond);
+BENCHMARK_CAPTURE(BM_Jacobian, coupled, ContactModel::coupled)->Unit(benchmark::kMicrosecond);
+BENCHMARK_CAPTURE(BM_Jacobian, von_schlippe, ContactModel::von_schlippe)
+    ->Unit(benchmark::kMicrosecond);
 
 // Each landing with the structured Jacobian (gear_jacobian) and with CVODE's difference
 // quotients ("_dq"), in the same binary; "_bdf": CVODE's BDF instead of Adams-Moulton.

@@ -1,11 +1,14 @@
 #!/usr/bin/env bash
-# Regenerates the shimmy demo's pictures in docs/images from the app's own output, and writes
-# docs/images/shimmy-sources.json: for each picture the command and file it comes from, and the
-# numbers of the default run it shows (tests/cli/doc_images.sh checks them against a fresh run).
-# Usage: scripts/make-doc-images.sh [BUILD_DIR]     (default ./build; about 2 minutes)
+# Regenerates the shimmy demo's pictures in docs/images from the app's own output, writes
+# docs/images/shimmy-sources.json (for each picture the command and file it comes from, and the
+# numbers of the default run it shows: tests/cli/doc_images.sh checks them against a fresh run)
+# and docs/shimmy-results.md, every number the shimmy docs quote, with the commit, the machine
+# and its load (scripts/shimmy_results.py; with --bench also bench/bench_shimmy's times).
+# Usage: scripts/make-doc-images.sh [BUILD_DIR] [--bench]   (default ./build; a few minutes)
 set -euo pipefail
 cd "$(dirname "$0")/.."
 build="${1:-build}"
+bench="${2:-}"
 shimmy="$build/apps/contensou-shimmy"
 identify="$build/apps/contensou-identify"
 images=docs/images
@@ -21,11 +24,21 @@ copy_picture() {
   printf '%s\t%s\t%s\n' "$1" "$3" "${2#"$tmp"/}" >> "$sources"
 }
 
-# The default run (the three scenarios) with its 15 eigenvalue maps.
+# The default run (the three scenarios) with its eigenvalue maps and overlays.
 cmd="contensou-shimmy --map"
 "$shimmy" --out "$tmp/default" --map > "$tmp/default.txt"
-copy_picture shimmy_torsion.png "$tmp/default/large-offset/torsion.png" "$cmd"
-copy_picture shimmy_torque.png "$tmp/default/large-offset/torque.png" "$cmd"
+for picture in torsion torque spin forces energy; do
+  copy_picture "shimmy_$picture.png" "$tmp/default/large-offset/$picture.png" "$cmd"
+done
+copy_picture shimmy_touchdown_torsion.png "$tmp/default/touchdown/torsion.png" "$cmd"
+
+# Bifurcation diagrams of the large offset's braked slide: speed, offset, torsional damping.
+cmd="contensou-shimmy --bifurcation --set structure.offset_m=0.45 --set scenario.forward_speed_mps=58"
+"$shimmy" --out "$tmp/sweeps" --bifurcation --set structure.offset_m=0.45 \
+  --set scenario.forward_speed_mps=58 > "$tmp/sweeps.txt"
+for png in "$tmp"/sweeps/bifurcation_*.png; do
+  copy_picture "$(basename "$png")" "$png" "$cmd"
+done
 for png in "$tmp"/default/map_*.png "$tmp"/default/overlay_*.png; do
   copy_picture "$(basename "$png")" "$png" "$cmd"
 done
@@ -86,7 +99,15 @@ maps = {m["png"]: {"shimmy_cells": m["shimmy_cells"], "not_computed_cells": m["n
 json.dump({"generated_by": "scripts/make-doc-images.sh", "pictures": pictures,
            "default_run": numbers, "maps": maps}, open(sys.argv[3], "w"), indent=1)
 PY
+# The numbers of the docs, from these runs (and the benchmark when asked for).
+if [ "$bench" = "--bench" ]; then
+  "$build/bench/bench_shimmy" --benchmark_repetitions=3 --benchmark_format=json \
+    > "$tmp/bench.json"
+fi
+python3 scripts/shimmy_results.py "$tmp/shimmy-results.md" "$tmp/default" "$tmp/sweeps" \
+  "$tmp/tire" ${bench:+"$tmp/bench.json"}
 # Replace the pictures only when every one was made.
 while IFS=$'\t' read -r name _ _; do mv "$tmp/$name" "$images/$name"; done < "$sources"
 mv "$tmp/manifest.json" "$images/shimmy-sources.json"
+mv "$tmp/shimmy-results.md" docs/shimmy-results.md
 echo "make-doc-images: $(wc -l < "$sources") pictures and $images/shimmy-sources.json"

@@ -8,6 +8,7 @@
 #include "axis_label.hpp"
 #include "contensou/gear/linear_stability.hpp"
 #include "gnuplot.hpp"
+#include "map_geometry.hpp"
 
 namespace contensou::app {
 
@@ -88,12 +89,21 @@ Overlay analyse_overlay(const std::vector<ComputedMap>& maps, const std::vector<
     om.map = g;
     om.unstable = std::count_if(m.cells.begin(), m.cells.end(),
                                 [](const MapCell& c) { return c.valid && c.shimmy; });
-    om.label_cell = central_cell(m, [](const MapCell& cell) { return cell.valid && cell.shimmy; });
-    if (om.label_cell) {
+    std::vector<std::vector<int>> lobes = unstable_lobes(m);
+    std::sort(lobes.begin(), lobes.end(),
+              [](const auto& a, const auto& b) { return a.size() > b.size(); });
+    for (const std::vector<int>& lobe : lobes) {
+      OverlayLobe l;
+      l.cell = &lobe_centre(m, lobe);
       GearModel model = model_of(m.contact);
-      *gear_parameter(model.config, m.x.parameter) = om.label_cell->x;
-      *gear_parameter(model.config, m.y.parameter) = om.label_cell->y;
-      om.source = feeding_source(model, m.phase);
+      *gear_parameter(model.config, m.x.parameter) = l.cell->x;
+      *gear_parameter(model.config, m.y.parameter) = l.cell->y;
+      l.source = feeding_source(model, m.phase);
+      om.lobes.push_back(l);
+    }
+    if (!om.lobes.empty()) {
+      om.label_cell = om.lobes.front().cell;
+      om.source = om.lobes.front().source;
     }
     o.models.push_back(om);
   }
@@ -115,27 +125,39 @@ nlohmann::json write_overlay(const OutputDir& dir, const std::vector<ComputedMap
     const OverlayModel& om = overlay.models[k];
     const StabilityMap& m = maps[static_cast<std::size_t>(om.map)].map;
     const std::string colour = kColours[k % 4];
-    if (const MapCell* c = om.label_cell)
-      labels << "set label " << k + 1 << " \"" << to_string(m.contact)
-             << " unstable: " << (om.source.empty() ? "?" : om.source) << "\" at " << c->x << ","
-             << c->y << " front center tc rgb '" << colour
-             << "' offset 0,0.8 point pt 7 ps 1 lc rgb '" << colour << "'\n";
-    // A model without a boundary has no points to plot: its key entry comes from NaN.
+    // Every lobe labelled at its centre (kept inside the frame), in the model's colour.
+    for (std::size_t q = 0; q < om.lobes.size(); ++q) {
+      const MapCell* c = om.lobes[q].cell;
+      const auto at = inside_frame(m, c->x, c->y);
+      labels << "set label " << 10 * (k + 1) + q << " \"" << to_string(m.contact)
+             << " unstable: " << (om.lobes[q].source.empty() ? "?" : om.lobes[q].source) << "\" at "
+             << at.x << "," << at.y << " " << at.align << " front boxed tc rgb '" << colour
+             << "' font ',9'\n";
+    }
+    // A model without a boundary has no line to plot: its key entry comes from NaN.
     plots << (k ? ", " : "");
     if (om.unstable > 0)
       plots << "'" << bases[static_cast<std::size_t>(om.map)] << "_boundary.csv' using \""
             << m.x.parameter << "\":\"" << m.y.parameter << "\"";
     else
       plots << "NaN";
-    plots << " with points pt 7 ps 0.5 lc rgb '" << colour << "' title '" << to_string(m.contact)
+    plots << " with lines lw 2 lc rgb '" << colour << "' title '" << to_string(m.contact)
           << ": unstable in " << om.unstable << " of " << m.cells.size() << " cells'";
     summary["models"][to_string(m.contact)] = {
         {"unstable_cells", om.unstable}, {"cells", m.cells.size()}, {"fed_by", om.source}};
   }
   // The region where every model is stable, labelled at its centre.
-  if (const MapCell* c = overlay.stable_cell)
-    labels << "set label " << overlay.models.size() + 1 << " \"stable in every model\" at " << c->x
-           << "," << c->y << " center front\n";
+  if (const MapCell* c = overlay.stable_cell) {
+    const auto at = inside_frame(first, c->x, c->y);
+    labels << "set label 1 \"stable in every model\" at " << at.x << "," << at.y << " " << at.align
+           << " front boxed\n";
+  }
+  // The operating point (the configuration's values of the two parameters).
+  const ComputedMap& cm = maps[static_cast<std::size_t>(overlay.models.front().map)];
+  if ((cm.operating_x - first.x.from) * (cm.operating_x - first.x.to) <= 0.0 &&
+      (cm.operating_y - first.y.from) * (cm.operating_y - first.y.to) <= 0.0)
+    labels << "set label 2 'operating point' at " << cm.operating_x << "," << cm.operating_y
+           << " point pt 9 ps 2 lc rgb 'black' offset 1.2,-0.6 front boxed font ',9'\n";
   gp << "set terminal pngcairo noenhanced size 820,680 font ',10'\nset output '" << name
      << ".png'\nset datafile separator ','\nset datafile columnheaders\n"
      << "set title \"stability boundaries, " << to_string(first.phase)
@@ -145,6 +167,7 @@ nlohmann::json write_overlay(const OutputDir& dir, const std::vector<ComputedMap
      << parameter_axis_label(first.y.parameter) << "'\n"
      << "set xrange [" << first.x.from << ":" << first.x.to << "]\nset yrange [" << first.y.from
      << ":" << first.y.to << "]\nset grid\nset key outside below\n"
+     << "set style textbox opaque noborder\n"
      << labels.str() << "plot " << plots.str() << "\n";
   run_gnuplot(dir, name, gp.str());
   return summary;

@@ -23,11 +23,16 @@ std::string feeding_source(const GearModel& model, StabilityPhase phase);
 // One overlay: the eigenvalue maps of several models with the same axes and phase. For each,
 // its unstable cells, the unstable cell nearest the region's centre (nullptr if none) and what
 // feeds the mode there; and the cell nearest the centre of the region stable in every model.
+struct OverlayLobe {
+  const MapCell* cell = nullptr;  // the lobe's cell nearest its centroid (map_geometry.hpp)
+  std::string source;             // feeding_source there ("" if none)
+};
 struct OverlayModel {
   int map = 0;  // index into the maps
   long unstable = 0;
-  const MapCell* label_cell = nullptr;
-  std::string source;  // feeding_source at label_cell ("" if none)
+  const MapCell* label_cell = nullptr;  // the largest lobe's centre (nullptr if none)
+  std::string source;                   // feeding_source at label_cell ("" if none)
+  std::vector<OverlayLobe> lobes;       // every unstable lobe, largest first
 };
 struct Overlay {
   std::vector<OverlayModel> models;

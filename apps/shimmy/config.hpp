@@ -46,6 +46,11 @@ struct ShimmyConfig {
        {"structure.torsional_damping_nms_per_rad", 0.0, 400.0, 50}},
       {{"scenario.forward_speed_mps", 30.0, 90.0, 50},
        {"scenario.static_load_n", 20.0e3, 140.0e3, 50}}};
+  // Bifurcation sweeps of the braked slide (--bifurcation): one parameter each, every model,
+  // swept up and down (contensou/gear/bifurcation.hpp).
+  std::vector<MapAxis> sweeps{{"scenario.forward_speed_mps", 30.0, 90.0, 21},
+                              {"structure.offset_m", 0.2, 0.6, 21},
+                              {"structure.torsional_damping_nms_per_rad", 0.0, 400.0, 21}};
 };
 
 // The default configuration as JSON (every key, with its value).

@@ -38,11 +38,18 @@ void read_models(const ConfigText& r, const std::string& key, const nlohmann::js
   c.models.clear();
   for (const auto& m : v) {
     if (!m.is_string()) r.fail_at_key(key, "expected model names, got " + m.dump());
+    ContactModel model = ContactModel::coupled;
     try {
-      c.models.push_back(contact_model_from_string(m.get<std::string>()));
+      model = contact_model_from_string(m.get<std::string>());
     } catch (const InvalidArgument& e) {
       r.fail_at_key(key, e.what());
     }
+    // Each model once: a list repeating one would run (and write) the same landing again.
+    if (std::find(c.models.begin(), c.models.end(), model) != c.models.end())
+      r.fail_at_key(key, std::string("the model ") + to_string(model) +
+                             " is listed twice (each model runs once: at most coupled, "
+                             "decoupled and von_schlippe)");
+    c.models.push_back(model);
   }
 }
 nlohmann::json write_models(const ShimmyConfig& c) {
@@ -126,6 +133,24 @@ nlohmann::json write_maps(const ShimmyConfig& c) {
   return maps;
 }
 
+void read_sweeps(const ConfigText& r, const std::string& key, const nlohmann::json& v,
+                 ShimmyConfig& c) {
+  if (!v.is_array()) r.fail_at_key(key, "expected an array of {parameter, from, to, points}");
+  c.sweeps.clear();
+  for (const auto& a : v) {
+    MapAxis axis;
+    read_axis(r, key, "axis", nlohmann::json{{"axis", a}}, axis);
+    c.sweeps.push_back(axis);
+  }
+}
+nlohmann::json write_sweeps(const ShimmyConfig& c) {
+  nlohmann::json sweeps = nlohmann::json::array();
+  for (const MapAxis& a : c.sweeps)
+    sweeps.push_back(
+        {{"parameter", a.parameter}, {"from", a.from}, {"to", a.to}, {"points", a.points}});
+  return sweeps;
+}
+
 // CVODE's linear multistep method (docs/shimmy.md section 5): Adams-Moulton (the default, for
 // this lightly damped gear) or BDF (for a much stiffer configuration).
 void read_solver_method(const ConfigText& r, const std::string& key, const nlohmann::json& v,
@@ -142,7 +167,7 @@ constexpr ParameterRange kPositive{ParameterRange::positive};
 constexpr ParameterRange kFinite{ParameterRange::finite};
 
 // The app's own keys, after the gear's; the numbers are validated in this order.
-std::array<ConfigKey, 8> app_keys() {
+std::array<ConfigKey, 9> app_keys() {
   ConfigKey gear{"gear", "name", "", "the named gear the other values change"};
   gear.values = "default or legacy";
   gear.read = read_gear_name;
@@ -156,6 +181,12 @@ std::array<ConfigKey, 8> app_keys() {
   maps.values = "method eigenvalues or simulation, phase touchdown or braked_slide";
   maps.read = read_maps;
   maps.write = write_maps;
+  ConfigKey sweeps{"sweeps", "list of axes", "",
+                   "bifurcation sweeps of the braked slide (--bifurcation): {parameter, from, to, "
+                   "points}, each swept up and down for every model"};
+  sweeps.values = "a gear parameter from and to within its valid values";
+  sweeps.read = read_sweeps;
+  sweeps.write = write_sweeps;
   ConfigKey method{"solver.method", "name", "", "CVODE's method: Adams-Moulton or BDF"};
   method.values = "adams or bdf";
   method.read = read_solver_method;
@@ -178,7 +209,7 @@ std::array<ConfigKey, 8> app_keys() {
   growth.number = [](ShimmyConfig& c) -> double& {
     return c.criterion.sustained_growth_rate_per_s;
   };
-  return {gear, models, maps, method, rtol, interval, amplitude, growth};
+  return {gear, models, maps, sweeps, method, rtol, interval, amplitude, growth};
 }
 
 std::string_view gear_type(const GearParameter& p) {
@@ -280,6 +311,27 @@ void validate_keys(const ShimmyConfig& config) {
   ShimmyConfig c = config;  // read only (the accessors take it non-const)
   for (const ConfigKey& k : app_keys())
     if (k.number) check_app_range(k, k.number(c));
+  // Every map's axes: known keys, finite ends and span inside the key's valid values, two
+  // different keys (stability_map.hpp, check_map_axes).
+  for (std::size_t k = 0; k < config.maps.size(); ++k) {
+    try {
+      check_map_axes(config.gear, config.maps[k].x, config.maps[k].y);
+    } catch (const InvalidArgument& e) {
+      throw InvalidArgument(
+          "maps", "map " + std::to_string(k + 1) + " of " + std::to_string(config.maps.size()),
+          e.what());
+    }
+  }
+  for (std::size_t k = 0; k < config.sweeps.size(); ++k) {
+    try {
+      check_map_axis(config.gear, config.sweeps[k], "sweep");
+    } catch (const InvalidArgument& e) {
+      throw InvalidArgument(
+          "sweeps",
+          "sweep " + std::to_string(k + 1) + " of " + std::to_string(config.sweeps.size()),
+          e.what());
+    }
+  }
 }
 
 std::string valid_values(const ConfigKey& key) {

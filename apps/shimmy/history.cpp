@@ -1,5 +1,6 @@
 #include "history.hpp"
 
+#include <cmath>
 #include <stdexcept>
 
 namespace contensou::app {
@@ -30,7 +31,10 @@ const std::vector<HistoryColumn>& history_column_table() {
       {"Fy_n", "friction force Fy", "N"},
       {"Mz_nm", "friction torque Mz", "N m"},
       {"brake_nm", "brake torque", "N m"},
-      {"rolling", "rolling (1) or sliding (0)", "1"}};
+      {"rolling", "rolling (1) or sliding (0)", "1"},
+      {"offset_drag_moment_nm", "offset drag moment -l Fx", "N m"},
+      {"trail_moment_nm", "trail moment -e Fy", "N m"},
+      {"torque_link_nm", "torque-link moment -k psi - c psi'", "N m"}};
   return table;
 }
 
@@ -43,7 +47,7 @@ const std::vector<std::string>& history_columns() {
   return names;
 }
 
-std::vector<double> history_row(const LandingSample& s) {
+std::vector<double> history_row(const LandingSample& s, const GearStructure& g) {
   const ContactState& c = s.contact;
   std::vector<double> row{s.t};
   for (int i = 0; i < kStateSize; ++i) row.push_back(s.x[i]);
@@ -51,6 +55,19 @@ std::vector<double> history_row(const LandingSample& s) {
        {c.load_n, c.patch_radius_m, c.slip.vx, c.slip.vy, c.slip.omega, c.slip_ratio, c.friction,
         c.force.Fx, c.force.Fy, c.force.Mz, c.brake_torque_nm, s.rolling ? 1.0 : 0.0})
     row.push_back(v);
+  // The torsion equation's moments (landing_gear.hpp): the drag's lever grows by e_y with
+  // carcass compliance; d(psi) the torque link's smooth dead zone (GearStructure::freeplay_rad).
+  const double lever = g.offset_m + (g.carcass_compliance() ? s.x[kCarcassY] : 0.0);
+  const double psi = s.x[kPsi], delta = g.freeplay_rad;
+  double d = psi;
+  if (delta > 0.0) {
+    const double w = delta / 20.0, a = psi - delta, b = psi + delta;
+    d = 0.5 * (a + std::sqrt(a * a + w * w)) + 0.5 * (b - std::sqrt(b * b + w * w));
+  }
+  row.push_back(-lever * c.force.Fx);
+  row.push_back(-g.trail_m * c.force.Fy);
+  row.push_back(-g.torsional_stiffness_nm_per_rad * d -
+                g.torsional_damping_nms_per_rad * s.x[kPsiDot]);
   return row;
 }
 

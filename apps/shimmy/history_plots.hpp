@@ -1,5 +1,7 @@
-// The time-history pictures of the shimmy demo: one PNG per quantity, the models side by side
-// on one y-range, columns selected by their CSV header names.
+// The time-history pictures of the shimmy demo: one PNG per quantity, the models overlaid in
+// their colours (model_colours.hpp) panel by panel, the events marked (touchdown, full load,
+// each model's spin-up, brake on and off), the analysis window shaded; columns selected by
+// their CSV header names. A degree of freedom that is off has no picture.
 #pragma once
 
 #include <string>
@@ -11,21 +13,31 @@
 namespace contensou::app {
 
 struct HistoryPanel {
-  std::string name;                  // the PNG's base name: "torque"
-  std::string axis;                  // the y axis in words, without unit: "friction torque"
-  std::vector<std::string> columns;  // history columns, all of one unit
+  std::string axis;    // the y axis in words, without unit: "torsion psi of the strut"
+  std::string column;  // a history column
+  // The decoupled model on the right axis (its Coulomb spin torque's spikes would squash the
+  // other models' curves).
+  bool decoupled_right = false;
 };
 
-const std::vector<HistoryPanel>& history_panels();
+struct HistoryFigure {
+  std::string name;   // the PNG's base name: "torque"
+  std::string title;  // what the figure shows
+  std::vector<HistoryPanel> panels;
+};
 
-// "Mz [N m]"-style axis label: the panel's axis and the unit of its columns ("-" for a pure
-// number). Throws std::logic_error if the columns do not share a unit.
+// The figures for a gear (fore-aft only when structure.fore_aft_stiffness_n_per_m > 0).
+std::vector<HistoryFigure> history_figures(const GearStructure& structure);
+
+// "torsion psi of the strut [rad]": the panel's axis and its column's unit ("-" for a pure
+// number).
 std::string panel_axis_label(const HistoryPanel& panel);
 
-// The gnuplot script of one panel over the runs, which read <model>.csv in the same folder.
-std::string history_plot_script(const HistoryPanel& panel, const std::vector<LandingRun>& runs);
+// The gnuplot script of one figure over the runs, which read <model>.csv in the same folder.
+std::string history_plot_script(const HistoryFigure& figure, const std::vector<LandingRun>& runs);
 
-// Writes and runs every panel's script in `dir`.
-void draw_histories(const OutputDir& dir, const std::vector<LandingRun>& runs);
+// Writes and runs every figure's script in `dir`.
+void draw_histories(const OutputDir& dir, const std::vector<LandingRun>& runs,
+                    const GearStructure& structure);
 
 }  // namespace contensou::app

@@ -3,57 +3,57 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
-#include <limits>
+#include <vector>
 
 namespace contensou::app {
 
 namespace {
 
-// Half the swing of psi and of the strut's torsional moment over samples with t in [from, to].
-std::pair<double, double> half_swings(const LandingRun& run, const GearStructure& g, double from,
-                                      double to) {
-  double lo = std::numeric_limits<double>::infinity(), hi = -lo, mlo = lo, mhi = -lo;
-  for (const LandingSample& s : run.samples) {
-    if (s.t < from || s.t > to) continue;
-    const double psi = s.x[kPsi];
-    const double moment =
-        g.torsional_stiffness_nm_per_rad * psi + g.torsional_damping_nms_per_rad * s.x[kPsiDot];
-    lo = std::min(lo, psi);
-    hi = std::max(hi, psi);
-    mlo = std::min(mlo, moment);
-    mhi = std::max(mhi, moment);
+std::string describe(const LimitCycle& c, const ShimmyCriterion& k) {
+  char buf[400];
+  const double e = c.eigen_growth_per_s;
+  switch (c.state) {
+    case CycleState::not_measured:
+      return "no limit cycle measured (the window holds fewer than " +
+             std::to_string(kTrendPeriods) + " periods)";
+    case CycleState::limit_cycle:
+      std::snprintf(buf, sizeof buf,
+                    "%s: a limit cycle of +-%.3g rad (torque link +-%.3g N m), settled by %.3g s "
+                    "(trend %+.3f 1/s within +-%.3f over %d periods; eigenvalue %+.3f 1/s%s)",
+                    e > 0.0 ? "shimmy" : "shimmy held by a nonlinearity", c.amplitude_rad,
+                    c.torque_link_nm, c.run_end_s, c.trend_per_s, c.band_per_s, kTrendPeriods, e,
+                    e > 0.0 ? (c.earlier_amplitude_rad > c.amplitude_rad
+                                   ? ", reached from above: the spin-up left a larger swing"
+                                   : "")
+                            : ": stable to small motions, the swing the landing left is past an "
+                              "unstable cycle");
+      return buf;
+    case CycleState::settled_small:
+      std::snprintf(buf, sizeof buf,
+                    "settled at +-%.3g rad, below the threshold %.3g rad, by %.3g s (trend "
+                    "%+.3f 1/s within +-%.3f; eigenvalue %+.3f 1/s)",
+                    c.amplitude_rad, k.amplitude_threshold_rad, c.run_end_s, c.trend_per_s,
+                    c.band_per_s, e);
+      return buf;
+    case CycleState::growing:
+      std::snprintf(buf, sizeof buf,
+                    "%s: +-%.3g rad at %.3g s, trend %+.3f 1/s (outside +-%.3f; eigenvalue "
+                    "%+.3f 1/s)%s",
+                    e > 0.0 ? "shimmy, still growing" : "still growing", c.amplitude_rad,
+                    c.run_end_s, c.trend_per_s, c.band_per_s, e,
+                    c.run_end_s >= kLongestRun ? "; not settled within the longest run" : "");
+      return buf;
+    case CycleState::decaying:
+      std::snprintf(buf, sizeof buf,
+                    "decaying: +-%.3g rad at %.3g s, trend %+.3f 1/s (outside +-%.3f; eigenvalue "
+                    "%+.3f 1/s)%s",
+                    c.amplitude_rad, c.run_end_s, c.trend_per_s, c.band_per_s, e,
+                    e > 0.0 ? ": unstable by eigenvalues, the landing's swing decays onto a cycle "
+                              "it has not reached yet"
+                            : "");
+      return buf;
   }
-  if (!(lo <= hi)) return {0.0, 0.0};
-  return {0.5 * (hi - lo), 0.5 * (mhi - mlo)};
-}
-
-std::string describe(const LimitCycle& c, double eigen_growth, const ShimmyCriterion& k) {
-  char buf[320];
-  const bool unstable = eigen_growth > 0.0, above = c.amplitude_rad > k.amplitude_threshold_rad;
-  const bool steady = std::abs(c.trend_per_s) <= 0.5;
-  if (unstable && above && steady)
-    std::snprintf(buf, sizeof buf, "shimmy: a limit cycle of +-%.3g rad (torque link +-%.3g N m)%s",
-                  c.amplitude_rad, c.torque_link_nm,
-                  c.trend_per_s < 0 ? ", reached from above: the spin-up left a larger swing" : "");
-  else if (unstable && above)
-    std::snprintf(buf, sizeof buf,
-                  "shimmy: %s at +-%.3g rad (trend %+.2f 1/s; torque link +-%.3g N m)",
-                  c.trend_per_s > 0 ? "still growing" : "settling toward a limit cycle",
-                  c.amplitude_rad, c.trend_per_s, c.torque_link_nm);
-  else if (unstable)
-    std::snprintf(buf, sizeof buf,
-                  "unstable by eigenvalues, but +-%.3g rad at the window's end is below the "
-                  "threshold %.3g rad: it grows too slowly to show in the window",
-                  c.amplitude_rad, k.amplitude_threshold_rad);
-  else if (above && c.trend_per_s > -0.5)
-    std::snprintf(buf, sizeof buf,
-                  "stable by eigenvalues; +-%.3g rad held by a nonlinearity the linearisation "
-                  "does not see (trend %+.2f 1/s)",
-                  c.amplitude_rad, c.trend_per_s);
-  else
-    std::snprintf(buf, sizeof buf, "stable: +-%.3g rad at the window's end, trend %+.2f 1/s",
-                  c.amplitude_rad, c.trend_per_s);
-  return buf;
+  return "";
 }
 
 }  // namespace
@@ -62,19 +62,40 @@ LimitCycle assess_limit_cycle(const LandingRun& run, const GearStructure& struct
                               double eigen_growth_per_s, double frequency_hz,
                               const ShimmyCriterion& criterion) {
   LimitCycle c;
-  const double period = frequency_hz > 0.0 ? 1.0 / frequency_hz : 0.0;
-  const double end = run.window_end_s, span = 3.0 * period;
-  if (period <= 0.0 || run.samples.empty() || end - 2.0 * span < run.window_start_s) {
-    c.verdict = "no limit cycle measured (the window holds fewer than six periods)";
-    return c;
+  c.eigen_growth_per_s = eigen_growth_per_s;
+  c.run_end_s = run.samples.empty() ? 0.0 : run.samples.back().t;
+  if (!(frequency_hz > 0.0) && run.metrics.torsion.valid())
+    frequency_hz = run.metrics.torsion.frequency_hz;
+  std::vector<double> t, psi, rate;
+  for (const LandingSample& s : run.samples) {
+    if (s.t < run.window_start_s || s.t > run.window_end_s) continue;
+    t.push_back(s.t);
+    psi.push_back(s.x[kPsi]);
+    rate.push_back(s.x[kPsiDot]);
   }
-  c.measured = true;
-  std::tie(c.amplitude_rad, c.torque_link_nm) = half_swings(run, structure, end - span, end);
-  c.earlier_amplitude_rad = half_swings(run, structure, end - 2.0 * span, end - span).first;
-  if (c.amplitude_rad > 0.0 && c.earlier_amplitude_rad > 0.0)
-    c.trend_per_s = std::log(c.amplitude_rad / c.earlier_amplitude_rad) / span;
-  c.verdict = describe(c, eigen_growth_per_s, criterion);
+  static_cast<CycleTrend&>(c) = cycle_trend(
+      t, psi, rate, structure,
+      {frequency_hz > 0.0 ? 1.0 / frequency_hz : 0.0, run.window_start_s, run.window_end_s},
+      eigen_growth_per_s, criterion.amplitude_threshold_rad);
+  c.verdict = describe(c, criterion);
   return c;
+}
+
+bool worth_extending(const LimitCycle& c, const ShimmyCriterion& criterion) {
+  if (c.state == CycleState::growing) return true;
+  return c.state == CycleState::decaying && c.amplitude_rad > criterion.amplitude_threshold_rad;
+}
+
+LandingScenario extended_run(const LandingScenario& s, double end_s) {
+  LandingScenario e = s;
+  const double shift = end_s - s.end_time_s;
+  e.end_time_s = end_s;
+  // A braked slide that lasts to (near) the end goes on to the new end; so does an explicit
+  // window that ends there.
+  if (s.braking && s.brake_off_s >= s.end_time_s - 0.1) e.brake_off_s = s.brake_off_s + shift;
+  if (s.window_end_s >= 0.0 && s.window_end_s >= s.end_time_s - 0.1)
+    e.window_end_s = s.window_end_s + shift;
+  return e;
 }
 
 }  // namespace contensou::app

@@ -9,6 +9,7 @@
 #include <cstdio>
 #include <iostream>
 #include <optional>
+#include <thread>
 
 #include "analysis.hpp"
 #include "boundary_overlay.hpp"
@@ -21,7 +22,9 @@
 #include "report.hpp"
 #include "run_guard.hpp"
 #include "scenarios.hpp"
+#include "sensitivity.hpp"
 #include "simulate.hpp"
+#include "sweeps.hpp"
 
 using namespace contensou;
 using namespace contensou::app;
@@ -85,7 +88,7 @@ nlohmann::json run_scenarios(const ShimmyConfig& config, const std::vector<std::
 // The command line (one struct, filled by add_options).
 struct Options {
   std::string config_path, out = "out/shimmy", gear = "default", tire_path;
-  bool maps = false, print_config = false, print_keys = false;
+  bool maps = false, bifurcation = false, print_config = false, print_keys = false;
   int map_size = 0, draws = 300;
   unsigned threads = 0, seed = 1;
   std::vector<std::string> overrides, scenarios;
@@ -103,9 +106,17 @@ void add_options(CLI::App& app, Options& o) {
       ->capture_default_str();
   app.add_option("--out", o.out, "output directory")->capture_default_str();
   app.add_flag("--map", o.maps, "also draw the stability maps of the configuration");
-  app.add_option("--map-size", o.map_size, "points per map axis (overrides the configuration)")
+  app.add_flag("--bifurcation", o.bifurcation,
+               "also sweep the braked slide's limit cycle over the configuration's sweeps "
+               "(speed, offset, torsional damping by default), up and down, for every model: "
+               "amplitude, torque-link load, growth, frequency and time to onset");
+  app.add_option("--map-size", o.map_size,
+                 "points per map axis (overrides the configuration); a run's maps take at most "
+                 "500000 eigenvalue cells and 20000 simulated landings")
       ->check(CLI::Range(2, 1000));
-  app.add_option("--threads", o.threads, "threads for the maps (0: all cores)")
+  app.add_option("--threads", o.threads,
+                 "threads for the maps, sweeps and draws (0 or more than the machine's cores: "
+                 "one per core)")
       ->capture_default_str();
   app.add_option("--set", o.overrides,
                  "KEY=VALUE: one configuration value by its JSON name, after --gear and --config "
@@ -182,6 +193,8 @@ int run(const Options& o) {
   if (!o.tire_path.empty()) tire = read_tire_input(o.tire_path, o.draws, o.seed);
   const std::vector<std::string> names = scenarios_to_run(o);
   const TireInput* t = tire ? &*tire : nullptr;
+  if (o.maps) check_map_work(config, o.map_size, t);  // bounded before anything runs
+  if (o.bifurcation) check_sweep_work(config);
   nlohmann::json summary;
   if (names.empty()) {
     summary = run_landings(config, out, o.threads, t);
@@ -190,7 +203,12 @@ int run(const Options& o) {
     summary["gear"] = config.gear_name;
     summary["configuration"] = to_json(config);
   }
+  const auto& models = config.models;
+  if (std::find(models.begin(), models.end(), ContactModel::von_schlippe) != models.end())
+    report_sensitivity(classical_sensitivity(config, t), summary);
   if (o.maps) run_maps(config, out, o.map_size, o.threads, t, summary);
+  if (o.bifurcation)
+    report_sweeps(out, compute_sweeps(config, o.threads, t, progress_bar), summary);
   out.write("summary.json",
             summary.dump(2, ' ', false, nlohmann::json::error_handler_t::replace) + "\n");
   const int stale = folder.commit();  // an earlier run's files this one did not rewrite
@@ -199,6 +217,15 @@ int run(const Options& o) {
   if (stale > 0) std::printf("; removed %d file(s) an earlier run had written there", stale);
   std::printf("\n");
   return 0;
+}
+
+// --threads beyond the machine's cores: as many threads as cores, said on stderr.
+unsigned usable_threads(unsigned asked) {
+  const unsigned cores = std::max(1u, std::thread::hardware_concurrency());
+  if (asked <= cores) return asked;
+  std::fprintf(stderr, "%s: --threads %u: this machine has %u core%s; using %u\n", kName, asked,
+               cores, cores == 1 ? "" : "s", cores);
+  return cores;
 }
 
 }  // namespace
@@ -214,6 +241,7 @@ int main(int argc, char** argv) {
   app::prepare_output();
   if (const std::optional<int> status = app::parse(app, argc, argv)) return *status;
   try {
+    options.threads = usable_threads(options.threads);
     return app::finish_output(run(options));
   } catch (const std::exception& e) {
     std::fprintf(stderr, "%s: %s\n", kName, e.what());

@@ -2,11 +2,13 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <sstream>
 
 #include "axis_label.hpp"
 #include "contensou/friction/file_output.hpp"
 #include "gnuplot.hpp"
+#include "map_geometry.hpp"
 
 namespace contensou::app {
 namespace {
@@ -34,12 +36,49 @@ std::string map_plot_body(const StabilityMap& m, const std::string& base,
   return gp.str();
 }
 
+// The boundary as segments of the interpolated zero contour (two rows each, a blank line
+// between segments: gnuplot draws each as a line).
+std::string boundary_csv(const StabilityMap& m) {
+  std::ostringstream o;
+  o.precision(9);
+  o << m.x.parameter << ',' << m.y.parameter << '\n';
+  for (const auto& s : zero_contour(m))
+    o << s[0] << ',' << s[1] << '\n' << s[2] << ',' << s[3] << "\n\n";
+  return o.str();
+}
+
+// Every unstable lobe labelled inside the frame with its largest growth rate, and the operating
+// point marked (or said to lie outside).
+std::string map_labels(const StabilityMap& m, double x0, double y0) {
+  std::ostringstream gp;
+  gp.precision(10);
+  gp << "set style textbox opaque noborder\n";
+  int k = 0;
+  for (const std::vector<int>& lobe : unstable_lobes(m)) {
+    double g = -1e300;
+    for (int c : lobe) g = std::max(g, m.cells[static_cast<std::size_t>(c)].growth_rate_per_s);
+    const MapCell& c = lobe_centre(m, lobe);
+    const auto at = inside_frame(m, c.x, c.y);
+    char text[96];
+    std::snprintf(text, sizeof text, "unstable (%zu cells): up to %+.2f 1/s", lobe.size(), g);
+    gp << "set label " << ++k << " \"" << text << "\" at " << at.x << "," << at.y << " " << at.align
+       << " front boxed font ',9'\n";
+  }
+  const bool in_x = (x0 - m.x.from) * (x0 - m.x.to) <= 0.0;
+  const bool in_y = (y0 - m.y.from) * (y0 - m.y.to) <= 0.0;
+  if (in_x && in_y)
+    gp << "set label 99 'operating point' at " << x0 << "," << y0
+       << " point pt 9 ps 2 lc rgb 'black' offset 1.2,-0.6 front boxed font ',9'\n";
+  return gp.str();
+}
+
 // Writes the map's CSV and PNG; returns its summary.
-nlohmann::json write_map(const OutputDir& dir, const StabilityMap& m) {
+nlohmann::json write_map(const OutputDir& dir, const ComputedMap& cm) {
+  const StabilityMap& m = cm.map;
   const std::string base = "map_" + short_name(m.x.parameter) + "_" + short_name(m.y.parameter) +
                            "_" + (m.linear ? to_string(m.phase) : "simulated") + "_" +
                            to_string(m.contact);
-  std::ostringstream csv, boundary;
+  std::ostringstream csv;
   csv.precision(9);
   csv << m.x.parameter << ',' << m.y.parameter
       << ",growth_rate_per_s,frequency_Hz,final_amplitude_rad,shimmy,valid,error\n";
@@ -55,30 +94,26 @@ nlohmann::json write_map(const OutputDir& dir, const StabilityMap& m) {
       if (c.valid) g_max = std::max(g_max, std::abs(c.growth_rate_per_s));
       shimmy_cells += c.shimmy;
       failed += !c.error.empty();
-      // Shimmy boundary: midpoints between computed neighbours that disagree.
-      for (const auto& [di, dj] : {std::pair{1, 0}, std::pair{0, 1}}) {
-        if (i + di >= m.x.points || j + dj >= m.y.points) continue;
-        const MapCell& d = m.cells[static_cast<std::size_t>((j + dj) * m.x.points + i + di)];
-        if (c.valid && d.valid && d.shimmy != c.shimmy)
-          boundary << 0.5 * (c.x + d.x) << ',' << 0.5 * (c.y + d.y) << '\n';
-      }
     }
     csv << '\n';  // gnuplot reads blank-line-separated rows as a grid
   }
   dir.write(base + ".csv", csv.str());
-  dir.write(base + "_boundary.csv",
-            m.x.parameter + ',' + m.y.parameter + '\n' + boundary.str() + "\n");
+  dir.write(base + "_boundary.csv", boundary_csv(m));
+  const bool in_frame = (cm.operating_x - m.x.from) * (cm.operating_x - m.x.to) <= 0.0 &&
+                        (cm.operating_y - m.y.from) * (cm.operating_y - m.y.to) <= 0.0;
   std::ostringstream gp;
-  gp << "set terminal pngcairo noenhanced size 760,620 font ',10'\nset output '" << base
-     << ".png'\nset title '" << to_string(m.contact) << ", "
+  gp.precision(10);
+  gp << "set terminal pngcairo noenhanced size 820,660 font ',10'\nset output '" << base
+     << ".png'\nset title \"" << to_string(m.contact) << ", "
      << (m.linear ? std::string(to_string(m.phase)) + ": largest oscillatory eigenvalue real part"
                   : std::string("simulated landing: torsional growth rate"))
-     << " [1/s]; black: stability boundary'\n"
+     << " [1/s]\\nblack line: stability boundary (growth = 0, interpolated)"
+     << (in_frame ? "" : "; the operating point lies outside these axes") << "\"\n"
      << "set palette defined (0 '#2166ac', 0.5 '#f7f7f7', 1 '#b2182b')\n"
      << "set cbrange [" << -g_max << ":" << g_max << "]\nset cblabel 'growth rate [1/s]'\n"
-     << map_plot_body(m, base, "growth_rate_per_s") << ", '" << base << "_boundary.csv' using \""
-     << m.x.parameter << "\":\"" << m.y.parameter
-     << "\" with points pt 7 ps 0.5 lc rgb 'black' title 'stability boundary'\n";
+     << map_labels(m, cm.operating_x, cm.operating_y) << map_plot_body(m, base, "growth_rate_per_s")
+     << ", '" << base << "_boundary.csv' using \"" << m.x.parameter << "\":\"" << m.y.parameter
+     << "\" with lines lw 2 lc rgb 'black' title 'stability boundary'\n";
   run_gnuplot(dir, base, gp.str());
   return {{"x", m.x.parameter},
           {"y", m.y.parameter},
@@ -86,8 +121,10 @@ nlohmann::json write_map(const OutputDir& dir, const StabilityMap& m) {
           {"phase", m.linear ? nlohmann::json(to_string(m.phase)) : nlohmann::json(nullptr)},
           {"points", {m.x.points, m.y.points}},
           {"shimmy_cells", shimmy_cells},
+          {"unstable_lobes", unstable_lobes(m).size()},
           {"failed_cells", failed},
           {"not_computed_cells", invalid},
+          {"operating_point", {cm.operating_x, cm.operating_y}},
           {"csv", base + ".csv"},
           {"png", base + ".png"}};
 }
@@ -128,7 +165,7 @@ void report_maps(const OutputDir& out, const std::vector<ComputedMap>& maps,
                  const std::vector<Overlay>& overlays, nlohmann::json& summary) {
   std::vector<std::string> bases;
   for (const ComputedMap& m : maps) {
-    summary["maps"].push_back(write_map(out, m.map));
+    summary["maps"].push_back(write_map(out, m));
     summary["maps"].back()["model"] = to_string(m.map.contact);
     bases.push_back(summary["maps"].back()["csv"].get<std::string>());
     bases.back().erase(bases.back().size() - 4);  // ".csv"

@@ -7,21 +7,23 @@
 #include <sstream>
 
 #include "contensou/friction/file_output.hpp"
+#include "gnuplot.hpp"
 #include "history.hpp"
 #include "history_plots.hpp"
+#include "model_colours.hpp"
 #include "scenarios.hpp"
 
 namespace contensou::app {
 namespace {
 
-std::string csv_history(const LandingRun& run) {
+std::string csv_history(const LandingRun& run, const GearStructure& structure) {
   std::ostringstream o;
   o.precision(9);
   const std::vector<std::string>& columns = history_columns();
   for (std::size_t i = 0; i < columns.size(); ++i) o << (i ? "," : "") << columns[i];
   o << '\n';
   for (const LandingSample& s : run.samples) {
-    const std::vector<double> row = history_row(s);
+    const std::vector<double> row = history_row(s, structure);
     for (std::size_t i = 0; i < row.size(); ++i) o << (i ? "," : "") << row[i];
     o << '\n';
   }
@@ -113,10 +115,15 @@ nlohmann::json convergence_json(const Convergence& c) {
 nlohmann::json limit_cycle_json(const ModelAnalysis& a) {
   const LimitCycle& c = a.limit_cycle;
   return {{"measured", c.measured},
+          {"state", to_string(c.state)},
           {"phase", a.limit_cycle_phase},
           {"amplitude_rad", c.amplitude_rad},
           {"earlier_amplitude_rad", c.earlier_amplitude_rad},
           {"trend_per_s", c.trend_per_s},
+          {"settling_band_per_s", c.band_per_s},
+          {"trend_periods", kTrendPeriods},
+          {"run_end_s", c.run_end_s},
+          {"eigenvalue_growth_rate_per_s", c.eigen_growth_per_s},
           {"torque_link_amplitude_nm", c.torque_link_nm},
           {"verdict", c.verdict}};
 }
@@ -154,9 +161,11 @@ void print_stability(const ShimmyConfig& config, const Landings& landings,
           br.spin_torque_damping_nms_per_rad);
     else if (contact == ContactModel::decoupled)
       std::printf(
-          "  note: the decoupled model's regularised Coulomb spin torque acts on the torsion as a "
-          "damper of %.3g N m s/rad (M0 R / eps) while braking: an artefact of the regularisation, "
-          "not a physical damper; shown for reference only\n",
+          "  note: the decoupled model's spin torque is Coulomb spin friction, M0 whatever the "
+          "sliding: at shimmy's small spin rates (|omega R| < eps) the patch sticks in spin, a "
+          "torsional damper of %.3g N m s/rad (M0 R / eps) while braking that grows without bound "
+          "as eps -> 0 (stick, not an artefact); the coupled law removes this stick while the "
+          "patch slides (Mz -> M0 u / (sqrt(m) v))\n",
           br.spin_torque_damping_nms_per_rad);
   }
 }
@@ -167,9 +176,10 @@ void print_tire_uncertainty(const TireInput& tire, const TireAnalysis& a, nlohma
   const TireLawCoefficients& t = tire.mean;
   std::printf(
       "\ntire law from %s: a = %.4g +- %.2g, m = %.4g +- %.2g, kx = %.4g +- %.2g, M0/(F0 R) = "
-      "%.4g +- %.2g (%zu draws, %d redrawn)\n",
+      "%.4g +- %.2g (%zu draws, %d redrawn; the report's %s model)\n",
       tire.path.c_str(), t.a, a.sd_a, t.m, a.sd_m, t.kx, a.sd_kx, t.spin_ratio, a.sd_spin_ratio,
-      tire.draws.draws.size(), tire.draws.rejected);
+      tire.draws.draws.size(), tire.draws.rejected, tire.model.c_str());
+  if (!tire.note.empty()) std::printf("note: %s\n", tire.note.c_str());
   std::printf("%-13s %-13s %14s %22s %10s\n", "model", "phase", "median[1/s]", "95 % band [1/s]",
               "P(shimmy)");
   nlohmann::json j;
@@ -183,6 +193,8 @@ void print_tire_uncertainty(const TireInput& tire, const TireAnalysis& a, nlohma
                            {"draws", b.draws}};
   }
   j["report"] = tire.path;
+  j["report_model"] = tire.model;
+  j["note"] = tire.note;
   j["draws"] = tire.draws.draws.size();
   j["redrawn"] = tire.draws.rejected;
   j["mean_law"] = {{"a", t.a}, {"m", t.m}, {"kx", t.kx}, {"spin_ratio", t.spin_ratio}};
@@ -222,6 +234,57 @@ void print_energy_row(const std::string& scenario, const std::string& model,
   std::printf(" %10.3g  %s\n", get("total"), fed_by.c_str());
 }
 
+// An unbraked scenario's window after the spin-up compares one tire: every sliding model rolls on
+// the string tire from its spin-up on. Said plainly, with where the models do differ.
+void print_same_tire_note(const nlohmann::json& scenarios) {
+  for (const NamedScenario& n : named_scenarios()) {
+    if (!scenarios.contains(n.name) || n.phase != StabilityPhase::touchdown) continue;
+    const nlohmann::json& models = scenarios[n.name]["summary"]["models"];
+    double spin_up = 0.0, start = 0.0;
+    for (auto it = models.begin(); it != models.end(); ++it) {
+      if ((*it)["spin_up_s"].is_number())
+        spin_up = std::max(spin_up, (*it)["spin_up_s"].get<double>());
+      start = (*it)["window_s"][0].get<double>();
+    }
+    const double td =
+        scenarios[n.name]["summary"]["configuration"]["scenario"]["touchdown_time_s"].get<double>();
+    if (spin_up > 0.0)
+      std::printf(
+          "note: %s: every model has spun up by %.3f s and then rolls on the same string tire, so "
+          "its simulated window (from %.3f s) compares one tire; the models differ "
+          "only during the %.3f s spin-up, which the touchdown eigenvalues (frozen slip, "
+          "stability table) compare\n",
+          n.name.c_str(), td + spin_up, start, spin_up);
+  }
+}
+
+// What the coupled spin torque does in each scenario's dominant mode (energy per cycle), and the
+// decoupled model's stick damping beside it: the reading of the comparison, from the results.
+void print_spin_torque_reading(const nlohmann::json& scenarios) {
+  std::string feeds, drains;
+  for (const NamedScenario& n : named_scenarios()) {
+    if (!scenarios.contains(n.name)) continue;
+    const nlohmann::json& models = scenarios[n.name]["summary"]["models"];
+    if (!models.contains("coupled")) continue;
+    const nlohmann::json& e =
+        models["coupled"]["stability"][to_string(n.phase)]["energy_per_cycle_J"];
+    const double w = e["spin_torque"].get<double>();
+    double scale = 0.0;  // the terms' sizes: a spin torque below 1e-3 of them does nothing
+    for (const char* k : {"spin_torque", "trail_lateral_force", "offset_drag", "torsional_damping",
+                          "lateral_friction", "lateral_damping", "carcass_lever"})
+      scale += std::abs(e[k].get<double>());
+    if (!(std::abs(w) > 1e-3 * scale)) continue;
+    (w > 0.0 ? feeds : drains) += ((w > 0.0 ? feeds : drains).empty() ? "" : ", ") + n.name;
+  }
+  std::printf("  the coupled spin torque feeds the dominant mode in: %s; drains it in: %s\n",
+              feeds.empty() ? "none" : feeds.c_str(), drains.empty() ? "none" : drains.c_str());
+  if (feeds.empty() && !drains.empty())
+    std::printf(
+        "  so the coupling does not itself feed the mode here; what it changes is the spin stick "
+        "the decoupled model has (its Coulomb spin torque damps the torsion while the coupled "
+        "one, sliding, barely does)\n");
+}
+
 // The seed's claim (the coupling of sliding and spin excites shimmy), as the scenarios find it:
 // where the coupled model is unstable and the classical tire is not, and where it grows faster.
 void print_seed_verdict(const nlohmann::json& scenarios) {
@@ -242,6 +305,58 @@ void print_seed_verdict(const nlohmann::json& scenarios) {
       "  coupled growing faster than the classical tire: %s\n",
       only.empty() ? "none of these scenarios" : only.c_str(),
       faster.empty() ? "none of these scenarios" : faster.c_str());
+  print_spin_torque_reading(scenarios);
+}
+
+// The energy per cycle of each model's dominant mode by source (the run's phase), as a bar chart:
+// energy.csv (one row a source, one column a model, mJ at 1 mrad or 1 mm) and energy.png.
+void draw_energy(const OutputDir& out, const Landings& landings, const LandingAnalysis& analysis,
+                 bool braking) {
+  const std::vector<std::pair<const char*, double EnergyPerCycle::*>> sources{
+      {"offset drag -l Fx", &EnergyPerCycle::offset_drag},
+      {"contact torque Mz", &EnergyPerCycle::spin_torque},
+      {"trail -e Fy", &EnergyPerCycle::trail_lateral_force},
+      {"lateral friction", &EnergyPerCycle::lateral_friction},
+      {"carcass lever", &EnergyPerCycle::carcass_lever},
+      {"torsional damping", &EnergyPerCycle::torsional_damping},
+      {"lateral damping", &EnergyPerCycle::lateral_damping}};
+  std::ostringstream csv;
+  csv.precision(6);
+  csv << "source";
+  for (const LandingRun& r : landings.runs) csv << ',' << to_string(r.contact) << "_mJ";
+  csv << '\n';
+  const auto energy = [&](std::size_t k) -> const EnergyPerCycle& {
+    const ModelAnalysis& a = analysis.models[k];
+    return (braking ? a.braked_slide : a.touchdown).report.energy;
+  };
+  for (const auto& [name, member] : sources) {
+    csv << '"' << name << '"';
+    for (std::size_t k = 0; k < landings.runs.size(); ++k) csv << ',' << 1e3 * energy(k).*member;
+    csv << '\n';
+  }
+  csv << "\"total\"";
+  for (std::size_t k = 0; k < landings.runs.size(); ++k) csv << ',' << 1e3 * energy(k).total();
+  csv << '\n';
+  out.write("energy.csv", csv.str());
+  std::ostringstream gp;
+  gp << "set terminal pngcairo noenhanced size 1000,520 font ',10'\nset output 'energy.png'\n"
+     << "set datafile separator ','\nset datafile columnheaders\n"
+     << "set title \"energy per cycle of each model's dominant mode, by source ("
+     << (braking ? "braked slide" : "touchdown")
+     << " linearisation; 1 mrad of torsion or 1 mm of deflection)\\n> 0 feeds the mode, < 0 "
+        "drains it\"\n"
+     << "set style data histograms\nset style histogram clustered gap 1\n"
+     << "set style fill solid 0.85 border -1\nset boxwidth 0.9\nset grid ytics\n"
+     << "set xzeroaxis lt -1\nset xtics rotate by -20 left\nset key outside right top vertical\n"
+     << "set ylabel 'work per cycle [mJ]'\nplot ";
+  for (std::size_t k = 0; k < landings.runs.size(); ++k) {
+    const ContactModel m = landings.runs[k].contact;
+    gp << (k ? ", ''" : "'energy.csv'") << " using \"" << to_string(m) << "_mJ\""
+       << (k ? "" : ":xtic(1)") << " lc rgb '" << model_colour(m) << "' title '" << to_string(m)
+       << "'";
+  }
+  gp << "\n";
+  run_gnuplot(out, "energy", gp.str());
 }
 
 }  // namespace
@@ -254,7 +369,7 @@ nlohmann::json report_landings(const ShimmyConfig& config, const Landings& landi
   for (std::size_t k = 0; k < landings.runs.size(); ++k) {
     const LandingRun& r = landings.runs[k];
     const Convergence& c = analysis.models[k].convergence;
-    out.write(std::string(to_string(r.contact)) + ".csv", csv_history(r));
+    out.write(std::string(to_string(r.contact)) + ".csv", csv_history(r, config.gear.structure));
     nlohmann::json j = run_json(r);
     j["convergence"] = convergence_json(c);
     summary["models"][to_string(r.contact)] = j;
@@ -269,7 +384,8 @@ nlohmann::json report_landings(const ShimmyConfig& config, const Landings& landi
   summary["analysis_window_s"] = {landings.runs.front().window_start_s,
                                   landings.runs.front().window_end_s};
   summary["configuration"] = to_json(config);
-  draw_histories(out, landings.runs);
+  draw_histories(out, landings.runs, config.gear.structure);
+  draw_energy(out, landings, analysis, config.gear.scenario.braking);
   return summary;
 }
 
@@ -294,7 +410,11 @@ void print_scenario_table(const nlohmann::json& scenarios) {
     for (auto it = models.begin(); it != models.end(); ++it)
       print_energy_row(n.name, it.key(), *it, to_string(n.phase));
   }
-  std::printf("\nat the end of each analysis window (last 3 periods against the 3 before):\n");
+  print_same_tire_note(scenarios);
+  std::printf(
+      "\nat the end of each analysis window (the trend of the amplitude over its last %d periods; "
+      "a run that has not settled is run again up to %g s):\n",
+      kTrendPeriods, kLongestRun);
   for (const NamedScenario& n : named_scenarios()) {
     if (!scenarios.contains(n.name)) continue;
     const nlohmann::json& models = scenarios[n.name]["summary"]["models"];

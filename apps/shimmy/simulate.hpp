@@ -18,6 +18,8 @@ namespace contensou::app {
 // The tire from a contensou-identify report (--tire), if any: its mean law and the draws.
 struct TireInput {
   std::string path;
+  std::string model = "final";  // the report's model the law comes from ("final" or "base")
+  std::string note;             // what of the report the gear's tire cannot carry (tire_report.hpp)
   TireLawDistribution distribution;
   TireLawCoefficients mean;
   TireLawDraws draws;
@@ -54,7 +56,18 @@ Landings simulate_landings(const ShimmyConfig& config, const TireInput* tire);
 struct ComputedMap {
   StabilityMap map;
   std::optional<StabilityMap> probability;
+  // The configuration's values of the two parameters: the operating point the pictures mark.
+  double operating_x = 0.0, operating_y = 0.0;
 };
+
+// The work bounds of one run's maps, checked before any map starts: at most kMostEigenCells
+// eigenvalue cells, kMostLandingCells simulated landings and kMostDrawCells probability-map
+// linearisations (cells x draws) over every map and model; throws InvalidArgument naming the
+// option and what the maps would take.
+inline constexpr long kMostEigenCells = 500000;
+inline constexpr long kMostLandingCells = 20000;
+inline constexpr long kMostDrawCells = 2000000;
+void check_map_work(const ShimmyConfig& config, int map_size, const TireInput* tire);
 
 // Every map of config.maps for every model, in that order; `map_size` > 0 sets the points per
 // axis.

@@ -474,3 +474,38 @@ def stability_map_native(
     model = _model(model)
     cells = _core._stability_map_cpp(cfg._text(), model, x, y, _check_threads(threads))
     return StabilityMapResult._from_cells(x, y, model, cells)
+
+
+_SWEEP_COLUMNS = [
+    "direction", "value", "state", "amplitude_rad", "torque_link_nm", "trend_per_s",
+    "frequency_hz", "eigen_growth_rate_per_s", "eigen_frequency_hz", "onset_s", "run_s", "valid",
+    "error",
+]
+
+
+def bifurcation_sweep(
+    config: Union[LandingConfig, Mapping[str, Any], None],
+    axis: AxisLike,
+    *,
+    model: str = "coupled",
+    threads: int = 0,
+) -> Any:
+    """The braked slide's bifurcation diagram over one gear parameter, as contensou-shimmy
+    --bifurcation computes it: the torsional limit cycle by continuation, swept up from a small
+    kick and down from a large swing (``direction`` "up" or "down"), each point with its settled
+    amplitude, torque-link load, amplitude trend, simulated frequency, the linearisation's growth
+    rate and frequency, and the time to onset (up sweep, from a motion below the threshold).
+    Returns a pandas DataFrame; ``df.attrs["linear_boundary"]`` is the parameter where the
+    eigenvalue growth first changes sign (NaN if it does not). Both directions run on threads
+    (0: one per core)."""
+    import pandas as pd
+
+    cfg = _config(config)
+    a = _axis(axis)
+    rows, boundary = _core._bifurcation_sweep(cfg._text(), _model(model), a, int(threads))
+    df = pd.DataFrame([tuple(r) for r in rows], columns=_SWEEP_COLUMNS)
+    df = df.rename(columns={"value": a.parameter})
+    df.attrs["linear_boundary"] = boundary
+    df.attrs["parameter"] = a.parameter
+    df.attrs["model"] = _model(model)
+    return df

@@ -49,7 +49,7 @@ nb::dict simulate(const std::string& text, const std::string& model, bool record
   std::vector<double> h;
   h.reserve(n * w);
   for (const LandingSample& s : r.samples) {
-    const std::vector<double> row = app::history_row(s);
+    const std::vector<double> row = app::history_row(s, c.gear.structure);
     h.insert(h.end(), row.begin(), row.end());
   }
   nb::dict d;
@@ -115,6 +115,36 @@ std::vector<Cell> map_cpp(const std::string& text, const std::string& model, con
   });
 }
 
+// One row of a bifurcation sweep: direction, value, state, amplitude [rad], torque link [N m],
+// trend [1/s], frequency [Hz], eigenvalue growth [1/s] and frequency [Hz], onset [s], run [s],
+// valid, error.
+using SweepRow = std::tuple<std::string, double, std::string, double, double, double, double,
+                            double, double, double, double, bool, std::string>;
+
+// The braked slide's bifurcation sweep of one model over one axis (contensou/gear/
+// bifurcation.hpp), as contensou-shimmy --bifurcation runs it: up rows, then down rows, each in
+// increasing parameter order; the linear boundary (NaN if none) last.
+std::tuple<std::vector<SweepRow>, double> sweep(const std::string& text, const std::string& model,
+                                                const Axis& a, unsigned threads) {
+  const app::ShimmyConfig c = parse(text);
+  return run_interruptible([&](const StopRequest& stop) {
+    SweepOptions o;
+    o.relative_tolerance = c.solver.relative_tolerance;
+    o.output_interval_s = c.solver.output_interval_s;
+    o.amplitude_threshold_rad = c.criterion.amplitude_threshold_rad;
+    o.stop = stop;
+    const GearModel base = make_gear_model(c.gear, contact_model_from_string(model));
+    const BifurcationSweep s = bifurcation_sweeps({base}, {axis_of(a)}, o, threads, {}).front();
+    std::vector<SweepRow> rows;
+    for (const auto& [name, points] : {std::pair{"up", &s.up}, std::pair{"down", &s.down}})
+      for (const SweepPoint& p : *points)
+        rows.emplace_back(name, p.value, to_string(p.state), p.amplitude_rad, p.torque_link_nm,
+                          p.trend_per_s, p.frequency_hz, p.eigen_growth_per_s, p.eigen_frequency_hz,
+                          p.onset_s, p.run_s, p.valid, p.error);
+    return std::tuple{rows, s.linear_boundary};
+  });
+}
+
 }  // namespace
 
 void bind_gear(nb::module_& m) {
@@ -165,6 +195,7 @@ void bind_gear(nb::module_& m) {
   m.def("_simulate_landing", &simulate, "config"_a, "model"_a, "record"_a);
   m.def("_map_cell", &map_cell, "config"_a, "model"_a, "x"_a, "y"_a, "i"_a, "j"_a);
   m.def("_stability_map_cpp", &map_cpp, "config"_a, "model"_a, "x"_a, "y"_a, "threads"_a);
+  m.def("_bifurcation_sweep", &sweep, "config"_a, "model"_a, "axis"_a, "threads"_a);
 }
 
 }  // namespace contensou::python

@@ -101,6 +101,25 @@ void brake_off_after_on(const GearConfig& c) {
                           "must come after brake_on_s >= 0");
 }
 
+// An explicit analysis window (negative: automatic) lies inside the run, its end after its start.
+void window_inside_run(const GearConfig& c) {
+  const LandingScenario& s = c.scenario;
+  const double start = s.window_start_s, end = s.window_end_s;
+  if (start >= 0.0 && !(start < s.end_time_s))
+    throw InvalidArgument("scenario.window_start_s", format_value(start),
+                          "must come before scenario.end_time_s = " + format_value(s.end_time_s) +
+                              " (negative: automatic)");
+  if (end >= 0.0 && !(end <= s.end_time_s))
+    throw InvalidArgument("scenario.window_end_s", format_value(end),
+                          "must not pass scenario.end_time_s = " + format_value(s.end_time_s) +
+                              " (negative: automatic)");
+  if (start >= 0.0 && end >= 0.0 && !(end > start))
+    throw InvalidArgument("scenario.window_end_s", format_value(end),
+                          "must come after scenario.window_start_s = " + format_value(start) +
+                              " (the analysis window runs from start to end; negative: "
+                              "automatic)");
+}
+
 constexpr ParameterSwitch kBraking = ParameterSwitch::braking;
 constexpr ParameterSwitch kCarcass = ParameterSwitch::carcass;
 
@@ -284,9 +303,12 @@ constexpr std::array kScenario{
     number("scenario.window_start_s", "s", kFinite,
            "start of the shimmy analysis window (negative: automatic)",
            [](GearConfig& c) -> double& { return c.scenario.window_start_s; }),
-    number("scenario.window_end_s", "s", kFinite,
-           "end of the shimmy analysis window (negative: automatic)",
-           [](GearConfig& c) -> double& { return c.scenario.window_end_s; }),
+    with_relation(number("scenario.window_end_s", "s", kFinite,
+                         "end of the shimmy analysis window (negative: automatic)",
+                         [](GearConfig& c) -> double& { return c.scenario.window_end_s; }),
+                  window_inside_run,
+                  "after scenario.window_start_s when both are set, both within "
+                  "scenario.end_time_s"),
 };
 
 template <std::size_t... N>

@@ -192,29 +192,53 @@ double friction_slope(const SlipSpeedFriction<double>& law, double w) {
          w;
 }
 
+// The stretched string with combined slip on a friction circle (landing_gear.hpp, RollingTire):
+// the demanded force D = (-C_x s N, C_Fa alpha N) saturates on the circle, |F| = cap tanh(z),
+// z = |D| / cap, cap = f(w) N, and turns from D's direction to the sliding one as the sliding
+// share beta = tanh(z)^2 grows: at full slide F = -f(w) N e_s, e_s = (vx, -V alpha) / w the
+// tread's sliding velocity (= (vx, vy) in a steady slide), the sliding tires' Coulomb force.
+// The pneumatic trail C_Ma / C_Fa shrinks with the adhering share: Mz carries (1 - beta) of it
+// (the brush model's trail vanishes at full slide; Pacejka 2012, sec. 3.2).
+void rolling_forces(const GearConfig& c, double lambda, ContactState& cs) {
+  const RollingTire& rt = c.rolling;
+  const double V = c.scenario.forward_speed_mps, N = cs.load_n;
+  const double alpha = lambda / rt.relaxation_length_m;
+  const double sx = cs.slip.vx, sy = -V * alpha;  // the tread's sliding velocity
+  const double w = std::hypot(sx, sy);
+  const double mu = friction_at(c.tire.friction, w);
+  const double dx = -rt.longitudinal_slip_coefficient * cs.slip_ratio * N;
+  const double dy = rt.cornering_coefficient * alpha * N;
+  const double demand = std::hypot(dx, dy), cap = mu * N;
+  const double z = demand / cap;
+  // cap tanh(z) / |D| -> (1 - z^2 / 3) / 1 for small z; beta = tanh(z)^2 -> z^2.
+  const double th = z > 1e-4 ? std::tanh(z) : z - z * z * z / 3.0;
+  const double beta = th * th;
+  double fx = 0.0, fy = 0.0;
+  if (demand > 0.0) {
+    // The blend of the two unit directions (same quadrant: -e_s and D both oppose the slip).
+    const double ex = (1.0 - beta) * dx / demand - (w > 0.0 ? beta * sx / w : 0.0);
+    const double ey = (1.0 - beta) * dy / demand - (w > 0.0 ? beta * sy / w : 0.0);
+    const double norm = std::hypot(ex, ey);
+    const double size = z > 1e-4 ? cap * th : demand * (1.0 - z * z / 3.0);
+    if (norm > 0.0) {
+      fx = size * ex / norm;
+      fy = size * ey / norm;
+    }
+  }
+  cs.friction = mu;
+  cs.force.Fx = fx;
+  cs.force.Fy = fy;
+  cs.force.Mz = -rt.aligning_coefficient_m / rt.cornering_coefficient * (1.0 - beta) * fy -
+                rt.tread_moment_nm2_per_rad * (N / c.scenario.static_load_n) * cs.slip.omega / V;
+}
+
 // The friction on the tire from the patch kinematics cs.slip (and slip_ratio), the string's
 // deflection lambda, at cs.load_n > 0 and cs.patch_radius_m; fills cs.force and cs.friction.
 void contact_forces(const GearModel& model, bool rolling, double lambda, ContactState& cs) {
   const GearConfig& c = model.config;
-  const double V = c.scenario.forward_speed_mps;
   const double N = cs.load_n, R = cs.patch_radius_m;
   if (rolling) {
-    // Stretched string with combined slip on a friction circle (landing_gear.hpp, RollingTire).
-    const RollingTire& rt = c.rolling;
-    const double alpha = lambda / rt.relaxation_length_m;
-    const double w = std::sqrt(cs.slip.vx * cs.slip.vx + V * V * alpha * alpha);
-    const double mu = friction_at(c.tire.friction, w);
-    const double dx = -rt.longitudinal_slip_coefficient * cs.slip_ratio * N;
-    const double dy = rt.cornering_coefficient * alpha * N;
-    const double demand = std::hypot(dx, dy), cap = mu * N;
-    // cap tanh(D / cap) / D -> 1 - (D / cap)^2 / 3 for small D.
-    const double z = demand / cap;
-    const double use = z > 1e-4 ? std::tanh(z) / z : 1.0 - z * z / 3.0;
-    cs.friction = mu;
-    cs.force.Fx = dx * use;
-    cs.force.Fy = dy * use;
-    cs.force.Mz = -rt.aligning_coefficient_m / rt.cornering_coefficient * cs.force.Fy -
-                  rt.tread_moment_nm2_per_rad * (N / c.scenario.static_load_n) * cs.slip.omega / V;
+    rolling_forces(c, lambda, cs);
     return;
   }
   cs.friction = friction_at(c.tire.friction, sliding_slip_speed(cs.slip, R));

@@ -28,12 +28,6 @@ double scale_of(int i) {
   return kScale[static_cast<std::size_t>(i)];
 }
 
-GearModel without_drift(const GearModel& model) {
-  GearModel m = model;
-  m.config.scenario.drift_speed_mps = 0.0;
-  return m;
-}
-
 double scaled_residual(const GearState& f, const std::vector<int>& states) {
   double r = 0.0;
   for (int i : states) r = std::max(r, std::abs(f[i]) / scale_of(i));
@@ -298,9 +292,8 @@ void describe_dominant_mode(const GearModel& model, const QuasiSteadyState& q,
 
 }  // namespace
 
-StabilityReport assess_stability(const GearModel& model_in, StabilityPhase phase,
+StabilityReport assess_stability(const GearModel& model, StabilityPhase phase,
                                  const StabilityOptions& options) {
-  const GearModel model = without_drift(model_in);
   StabilityReport rep;
   rep.state = quasi_steady_state(model, phase, options.touchdown_slip);
   const QuasiSteadyState& q = rep.state;
@@ -387,7 +380,7 @@ double linear_growth_rate(const GearModel& model, StabilityPhase phase) {
 }
 
 double classical_critical_damping(const GearModel& model_in) {
-  GearModel model = without_drift(model_in);
+  GearModel model = model_in;
   model.contact = ContactModel::von_schlippe;
   model.exact.reset();
   const auto unstable = [&](double c) {

@@ -7,22 +7,51 @@
 #include <utility>
 
 #include "contensou/friction/error.hpp"
+#include "contensou/gear/gear_parameters.hpp"
 #include "parallel_cells.hpp"
 
 namespace contensou {
 
+void check_map_axis(const GearConfig& config, const MapAxis& a, const std::string& name) {
+  const GearParameter* p = find_gear_parameter(a.parameter);
+  if (!p || !p->number)
+    throw InvalidArgument(name + ".parameter", a.parameter, "is not a gear parameter");
+  if (a.points < 1 || a.points > 10000)
+    throw InvalidArgument(name + ".points", std::to_string(a.points), "must lie in 1..10000");
+  require_finite((name + ".from").c_str(), a.from);
+  require_finite((name + ".to").c_str(), a.to);
+  // The cells lie between the ends: their difference must be finite too (-1e308 to 1e308
+  // would give inf and nan cells).
+  if (!std::isfinite(a.to - a.from))
+    throw InvalidArgument(
+        name, a.parameter + " from " + format_value(a.from) + " to " + format_value(a.to),
+        "the span to - from overflows: choose ends within the key's range");
+  // Every range of the key table is an interval, so both ends inside means every cell inside.
+  for (const double v : {a.from, a.to}) {
+    GearConfig probe = config;
+    p->number(probe) = v;
+    try {
+      check_gear_parameter(*p, probe);
+    } catch (const InvalidArgument& e) {
+      throw InvalidArgument(
+          name, a.parameter + " from " + format_value(a.from) + " to " + format_value(a.to),
+          "leaves the key's valid values " + describe_range(*p) + " (" + e.what() + ")");
+    }
+  }
+}
+
+void check_map_axes(const GearConfig& config, const MapAxis& x, const MapAxis& y) {
+  check_map_axis(config, x, "map x");
+  check_map_axis(config, y, "map y");
+  if (x.parameter == y.parameter)
+    throw InvalidArgument("map y.parameter", y.parameter,
+                          "is also the x axis' parameter: a map needs two different keys");
+}
+
 StabilityMap evaluate_map(const GearModel& base, const MapAxis& x, const MapAxis& y,
                           unsigned threads, const std::function<void(int, int)>& progress,
                           const std::function<void(const GearModel&, MapCell&)>& cell_fn) {
-  for (const MapAxis* a : {&x, &y}) {
-    GearConfig probe = base.config;
-    if (!gear_parameter(probe, a->parameter))
-      throw InvalidArgument("map parameter", a->parameter, "is not a gear parameter");
-    if (a->points < 1 || a->points > 10000)
-      throw InvalidArgument("map points", std::to_string(a->points), "must lie in 1..10000");
-    require_finite("map from", a->from);
-    require_finite("map to", a->to);
-  }
+  check_map_axes(base.config, x, y);
   StabilityMap map{x, y, base.contact, false, StabilityPhase::braked_slide, {}};
   const int total = x.points * y.points;
   map.cells.resize(static_cast<std::size_t>(total));
@@ -65,7 +94,8 @@ StabilityMap stability_map(const GearModel& base, const MapAxis& x, const MapAxi
     cell.frequency_hz = run.metrics.torsion.frequency_hz;
     cell.last_amplitude_rad = run.metrics.torsion.last_amplitude;
     cell.shimmy = run.metrics.shimmy;
-    cell.valid = run.metrics.torsion.valid();
+    cell.valid = run.metrics.torsion.valid() && std::isfinite(cell.growth_rate_per_s) &&
+                 std::isfinite(cell.frequency_hz);
   });
 }
 
@@ -79,7 +109,8 @@ StabilityMap linear_stability_map(const GearModel& base, const MapAxis& x, const
         const StabilityReport r = phase == StabilityPhase::touchdown
                                       ? assess_touchdown(model, o)
                                       : assess_stability(model, phase, o);
-        cell.valid = r.state.converged;
+        cell.valid = r.state.converged && std::isfinite(r.growth_rate_per_s) &&
+                     std::isfinite(r.frequency_hz);
         cell.growth_rate_per_s = r.growth_rate_per_s;
         cell.frequency_hz = r.frequency_hz;
         cell.shimmy = cell.valid && r.growth_rate_per_s > 0.0;

@@ -19,7 +19,7 @@ fails = []
 shown = set()
 for doc in ["README.md"] + [os.path.join("docs", f) for f in os.listdir(os.path.join(root, "docs"))
                             if f.endswith(".md")]:
-    for name in re.findall(r"images/((?:shimmy_|map_|prob_|overlay_)[^)\s]+\.png)", open(os.path.join(root, doc)).read()):
+    for name in re.findall(r"images/((?:shimmy_|map_|prob_|overlay_|bifurcation_)[^)\s]+\.png)", open(os.path.join(root, doc)).read()):
         shown.add(name)
         if name not in manifest["pictures"]:
             fails.append(f"{doc} shows {name}, which scripts/make-doc-images.sh does not make")

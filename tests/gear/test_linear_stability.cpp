@@ -47,6 +47,7 @@ TEST(LinearStability, ClassicalCriticalDampingOfARigidStrutMatchesRouthHurwitz) 
   for (double V : {30.0, 70.0}) {
     GearConfig c;
     c.scenario.forward_speed_mps = V;
+    c.scenario.drift_speed_mps = 0.0;  // Routh-Hurwitz is straight rolling's (the state is kept)
     c.structure.offset_m = 0.0;
     c.structure.lateral_stiffness_n_per_m = 1e11;  // no lateral bending
     c.structure.lateral_damping_ns_per_m = 1e6;

@@ -200,3 +200,30 @@ def test_dask_map_equals_the_serial_map(app_run, serial_map):
         on_dask = c.stability_map(app_run[0], AXES, client=client, progress=True)
     for a, b in zip(map_arrays(on_dask), map_arrays(serial_map)):
         np.testing.assert_array_equal(a, b)
+
+
+def test_bifurcation_sweep_equals_the_apps_csv(shimmy_app, tmp_path):
+    """contensou.bifurcation_sweep is contensou-shimmy --bifurcation's sweep, row for row, as a
+    DataFrame with its linear boundary."""
+    d = c.LandingConfig().to_dict()
+    d["models"] = ["coupled"]
+    d["structure"]["offset_m"] = 0.45
+    d["scenario"]["forward_speed_mps"] = 58.0
+    d["sweeps"] = [{"parameter": "structure.offset_m", "from": 0.3, "to": 0.54, "points": 4}]
+    cfg = c.LandingConfig(d)
+    cfg.to_json(tmp_path / "cfg.json")
+    subprocess.run([str(shimmy_app), "--config", str(tmp_path / "cfg.json"), "--out",
+                    str(tmp_path / "o"), "--bifurcation"], check=True, capture_output=True)
+    df = c.bifurcation_sweep(cfg, ("structure.offset_m", 0.3, 0.54, 4), model="coupled")
+    assert list(df.columns)[:3] == ["direction", "structure.offset_m", "state"]
+    summary = json.loads((tmp_path / "o" / "summary.json").read_text())["bifurcation"][0]
+    assert df.attrs["linear_boundary"] == pytest.approx(summary["linear_boundary"], rel=1e-12)
+    for direction in ("up", "down"):
+        rows = df[df["direction"] == direction]
+        with open(tmp_path / "o" / f"bifurcation_offset_m_coupled_{direction}.csv") as f:
+            app = list(csv.DictReader(f))
+        assert len(rows) == len(app) == 4
+        for (_, r), a in zip(rows.iterrows(), app):
+            assert r["state"] == a["state"]
+            assert r["amplitude_rad"] == pytest.approx(float(a["amplitude_rad"]), rel=1e-8)
+            assert r["torque_link_nm"] == pytest.approx(float(a["torque_link_nm"]), rel=1e-8)

@@ -120,11 +120,14 @@ struct SlidingTire {
 // The rolling tire (von Schlippe / Somieski stretched string; Pacejka 2012, ch. 5) with combined
 // slip on a friction circle (docs/shimmy.md, "von_schlippe"):
 //   lambda' = -(vy + a psi') - (V / sigma) lambda,   alpha = lambda / sigma,  s = vx / V,
-//   demanded forces Dx = -C_x s N, Dy = C_Fa alpha N, D = |(Dx, Dy)|, cap = mu N,
-//   (Fx, Fy) = (Dx, Dy) cap tanh(D / cap) / D    (|F| <= mu N: braking and cornering share it),
-//   Mz = -(C_Ma / C_Fa) Fy - kappa_t (N / N_s) psi' / V,
-// with a = R the half contact length and mu = f(w) the sliding tire's friction law at the slip
-// speed w = (vx^2 + (V alpha)^2)^(1/2), so that both tires brake at the same friction level.
+//   demanded forces D = (-C_x s N, C_Fa alpha N), z = |D| / cap, cap = mu N,
+//   |F| = cap tanh(z)    (|F| <= mu N: braking and cornering share it),
+//   F / |F| = normalise((1 - beta) D / |D| - beta e_s),  beta = tanh(z)^2,
+//   Mz = -(C_Ma / C_Fa) (1 - beta) Fy - kappa_t (N / N_s) psi' / V,
+// with a = R the half contact length, e_s = (vx, -V alpha) / w the tread's sliding direction and
+// mu = f(w) the sliding tire's friction law at the slip speed w = (vx^2 + (V alpha)^2)^(1/2): at
+// full slide (beta -> 1) the force is the sliding tires' -f(w) N e_s and the pneumatic trail is
+// gone, so that all tires slide, and brake, with the same friction.
 struct RollingTire {
   double relaxation_length_m = 0.6;             // sigma
   double cornering_coefficient = 8.0;           // C_Fa [1/rad], cornering stiffness / N

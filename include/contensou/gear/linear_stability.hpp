@@ -10,7 +10,9 @@
 //   braked_slide  the anti-skid holds the wheel-speed slip near brake_target_slip; sliding
 //                 models slide (wheel speed a state), the nonholonomic model rolls braked on its
 //                 friction circle.
-// The drift (scenario.drift_speed_mps) is set to zero: it is a transient excitation.
+// The drift (scenario.drift_speed_mps) is kept: the landing's kinematics carry it as a constant
+// lateral ground speed, so the quasi-steady state linearised here is the one the simulated
+// landings settle about (maps, eigenvalues and landings: one state).
 #pragma once
 
 #include <Eigen/Core>

@@ -38,6 +38,13 @@ struct StabilityMap {
   std::vector<MapCell> cells;  // row-major: cells[j * x.points + i] at (x.value(i), y.value(j))
 };
 
+// Throws InvalidArgument naming the axis (`name`, e.g. "map x") unless its parameter is a number
+// key of the gear, 1..10000 points, both ends and their span finite, and both ends inside the
+// key's valid values (gear_parameters.hpp; checked at `config` with the end set).
+void check_map_axis(const GearConfig& config, const MapAxis& axis, const std::string& name);
+// Both axes, and that they are two different keys.
+void check_map_axes(const GearConfig& config, const MapAxis& x, const MapAxis& y);
+
 // Runs x.points * y.points landings of `base` with the two parameters set, on `threads`
 // threads (0: all cores). `progress(done, total)` is called from the calling thread only.
 // Throws InvalidArgument for an unknown parameter or a bad axis.
