@@ -133,7 +133,7 @@ class GearFmuModel final : public FmuModel {
 
   void record() {
     const LandingSample s = stepper_->sample();
-    const std::vector<double> row = app::history_row(s);
+    const std::vector<double> row = app::history_row(s, stepper_->model().config.structure);
     const auto& vars = gear_variables();
     outputs_.clear();
     for (std::size_t k = kGearFirstOutput;
