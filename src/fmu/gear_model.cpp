@@ -138,9 +138,7 @@ class GearFmuModel final : public FmuModel {
     outputs_.clear();
     for (std::size_t k = kGearFirstOutput;
          k < vars.size() && vars[k].variable.causality == Causality::output; ++k)
-      outputs_.push_back(vars[k].history_column >= 0
-                             ? row[static_cast<std::size_t>(vars[k].history_column)]
-                             : torque_link_torque(stepper_->model(), s.x));
+      outputs_.push_back(row[static_cast<std::size_t>(vars[k].history_column)]);
     for (double v : outputs_)
       if (!std::isfinite(v))
         throw std::runtime_error("the gear's state is not finite at t = " + format_value(s.t) +

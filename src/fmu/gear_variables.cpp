@@ -47,8 +47,6 @@ std::vector<GearVariable> build() {
                           columns[k].quantity, "");
     v.history_column = static_cast<int>(k);
   }
-  add("torque_link_nm", Causality::output, VariableType::real, "N m",
-      "torque-link load: the torsional spring's torque k_psi d(psi)", "");
   add("contact_model", Causality::parameter, VariableType::string, "",
       "the tire-ground law: coupled, decoupled or von_schlippe", "coupled");
   for (const app::ConfigKey& key : app::config_keys()) {

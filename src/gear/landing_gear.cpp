@@ -687,11 +687,6 @@ GearState gear_rhs(const GearModel& model, const GearMode& mode, double t, const
   return dx;
 }
 
-double torque_link_torque(const GearModel& model, const GearState& x) {
-  const GearStructure& g = model.config.structure;
-  return g.torsional_stiffness_nm_per_rad * freeplay_deflection(x[kPsi], g.freeplay_rad).first;
-}
-
 double string_deflection_for_force(const GearModel& model, double t, const GearState& x,
                                    double lateral_force_n) {
   const GearMode rolling{true, true, false};

@@ -277,9 +277,6 @@ using GearJacobian = Eigen::Matrix<double, kStateSize, kStateSize>;
 GearJacobian gear_jacobian(const GearModel& model, const GearMode& mode, double t,
                            const GearState& x);
 
-// The torque the torque link carries in state x, k_psi d(psi) [N m]: the torsional spring across
-// the freeplay (the psi equation above; GearStructure::freeplay_rad).
-double torque_link_torque(const GearModel& model, const GearState& x);
 
 // Stretched-string deflection that carries the sliding lateral force over unchanged when the
 // tire starts to roll in state x (inverse of the rolling Fy law at the state's longitudinal slip,
