@@ -19,8 +19,7 @@ using RunInfo = ReportInput;
 // and the measured values of the data it was fitted to; they compute nothing the fit owns.
 
 // For each fitted step, a PNG of the residuals before and after it (loop_step_K.png).
-bool write_loop_plots(const OutputDir& dir, const MeasuredData& data,
-                      const ClosedLoopReport& loop);
+bool write_loop_plots(const OutputDir& dir, const MeasuredData& data, const ClosedLoopReport& loop);
 
 // Writes dir/fit.csv (psi, upsilon, and measured_, fit_, residual_ per channel, by name) and one
 // PNG per measured channel (measured and fitted against psi or

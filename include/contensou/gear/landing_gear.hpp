@@ -277,7 +277,6 @@ using GearJacobian = Eigen::Matrix<double, kStateSize, kStateSize>;
 GearJacobian gear_jacobian(const GearModel& model, const GearMode& mode, double t,
                            const GearState& x);
 
-
 // Stretched-string deflection that carries the sliding lateral force over unchanged when the
 // tire starts to roll in state x (inverse of the rolling Fy law at the state's longitudinal slip,
 // by bisection; the largest reachable force if |Fy| exceeds it).
