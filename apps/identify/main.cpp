@@ -90,7 +90,9 @@ std::pair<std::string, double> parse_fix(const std::string& s) {
 // What the fit's command line gives besides the request (main binds the options to these).
 struct FitArgs {
   IdentifyRequest request;
-  std::string data_path, json_path, plots_dir, columns;
+  std::vector<std::string> data_paths;
+  std::string json_path, plots_dir, columns;
+  std::vector<double> loads;  // --normal-load: one, or one a file
   std::vector<std::string> fixes;
   bool progress = false;
 };
@@ -109,13 +111,14 @@ void show_progress(IdentifyRequest& r, bool asked) {
   };
 }
 
-int print_and_write(const FitArgs& a, const Identification& run, const ReportInput& info,
-                    app::OutputFolder* plots) {
+int print_and_write(const FitArgs& a, const MeasuredData& read, const Identification& run,
+                    const ReportInput& info, app::OutputFolder* plots) {
   const MeasuredData& data = run.fitted;
+  const app::PlotInput shown{read, run.outliers, run.origin, a.request.radius_m};
   if (!run.loop) {
     std::printf("%s %s: fractional law (seed eqs. 5-7)\n%s", kName, kVersion,
                 fit_report_text(info, run.fit).c_str());
-    if (plots != nullptr && app::write_plots(app::OutputDir(*plots), data, run.fit))
+    if (plots != nullptr && app::write_plots(app::OutputDir(*plots), shown, run.fit))
       std::printf("pictures: %s/fit_*.png\n", a.plots_dir.c_str());
     if (!a.json_path.empty()) {
       app::write_output_file(plots, a.json_path, fit_report_json(info, run.fit) + "\n");
@@ -126,7 +129,7 @@ int print_and_write(const FitArgs& a, const Identification& run, const ReportInp
   const ClosedLoopReport& loop = *run.loop;
   std::printf("%s %s\n%s", kName, kVersion, loop_report_text(info, loop).c_str());
   if (plots != nullptr) {
-    const bool p = app::write_plots(app::OutputDir(*plots), data, loop.final_fit);
+    const bool p = app::write_plots(app::OutputDir(*plots), shown, loop.final_fit);
     const bool q = app::write_loop_plots(app::OutputDir(*plots), data, loop);
     if (p && q)
       std::printf("pictures: %s/fit_*.png (final model), %s/loop_step_*.png\n", a.plots_dir.c_str(),
@@ -154,15 +157,25 @@ int run_fit(FitArgs a, app::OutputFolder* plots) {
                             " and " + format_value(value) + "): fix each parameter once");
   }
   show_progress(a.request, a.progress);
+  // One load: the request's N (F0 and M0 are at it). One a file: each file's rows at theirs.
+  if (a.loads.size() == 1) a.request.normal_load_n = a.loads.front();
+  if (a.loads.size() > 1 && a.loads.size() != a.data_paths.size())
+    throw app::UsageError("--normal-load: " + std::to_string(a.loads.size()) + " values for " +
+                          std::to_string(a.data_paths.size()) +
+                          " files: give one load, or one a file in the files' order");
   validate(a.request);  // the options' ranges before the data are read
   const ColumnRenames renames = parse_column_renames(a.columns);
-  MeasuredData data = within_memory("reading " + a.data_path,
-                                    [&] { return read_measured_csv(a.data_path, renames); });
+  std::vector<MeasuredData> files;
+  for (const std::string& path : a.data_paths)
+    files.push_back(
+        within_memory("reading " + path, [&] { return read_measured_csv(path, renames); }));
+  MeasuredData data =
+      combine_measured(std::move(files), a.loads.size() > 1 ? a.loads : std::vector<double>{});
   const IdentifyRun run =
-      within_memory("fitting the " + std::to_string(data.points.size()) + " rows of " + a.data_path,
+      within_memory("fitting the " + std::to_string(data.points.size()) + " rows of " + data.source,
                     [&] { return identify(data, a.request); });
   return within_memory("writing the report",
-                       [&] { return print_and_write(a, run.result, run.input, plots); });
+                       [&] { return print_and_write(a, data, run.result, run.input, plots); });
 }
 
 struct SimulateArgs {
@@ -177,6 +190,7 @@ struct SimulateArgs {
   double speed_drop = 0.0, speed_ref = 5.0;
   std::vector<double> offset;
   std::vector<double> directions;
+  std::vector<double> loads;  // --normal-load: the sweeps at each load, an Fz_N column
   std::vector<std::string> crosstalk;
   std::string seed = "1";  // read here: CLI11 would clamp 2^64 to 2^64 - 1 without a word
 };
@@ -214,10 +228,16 @@ void check_sweep_options(const SimulateArgs& a) {
   if (a.directions.size() > kMaxDirections)
     throw InvalidArgument("--directions", std::to_string(a.directions.size()) + " directions",
                           "at most " + std::to_string(kMaxDirections));
+  if (a.loads.size() > kMaxDirections)
+    throw InvalidArgument("--normal-load", std::to_string(a.loads.size()) + " loads",
+                          "at most " + std::to_string(kMaxDirections));
+  for (double n : a.loads) require_in("--normal-load", n, 1e-3, 1e9, "N");
   const long long total = static_cast<long long>(s.points) *
-                          static_cast<long long>(std::max<std::size_t>(1, a.directions.size()));
+                          static_cast<long long>(std::max<std::size_t>(1, a.directions.size())) *
+                          static_cast<long long>(std::max<std::size_t>(1, a.loads.size()));
   if (total > kMaxSimulatedPoints)
-    throw InvalidArgument("--points x --directions", std::to_string(total) + " points",
+    throw InvalidArgument("--points x --directions x --normal-load",
+                          std::to_string(total) + " points",
                           "at most " + std::to_string(kMaxSimulatedPoints) + " in all");
   require_in("--psi-min", s.psi_min, 1e-9, 1e9);
   require_in("--psi-max", s.psi_max, s.psi_min, 1e9, "(from --psi-min)");
@@ -257,20 +277,32 @@ void check_finite(const MeasuredData& d) {
 }
 
 // One sweep a sliding direction, one after another in time.
-MeasuredData simulate_sweeps(const SimulateArgs& a, const ContactPatch& patch) {
+// The sweeps: each direction in turn, at each load in turn (at fixed radius, the pressure in
+// proportion to the load); the time runs on across them.
+MeasuredData simulate_sweeps(const SimulateArgs& a, const ContactPatch& base) {
   MeasuredData d;
-  d.points.reserve(static_cast<std::size_t>(a.spec.points) * a.directions.size());
+  const std::vector<std::optional<double>> loads =
+      a.loads.empty() ? std::vector<std::optional<double>>{std::nullopt}
+                      : std::vector<std::optional<double>>(a.loads.begin(), a.loads.end());
+  d.points.reserve(static_cast<std::size_t>(a.spec.points) * a.directions.size() * loads.size());
   const std::uint64_t seed = a.spec.seed;
-  for (std::size_t k = 0; k < a.directions.size(); ++k) {
-    DiagramSpec sweep = a.spec;
-    sweep.direction_rad = a.directions[k];
-    sweep.seed = seed + 1000 * k;
-    MeasuredData part = a.model == "exact"
-                            ? simulate_diagrams(make_exact_model(patch), sweep)
-                            : simulate_diagrams(fractional_law_from_patch(patch), sweep);
-    for (MeasuredPoint& point : part.points) {
-      if (point.time) *point.time += static_cast<double>(k) * sweep.points * sweep.time_step_s;
-      d.points.push_back(point);
+  std::size_t k = 0;
+  for (const std::optional<double>& load : loads) {
+    ContactPatch patch = base;
+    if (load) patch.reference_pressure_pa *= *load / normal_load(base);
+    for (double direction : a.directions) {
+      DiagramSpec sweep = a.spec;
+      sweep.direction_rad = direction;
+      sweep.seed = seed + 1000 * k;
+      MeasuredData part = a.model == "exact"
+                              ? simulate_diagrams(make_exact_model(patch), sweep)
+                              : simulate_diagrams(fractional_law_from_patch(patch), sweep);
+      for (MeasuredPoint& point : part.points) {
+        if (point.time) *point.time += static_cast<double>(k) * sweep.points * sweep.time_step_s;
+        point.normal_load = load;
+        d.points.push_back(point);
+      }
+      ++k;
     }
   }
   return d;
@@ -300,8 +332,9 @@ int run_simulate(SimulateArgs a) {
   a.spec.radius_m = a.radius;
   // One sweep per sliding direction, one after another in time.
   if (a.directions.empty()) a.directions = {a.spec.direction_rad};
-  const long long total =
-      static_cast<long long>(a.spec.points) * static_cast<long long>(a.directions.size());
+  const long long total = static_cast<long long>(a.spec.points) *
+                          static_cast<long long>(a.directions.size()) *
+                          static_cast<long long>(std::max<std::size_t>(1, a.loads.size()));
   MeasuredData d = within_memory("simulating " + std::to_string(total) + " points",
                                  [&] { return simulate_sweeps(a, patch); });
   check_finite(d);
@@ -314,6 +347,11 @@ int run_simulate(SimulateArgs a) {
   if (a.spec.noise == SimulatedNoise::load_cell) c << " growth " << a.spec.noise_growth;
   c << ", seed " << a.spec.seed << ", psi in [" << a.spec.psi_min << ", " << a.spec.psi_max
     << "], u = omega R = " << a.spec.spin_speed_mps << " m/s";
+  if (!a.loads.empty()) {
+    c << "\nsweeps at N =";
+    for (double n : a.loads) c << " " << n;
+    c << " N (pressure in proportion, fixed radius; the Fz_N column)";
+  }
   within_memory("writing " + std::to_string(total) + " points to " + a.out,
                 [&] { write_measured_csv(a.out, d, c.str()); });
   std::printf("wrote %s: %zu points (N = %.1f N)\n", a.out.c_str(), d.points.size(),
@@ -333,10 +371,15 @@ struct FitOptionHandles {
 void add_fit_options(CLI::App& app, FitArgs& a, FitOptionHandles& h) {
   IdentifyRequest& r = a.request;
   const auto opt = [](const char* key) { return key_name(key, KeyStyle::command_line); };
-  app.add_option("data", a.data_path,
-                 "measured diagrams (CSV: vx_mps, vy_mps, omega_radps, Fx_N, ...)");
+  app.add_option("data", a.data_paths,
+                 "measured diagrams (CSV: vx_mps, vy_mps, omega_radps, Fx_N, ...); several files "
+                 "are fitted together, each row keeping its file and line");
   h.radius = app.add_option(opt("radius"), r.radius_m, key_help("radius"));
-  app.add_option(opt("normal_load"), r.normal_load_n, key_help("normal_load"));
+  app.add_option(opt("normal_load"), a.loads,
+                 std::string(key_help("normal_load")) +
+                     "; with several files, one load a file (N1,N2,...) for their rows without an "
+                     "Fz value")
+      ->delimiter(',');
   app.add_option(opt("profile"), r.profile, key_help("profile"));
   app.add_option(opt("pressure"), r.pressure_pa, key_help("pressure"));
   app.add_option("--json", a.json_path, "write the report as JSON (whole or not at all)");
@@ -399,6 +442,11 @@ CLI::App* add_simulate_options(CLI::App& app, SimulateArgs& sim) {
                    "several sweeps, one per sliding direction [rad], e.g. 0,1.5708")
       ->delimiter(',');
   simulate
+      ->add_option("--normal-load", sim.loads,
+                   "the sweeps at each of these normal loads [N], e.g. 3000,4500,6000 (pressure "
+                   "in proportion to the load at fixed radius; writes an Fz_N column)")
+      ->delimiter(',');
+  simulate
       ->add_option("--noise", sim.noise,
                    "none|relative-uniform|relative-gaussian|additive-gaussian|load-cell")
       ->check(app::one_of(
@@ -449,7 +497,7 @@ int main(int argc, char** argv) {
   google::InitGoogleLogging(argv[0]);
   try {
     if (simulate->parsed()) return app::finish_output(run_simulate(sim));
-    if (a.data_path.empty()) throw app::UsageError("no data file given (see --help)");
+    if (a.data_paths.empty()) throw app::UsageError("no data file given (see --help)");
     if (h.radius->count() == 0) throw app::UsageError("--radius is required (patch radius in m)");
     std::optional<app::OutputFolder> plots;
     if (!a.plots_dir.empty()) plots.emplace(a.plots_dir);  // before the fit: a second run stops

@@ -3,9 +3,11 @@
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
+#include <numbers>
 #include <numeric>
 #include <optional>
 
+#include "contensou/identification/sweeps.hpp"
 #include "gnuplot.hpp"
 
 namespace contensou::app {
@@ -85,37 +87,162 @@ bool write_loop_plots(const OutputDir& dir, const MeasuredData& data,
   return run_gnuplot(dir, "loop", gp);
 }
 
-bool write_plots(const OutputDir& dir, const MeasuredData& data, const FitReport& fit) {
-  const std::vector<double>& psi = fit.psi;
-  const std::vector<Resultants<double>>& model = fit.prediction;
-  std::string csv = "psi,upsilon";  // then measured, fitted and residual, per channel
-  for (int c = 0; c < kChannels; ++c)
-    csv += std::string(",measured_") + kChannelColumns[c] + ",fit_" + kChannelColumns[c] +
-           ",residual_" + kChannelColumns[c];
-  csv += "\n";
-  for (std::size_t i : points_by_psi(psi)) {
-    csv += fmt("%.10g", psi[i]) + "," + fmt("%.10g", 1.0 / psi[i]);
-    for (int c = 0; c < kChannels; ++c)
-      csv += "," + cell(data.points[i].force[c]) + "," + fmt("%.10g", model[i].vector()(c)) + "," +
-             cell(fit.residual[i][c]);
-    csv += "\n";
+namespace {
+
+std::string number_or_inf(double v) {
+  if (std::isinf(v)) return v > 0 ? "inf" : "-inf";
+  return fmt("%.10g", v);
+}
+
+// A CSV text cell, quoted (labels hold commas).
+std::string quoted(const std::string& s) {
+  std::string q = "\"";
+  for (char ch : s) q += ch == '"' ? std::string("\"\"") : std::string(1, ch);
+  return q + "\"";
+}
+
+// Whether a channel is in another unit than SI in some file (fit.csv then carries both).
+bool has_file_unit(const MeasuredData& data, int c) {
+  for (const auto& units : data.channel_units)
+    if (!units[c].unit.empty()) return true;
+  return false;
+}
+
+// For each point of the data given, its index in the fitted data (-1: left out entirely).
+std::vector<int> fitted_index(const PlotInput& in) {
+  std::vector<int> j(in.data.points.size(), -1);
+  for (std::size_t k = 0; k < in.origin.size(); ++k)
+    if (in.origin[k] >= 0 && static_cast<std::size_t>(in.origin[k]) < j.size())
+      j[static_cast<std::size_t>(in.origin[k])] = static_cast<int>(k);
+  return j;
+}
+
+std::string fit_csv_header(const MeasuredData& data) {
+  std::string h = "file,line,sweep,Fz_N,psi,upsilon";
+  for (int c = 0; c < kChannels; ++c) {
+    const std::string ch = kChannelColumns[c];
+    h += ",measured_" + ch + ",fit_" + ch + ",residual_" + ch + ",outlier_" + ch;
+    if (has_file_unit(data, c)) h += ",measured_" + ch + "_in_file,unit_" + ch + "_in_file";
   }
+  return h + "\n";
+}
+
+// One row of fit.csv: where it came from, its sweep, psi, and per channel the measured value,
+// the fitted law, the residual and (for a value left out as a gross error) the value again.
+std::string fit_csv_row(const PlotInput& in, const FitReport& fit, std::size_t i, int j,
+                        std::size_t sweep, const std::vector<std::array<bool, kChannels>>& out) {
+  const MeasuredPoint& p = in.data.points[i];
+  const std::string file = p.source < static_cast<int>(in.data.sources.size())
+                               ? in.data.sources[static_cast<std::size_t>(p.source)]
+                               : in.data.source;
+  const double u = std::abs(p.kinematics.omega) * in.radius_m;
+  const double v = std::hypot(p.kinematics.vx, p.kinematics.vy);
+  const double psi = u > 0.0 ? v / u : (v > 0.0 ? INFINITY : 0.0);
+  std::string row = quoted(file) + "," + std::to_string(p.line) + "," + std::to_string(sweep + 1) +
+                    "," + cell(p.normal_load) + "," + number_or_inf(psi) + "," +
+                    number_or_inf(v > 0.0 ? u / v : INFINITY);
+  for (int c = 0; c < kChannels; ++c) {
+    const bool left_out = out[i][c] && p.force[c];
+    std::string model = "NaN", residual = "NaN";
+    if (j >= 0) {
+      const auto k = static_cast<std::size_t>(j);
+      model = fmt("%.10g", fit.prediction[k].vector()(c));
+      residual = cell(fit.residual[k][c]);
+    }
+    row += "," + cell(p.force[c]) + "," + model + "," + residual + "," +
+           cell(left_out ? p.force[c] : std::nullopt);
+    if (!has_file_unit(in.data, c)) continue;
+    const auto& units = in.data.channel_units[std::min<std::size_t>(
+        static_cast<std::size_t>(p.source), in.data.channel_units.size() - 1)][c];
+    const std::optional<double> own =
+        p.force[c] ? std::optional<double>(*p.force[c] / units.to_si) : std::nullopt;
+    row += "," + cell(own) + "," +
+           (units.unit.empty() ? std::string(c == 2 ? "N m" : "N") : units.unit);
+  }
+  return row + "\n";
+}
+
+// The sweeps' table: number, label, file, load, direction, spin speed, rows.
+std::string sweeps_csv(const MeasuredData& data, const std::vector<Sweep>& sweeps) {
+  std::string t = "sweep,label,file,Fz_N,direction_deg,u_mps,omega_sign,rows\n";
+  for (std::size_t k = 0; k < sweeps.size(); ++k) {
+    const Sweep& s = sweeps[k];
+    const std::string file = s.file < static_cast<int>(data.sources.size())
+                                 ? data.sources[static_cast<std::size_t>(s.file)]
+                                 : data.source;
+    t += std::to_string(k + 1) + "," + quoted(s.label) + "," + quoted(file) + "," + cell(s.load_n) +
+         "," +
+         cell(s.direction_rad ? std::optional<double>(*s.direction_rad * 180.0 / std::numbers::pi)
+                              : std::nullopt) +
+         "," + fmt("%.6g", s.spin_speed_mps) + "," + std::to_string(s.spin_sign) + "," +
+         std::to_string(s.points.size()) + "\n";
+  }
+  return t;
+}
+
+// The gnuplot clauses of one channel's upper panel: measured points and the fitted law, one
+// colour a sweep (up to kMaxCurves; beyond, all rows alike, the law as points), then the values
+// left out as gross errors.
+constexpr std::size_t kMaxCurves = 10;
+
+std::string channel_clauses(const std::vector<Sweep>& sweeps, const std::string& x,
+                            const std::string& ch, bool any_outlier) {
+  std::string plot = "plot ";
+  auto only = [](std::size_t k, const std::string& col) {
+    return "(column(\"sweep\")==" + std::to_string(k + 1) + "?column(\"" + col + "\"):NaN)";
+  };
+  if (sweeps.size() <= kMaxCurves) {
+    for (std::size_t k = 0; k < sweeps.size(); ++k) {
+      const std::string colour = std::to_string(k + 1);
+      plot += std::string(k ? ", " : "") + "'fit.csv' using \"" + x +
+              "\":" + only(k, "measured_" + ch) + " with points pt 7 ps 0.6 lc " + colour +
+              " title '" + sweeps[k].label + "', '' using \"" + x + "\":" + only(k, "fit_" + ch) +
+              " with lines lw 2 lc " + colour + " notitle";
+    }
+  } else {
+    plot += "'fit.csv' using \"" + x + "\":\"measured_" + ch +
+            "\" with points pt 7 ps 0.5 lc rgb '#1f77b4' title 'measured (" +
+            std::to_string(sweeps.size()) + " sweeps)', '' using \"" + x + "\":\"fit_" + ch +
+            "\" with points pt 6 ps 0.5 lc rgb '#d62728' title 'fitted law'";
+  }
+  if (any_outlier)
+    plot += ", 'fit.csv' using \"" + x + "\":\"outlier_" + ch +
+            "\" with points pt 2 ps 1.6 lw 2 lc rgb 'black' title 'gross error (left out)'";
+  return plot + "\n";
+}
+
+}  // namespace
+
+bool write_plots(const OutputDir& dir, const PlotInput& in, const FitReport& fit) {
+  const std::vector<Sweep> sweeps = sweeps_of(in.data, in.radius_m);
+  const std::vector<int> j = fitted_index(in);
+  std::vector<std::array<bool, kChannels>> out(in.data.points.size());
+  for (const Outlier& o : in.outliers)
+    if (o.point >= 0 && static_cast<std::size_t>(o.point) < out.size())
+      out[static_cast<std::size_t>(o.point)][o.channel] = true;
+  std::string csv = fit_csv_header(in.data);
+  for (std::size_t k = 0; k < sweeps.size(); ++k)
+    for (std::size_t i : sweeps[k].points) csv += fit_csv_row(in, fit, i, j[i], k, out);
   dir.write("fit.csv", csv);
+  dir.write("sweeps.csv", sweeps_csv(in.data, sweeps));
   std::string gp =
-      "set terminal pngcairo size 900,720 font ',10'\nset datafile separator ','\n"
+      "set terminal pngcairo size 1100,760 font ',10'\nset datafile separator ','\n"
       "set datafile columnheaders\nset datafile missing 'NaN'\n";
   const char* title[3] = {"Fx: longitudinal force", "Fy: lateral force", "Mz: spin torque"};
   for (int c = 0; c < kChannels; ++c) {
-    if (data.count(c) == 0) continue;
+    if (in.data.count(c) == 0) continue;
+    bool any_outlier = false;
+    for (const Outlier& o : in.outliers) any_outlier = any_outlier || o.channel == c;
     const std::string ch = kChannelColumns[c], x = c == 0 ? "psi" : "upsilon";
     const std::string xlabel = c == 0 ? "psi = v / (omega R) [-]" : "upsilon = omega R / v [-]";
     gp += "set output 'fit_" + ch + ".png'\n";
-    gp += "set multiplot layout 2,1 title '" + std::string(title[c]) + "'\n";
-    gp += "set logscale x\nset format x '10^{%L}'\nset grid\nset key top right opaque box\n";
+    gp += "set multiplot layout 2,1 title '" + std::string(title[c]) + ": measured and fitted, " +
+          "one colour a sweep' noenhanced\n";
+    gp +=
+        "set logscale x\nset format x '10^{%L}'\nset grid\n"
+        "set key outside right top box noenhanced\nset lmargin 12\nset rmargin 34\n";
     gp += "set ylabel '" + std::string(kAxisLabel[c]) + "'\nset xlabel '" + xlabel + "'\n";
-    gp += "plot 'fit.csv' using \"" + x + "\":\"measured_" + ch +
-          "\" with points pt 7 ps 0.6 lc rgb '#1f77b4' title 'measured', '' using \"" + x +
-          "\":\"fit_" + ch + "\" with lines lw 2 lc rgb '#d62728' title 'fitted law'\n";
+    gp += channel_clauses(sweeps, x, ch, any_outlier);
     gp += "unset key\nset ylabel 'residual " + std::string(kAxisLabel[c]) + "'\n";
     gp += "plot 'fit.csv' using \"" + x + "\":\"residual_" + ch +
           "\" with impulses lc rgb '#555555' notitle, 0 with lines lc rgb 'black' notitle\n";

@@ -7,8 +7,9 @@ Two forms of input:
   last two axes of 3 x 3 (rows Fx, Fy, Mz; columns vx, vy, omega);
 - one table of columns, a pandas DataFrame or any mapping of column name to 1-D array, with
   the columns ``vx_mps``, ``vy_mps`` and ``omega_radps`` (the names of contensou-identify's
-  files, theory.md section 6; other columns are ignored); the result is a ``FrictionTable``
-  labelled ``Fx_N``, ``Fy_N``, ``Mz_Nm``, whose ``to_frame()`` is a DataFrame on the input's
+  files, theory.md section 6; the same quantities in another unit, as ``omega [rpm]`` or
+  ``vx_kmh``, are converted as in data files; other columns are ignored); the result is a
+  ``FrictionTable`` labelled ``Fx_N``, ``Fy_N``, ``Mz_Nm``, whose ``to_frame()`` is a DataFrame on the input's
   index.
 
 The loop over points runs in C++ with the GIL released, on ``threads`` threads (1 by default;
@@ -165,18 +166,49 @@ def _is_table(a: Any) -> bool:
     return not isinstance(a, np.ndarray) and hasattr(a, "keys") and hasattr(a, "__getitem__")
 
 
+_KINEMATIC_DIMENSIONS = {"vx_mps": ("vx", "speed"), "vy_mps": ("vy", "speed"),
+                         "omega_radps": ("omega", "angular rate")}
+
+
+def _find_kinematic_column(names: list[str], si_name: str) -> tuple[Optional[str], float]:
+    """The column holding a kinematic quantity and its factor to SI: the SI name itself, else a
+    name with a unit the readers convert ('omega [rpm]', 'vx_kmh', 'vy (mm/s)'), as in data
+    files (one unit table for both). (None, 1) when there is none; ValueError for two."""
+    if si_name in names:
+        return si_name, 1.0
+    stem, dimension = _KINEMATIC_DIMENSIONS[si_name]
+    found = []
+    for n in names:
+        name, unit = _core._split_name_and_unit(n)
+        if name.lower() != stem or not unit:
+            continue
+        u = _core._unit(unit)
+        if u is None or u[0] != dimension:
+            raise ValueError(f"column '{n}': '{unit}' is not a unit of {dimension} "
+                             f"({_core._units_of(dimension)})")
+        found.append((n, u[1]))
+    if len(found) > 1:
+        raise ValueError(f"columns {', '.join(repr(f[0]) for f in found)}: two columns for "
+                         f"{si_name}; keep one")
+    return found[0] if found else (None, 1.0)
+
+
 def _table_kinematics(data: Any) -> tuple[list[np.ndarray], Any]:
-    """The columns vx_mps, vy_mps, omega_radps of a DataFrame or mapping, as float64 arrays of
-    one length, and the DataFrame's index (None for a mapping)."""
+    """The columns vx_mps, vy_mps, omega_radps of a DataFrame or mapping (or the same quantities
+    in other units, 'omega [rpm]', converted), as float64 arrays of one length, and the
+    DataFrame's index (None for a mapping)."""
     names = [str(k) for k in data.keys()]
-    missing = [c for c in KINEMATIC_COLUMNS if c not in names]
+    found = {c: _find_kinematic_column(names, c) for c in KINEMATIC_COLUMNS}
+    missing = [c for c in KINEMATIC_COLUMNS if found[c][0] is None]
     if missing:
         shown = ", ".join(names[:10]) + (", ..." if len(names) > 10 else "")
         raise ValueError(
             f"columns: missing {', '.join(repr(m) for m in missing)}: the kinematics are the "
-            f"columns vx_mps, vy_mps [m/s] and omega_radps [rad/s]; found {shown or 'none'}")
+            f"columns vx_mps, vy_mps [m/s] and omega_radps [rad/s] (or in another unit, as "
+            f"'omega [rpm]'); found {shown or 'none'}")
     arrays = []
-    for name in KINEMATIC_COLUMNS:
+    for si_name in KINEMATIC_COLUMNS:
+        name, to_si = found[si_name]
         col = data[name]
         if hasattr(col, "to_numpy") and not np.iscomplexobj(col):
             try:  # pandas: missing values (None, pd.NA) become NaN, refused as not finite
@@ -186,7 +218,7 @@ def _table_kinematics(data: Any) -> tuple[list[np.ndarray], Any]:
         a = _real_array(f"column '{name}'", col)
         if a.ndim != 1:
             raise ValueError(f"column '{name}': expected one dimension, got shape {a.shape}")
-        arrays.append(np.ascontiguousarray(a))
+        arrays.append(np.ascontiguousarray(a * to_si if to_si != 1.0 else a))
     if len({a.size for a in arrays}) > 1:
         raise ValueError("columns vx_mps, vy_mps, omega_radps: different lengths "
                          + ", ".join(str(a.size) for a in arrays))

@@ -12,7 +12,7 @@ from __future__ import annotations
 import json
 import os
 from dataclasses import dataclass, field
-from typing import Any, Dict, Mapping, Optional, Union
+from typing import Any, Dict, Mapping, Optional, Sequence, Union
 
 import numpy as np
 
@@ -251,7 +251,7 @@ def identify(
     radius: float,
     profile: Optional[Union[str, os.PathLike]] = None,
     pressure: Optional[float] = None,
-    normal_load: Optional[float] = None,
+    normal_load: Optional[Union[float, Sequence[float]]] = None,
     loop: bool = True,
     fix: Optional[Mapping[str, float]] = None,
     loss: str = "none",
@@ -272,7 +272,10 @@ def identify(
     errors, the same report (``to_json()``, ``text``).
 
     ``data`` is a CSV path, a DataFrame, a mapping of column name to array, or a structured or
-    (n, k) array in the order vx_mps, vy_mps, omega_radps, Fx_N, Fy_N, Mz_Nm, Fz_N, t_s.
+    (n, k) array in the order vx_mps, vy_mps, omega_radps, Fx_N, Fy_N, Mz_Nm, Fz_N, t_s; or a
+    list of them, fitted together (each row keeping its table and line), with ``normal_load``
+    one load for every table or a list of one a table (for their rows without an Fz value). Rows
+    with an Fz value are each fitted at their own load.
     Columns may carry units in their names ('vx [km/h]', omega_rpm, 'Fx [kN]'): they are
     converted to SI. ``columns`` maps other names: ``{"vx": "Speed [km/h]"}`` or
     ``"vx=Speed [km/h],omega=Rate"``; ``{"extra": ["Fx_raw"]}`` keeps a column whose name looks
@@ -288,7 +291,6 @@ def identify(
     # Numbers by the package's one rule (contensou._args: a str is a TypeError, not converted).
     request = _core._IdentifyRequest()
     request.radius = _args.number("radius", radius)
-    request.normal_load = _args.optional_number("normal_load", normal_load)
     if profile is not None and not isinstance(profile, (str, os.PathLike)):
         _args.wrong_type("profile", profile, "a built-in profile's name (uniform, hertz, "
                          "seed-tire) or the path of a profile CSV")
@@ -307,14 +309,32 @@ def identify(
     request.speed_inside_integrals = _flag("speed_inside_integrals", speed_inside_integrals)
     request.outliers = _flag("outliers", outliers)
     renames = _renames(columns)
-    if isinstance(data, (str, os.PathLike)):
-        path = os.fspath(data)
-        raw = _core._identify(path, source or path, [], [], renames, request)
+    tables = list(data) if isinstance(data, (list, tuple)) else [data]
+    if not tables:
+        raise ValueError("data: an empty list; give a table, or several")
+    loads: list[float] = []
+    if isinstance(normal_load, (list, tuple)):  # one a table: for their rows without Fz
+        loads = [_args.number(f"normal_load[{i}]", x) for i, x in enumerate(normal_load)]
+        if len(loads) != len(tables):
+            raise ValueError(f"normal_load: {len(loads)} values for {len(tables)} tables: give "
+                             f"one load, or one a table in their order")
     else:
-        if source is None:
-            source = "<DataFrame>" if hasattr(data, "iloc") else "<arrays>"
-        names, cols = _table_of(data)
-        raw = _core._identify(None, source, names, cols, renames, request)
+        request.normal_load = _args.optional_number("normal_load", normal_load)
+    # (path or None, source name, column names, columns) a table
+    items: list[tuple[Optional[str], str, list[str], list[Any]]] = []
+    for k, table in enumerate(tables):
+        one = len(tables) == 1
+        name = source if one or source is None else f"{source}[{k}]"
+        if isinstance(table, (str, os.PathLike)):
+            path = os.fspath(table)
+            items.append((str(path), str(name or path), [], []))
+            continue
+        if name is None:
+            kind = "DataFrame" if hasattr(table, "iloc") else "arrays"
+            name = f"<{kind}>" if one else f"<{kind} {k + 1}>"
+        names, cols = _table_of(table)
+        items.append((None, name, names, cols))
+    raw = _core._identify(items, loads, renames, request)
     return IdentificationResult(raw)
 
 

@@ -13,6 +13,7 @@
 
 #include "common.hpp"
 #include "contensou/friction.hpp"
+#include "contensou/friction/units.hpp"
 
 namespace contensou::python {
 namespace {
@@ -478,9 +479,39 @@ void bind_loops(nb::module_& m) {
         "jacobian"_a = false, "seconds of the plain C++ loop (benchmark baseline)");
 }
 
+// The unit table of the C++ readers (units.hpp), for the package's own column reading.
+void bind_units(nb::module_& m) {
+  m.def(
+      "_split_name_and_unit",
+      [](const std::string& header) {
+        const NameAndUnit nu = split_name_and_unit(header);
+        return std::make_pair(nu.name, nu.unit);
+      },
+      "header"_a, "(name, unit) of a column header: 'omega [rpm]' -> ('omega', 'rpm')");
+  m.def(
+      "_unit",
+      [](const std::string& text) -> std::optional<std::tuple<std::string, double, double>> {
+        const Unit* u = find_unit(text);
+        if (u == nullptr) return std::nullopt;
+        return std::make_tuple(std::string(dimension_name(u->dimension)), u->to_si, u->offset_si);
+      },
+      "text"_a, "(dimension, to_si, offset_si) of a unit, or None: SI = to_si * value + offset_si");
+  m.def(
+      "_units_of",
+      [](const std::string& dimension) {
+        for (Dimension d : {Dimension::speed, Dimension::rate, Dimension::force, Dimension::moment,
+                            Dimension::time, Dimension::temperature, Dimension::pressure,
+                            Dimension::angle, Dimension::length, Dimension::ratio})
+          if (dimension == dimension_name(d)) return units_of(d);
+        return std::string();
+      },
+      "dimension"_a, "the units of a dimension the readers know, for messages");
+}
+
 }  // namespace
 
 void bind_friction(nb::module_& m) {
+  bind_units(m);
   bind_profiles(m);
   bind_patch(m);
   bind_laws(m);

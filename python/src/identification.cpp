@@ -156,13 +156,27 @@ ColumnRenames renames_of(const nb::object& renames) {
 }
 
 // contensou.identify(): the data from a CSV path or named columns, the request as the app's.
-nb::dict identify(std::optional<std::string> path, std::string source,
-                  const std::vector<std::string>& names, const nb::list& columns,
+// One table of contensou.identify(): a CSV path, or a source name with column names and columns.
+MeasuredData read_table(const nb::tuple& item, const ColumnRenames& renames) {
+  const nb::object path = item[0];
+  const std::string source = nb::cast<std::string>(item[1]);
+  MeasuredData data =
+      path.is_none() ? data_from_columns(source, nb::cast<std::vector<std::string>>(item[2]),
+                                         nb::cast<nb::list>(item[3]), renames)
+                     : read_measured_csv(nb::cast<std::string>(path), renames, KeyStyle::python);
+  if (!source.empty()) data.source = source;
+  return data;
+}
+
+// contensou.identify() on one table or several fitted together (combine_measured: each row
+// keeps its table and line; `loads`, one a table, for their rows without Fz).
+nb::dict identify(const nb::list& items, const std::vector<double>& loads,
                   const nb::object& renames, IdentifyRequest request) {
   const ColumnRenames column_renames = renames_of(renames);
-  MeasuredData data = path ? read_measured_csv(*path, column_renames, KeyStyle::python)
-                           : data_from_columns(source, names, columns, column_renames);
-  if (!source.empty()) data.source = source;
+  std::vector<MeasuredData> tables;
+  for (const nb::handle item : items)
+    tables.push_back(read_table(nb::cast<nb::tuple>(item), column_renames));
+  MeasuredData data = combine_measured(std::move(tables), loads);
   request.style = KeyStyle::python;
   const IdentifyRun run = run_interruptible([&](const StopRequest& stop) {
     IdentifyRequest with_stop = request;
@@ -205,8 +219,7 @@ void bind_identification(nb::module_& m) {
   // Ceres logs through glog: quiet, as contensou-identify without --verbose.
   FLAGS_minloglevel = google::GLOG_FATAL;
   bind_request(m);
-  m.def("_identify", &identify, "path"_a.none(), "source"_a, "names"_a, "columns"_a,
-        "renames"_a.none(), "request"_a);
+  m.def("_identify", &identify, "items"_a, "loads"_a, "renames"_a.none(), "request"_a);
 }
 
 }  // namespace contensou::python

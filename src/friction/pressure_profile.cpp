@@ -1,12 +1,14 @@
 #include "contensou/friction/pressure_profile.hpp"
 
 #include <algorithm>
+#include <cctype>
 #include <cmath>
 #include <numbers>
 
 #include "contensou/friction/csv.hpp"
 #include "contensou/friction/error.hpp"
 #include "contensou/friction/quadrature.hpp"
+#include "contensou/friction/units.hpp"
 
 namespace contensou {
 namespace {
@@ -344,17 +346,44 @@ PressureProfile seed_tire_profile() {
   return p;
 }
 
+namespace {
+
+// The profile table's pressure column: "pressure_Pa", or a column named "pressure" (or "p")
+// in any pressure unit ("pressure [kPa]", "p_bar"); -1 if none. `to_si` gets its factor.
+int pressure_column(const CsvTable& table, double& to_si) {
+  to_si = 1.0;
+  for (std::size_t c = 0; c < table.header.size(); ++c) {
+    const NameAndUnit nu = split_name_and_unit(table.header[c]);
+    std::string name = nu.name;
+    for (char& ch : name) ch = static_cast<char>(std::tolower(static_cast<unsigned char>(ch)));
+    if (name != "pressure" && name != "p") continue;
+    const Unit* u = find_unit(nu.unit);
+    if (u == nullptr || u->dimension != Dimension::pressure)
+      throw table.cell_error(table.header_line, static_cast<int>(c),
+                             "'" + table.header[c] + "' is not in a pressure unit (" +
+                                 units_of(Dimension::pressure) + ")");
+    to_si = u->to_si;
+    return static_cast<int>(c);
+  }
+  return -1;
+}
+
+}  // namespace
+
 ProfileTable read_profile_table(const std::string& path) {
   CsvLimits limits;  // reading stops at the first row past the table's limit
   limits.max_rows = kMaxProfilePoints;
   limits.rows_advice = too_many_points_advice();
   const CsvTable table = read_csv(path, limits);
-  const int ir = table.column("rho"), ip = table.column("pressure_Pa");
+  double to_pa = 1.0;
+  const int ir = table.column("rho"), ip = pressure_column(table, to_pa);
   if (ir < 0 || ip < 0) {
     const std::string missing = ir < 0 ? "rho" : "pressure_Pa";
     const std::string close = table.closest_column(missing);
     throw ParseError(path, table.header_line, 0,
-                     "missing column '" + missing + "' (need rho,pressure_Pa" +
+                     "missing column '" + missing +
+                         "' (need rho and the pressure, pressure_Pa or in another unit as "
+                         "'pressure [kPa]'" +
                          (close.empty() ? "" : "; did you mean '" + close + "'?") + ")");
   }
   ProfileTable out;
@@ -371,7 +400,7 @@ ProfileTable read_profile_table(const std::string& path) {
     const double r = std::min(v[0], 1.0);  // past the rim by rounding: on it
     check_profile_row(table, row.line, ir, r, out.rho.empty() ? nullptr : &out.rho.back());
     out.rho.push_back(out.rho.empty() ? 0.0 : r);  // within 1e-9 of the centre: the centre
-    out.pressure_pa.push_back(v[1]);
+    out.pressure_pa.push_back(v[1] * to_pa);
   }
   if (out.rho.size() < 2)
     throw ParseError(

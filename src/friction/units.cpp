@@ -4,6 +4,7 @@
 #include <array>
 #include <cctype>
 #include <cmath>
+#include <utility>
 #include <vector>
 
 namespace contensou {
@@ -108,6 +109,23 @@ std::string units_of(Dimension d) {
   for (const UnitSpec& spec : unit_table())
     if (spec.unit.dimension == d) s += (s.empty() ? "" : ", ") + std::string(spec.unit.display);
   return s;
+}
+
+NameAndUnit split_name_and_unit(const std::string& header) {
+  auto trim = [](const std::string& t) {
+    const auto b = t.find_first_not_of(" \t"), e = t.find_last_not_of(" \t");
+    return b == std::string::npos ? std::string() : t.substr(b, e - b + 1);
+  };
+  const std::string h = trim(header);
+  for (const auto& [open, close] : {std::pair{'[', ']'}, std::pair{'(', ')'}}) {
+    const auto b = h.rfind(open);
+    if (b != std::string::npos && b > 0 && h.back() == close)
+      return {trim(h.substr(0, b)), trim(h.substr(b + 1, h.size() - b - 2))};
+  }
+  const auto u = h.rfind('_');
+  if (u != std::string::npos && u > 0 && u + 1 < h.size() && find_unit(h.substr(u + 1)))
+    return {h.substr(0, u), h.substr(u + 1)};
+  return {h, ""};
 }
 
 }  // namespace contensou

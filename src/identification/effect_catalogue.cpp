@@ -106,11 +106,22 @@ std::string effect_in_words(Effect e, const std::string& detail) {
   return with_detail(describe(e).words, detail);
 }
 
+namespace {
+
+// A table cell: '|' escaped, so that |y| does not end the cell.
+std::string markdown_cell(const std::string& text) {
+  std::string s;
+  for (char c : text) s += c == '|' ? std::string("\\|") : std::string(1, c);
+  return s;
+}
+
+}  // namespace
+
 std::string effect_catalogue_markdown() {
   std::string s = "| effect | what it adds | null | what separates it |\n|---|---|---|---|\n";
   for (const EffectDescriptor& d : kCatalogue)
-    s += "| `" + std::string(d.name) + "` | " + d.adds + " | " + d.null + " | " +
-         with_detail(d.separate, "X") + " |\n";
+    s += "| `" + std::string(d.name) + "` | " + markdown_cell(d.adds) + " | " +
+         markdown_cell(d.null) + " | " + markdown_cell(with_detail(d.separate, "X")) + " |\n";
   return s;
 }
 

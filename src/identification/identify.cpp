@@ -67,21 +67,21 @@ FitReport judge_fit(const MeasuredData& data, const IdentificationOptions& judge
 Identification identify(const MeasuredData& data, const IdentifyOptions& options) {
   Identification r;
   r.fitted = data;
+  r.origin.resize(data.points.size());
+  for (std::size_t i = 0; i < r.origin.size(); ++i) r.origin[i] = static_cast<int>(i);
   if (options.leave_out_outliers) {
     // Rounds of: the robust fit, every gross error it shows (outliers.hpp), the rows without
     // them; a glitch hidden by glitched neighbours shows once they are out.
     const IdentificationOptions judge = robust(options.fit);
-    std::vector<int> origin(data.points.size());
-    for (std::size_t i = 0; i < origin.size(); ++i) origin[i] = static_cast<int>(i);
     FitReport current = judge_fit(data, judge);
     for (int round = 0; round < 10; ++round) {
       const std::vector<Outlier> found = find_outliers(r.fitted, current.prediction);
       if (found.empty()) break;
       for (Outlier o : found) {
-        o.point = origin[static_cast<std::size_t>(o.point)];
+        o.point = r.origin[static_cast<std::size_t>(o.point)];
         r.outliers.push_back(o);
       }
-      r.fitted = clean_rows(data, r.outliers, origin);
+      r.fitted = clean_rows(data, r.outliers, r.origin);
       current = judge_fit(r.fitted, judge);
     }
     std::sort(r.outliers.begin(), r.outliers.end(), [](const Outlier& a, const Outlier& b) {

@@ -118,6 +118,12 @@ MeasuredData measured_data_from_table(const CsvTable& t, const ColumnRenames& re
                      cols.units_row ? "no data rows after the header and its units row"
                                     : "no data rows after the header");
   data.columns_not_read = cols.not_read;
+  std::array<MeasuredData::ChannelUnit, kChannels> units;
+  for (int c = 0; c < kChannels; ++c) {
+    const LabColumn& col = cols.column[3 + c];
+    if (col.present() && col.to_si != 1.0) units[c] = {col.unit, col.to_si};
+  }
+  data.channel_units.push_back(units);
   read_recorded(t, cols, cols.units_row ? 1 : 0, data);
   return data;
 }
@@ -125,6 +131,67 @@ MeasuredData measured_data_from_table(const CsvTable& t, const ColumnRenames& re
 MeasuredData read_measured_csv(const std::string& path, const ColumnRenames& renames,
                                KeyStyle style) {
   return measured_data_from_table(read_csv(path), renames, style);
+}
+
+namespace {
+
+// The index of a recorded column with this header in `into`, appended if new.
+std::size_t recorded_index(MeasuredData& into, const RecordedVariable& v) {
+  for (std::size_t k = 0; k < into.recorded.size(); ++k)
+    if (into.recorded[k].header == v.header) return k;
+  into.recorded.push_back(v);
+  return into.recorded.size() - 1;
+}
+
+}  // namespace
+
+MeasuredData combine_measured(std::vector<MeasuredData> files, const std::vector<double>& loads) {
+  if (!loads.empty() && loads.size() != 1 && loads.size() != files.size())
+    throw InvalidArgument(
+        "normal load", std::to_string(loads.size()) + " values",
+        "give one load for every file or one a file (" + std::to_string(files.size()) + " files)");
+  for (double n : loads) require_positive("normal load", n);
+  if (files.size() == 1 && loads.size() <= 1) return std::move(files.front());
+  MeasuredData all;
+  for (std::size_t f = 0; f < files.size(); ++f) {
+    MeasuredData& d = files[f];
+    all.source += (f ? ", " : "") + d.source;
+    all.sources.push_back(d.source);
+    for (const std::string& n : d.column_notes) all.column_notes.push_back(d.source + ": " + n);
+    for (const std::string& n : d.columns_not_read)
+      all.columns_not_read.push_back(d.source + ": " + n);
+    all.channel_units.push_back(d.channel_units.empty()
+                                    ? std::array<MeasuredData::ChannelUnit, kChannels>{}
+                                    : d.channel_units.front());
+    std::vector<std::size_t> slot;
+    for (const RecordedVariable& v : d.recorded) slot.push_back(recorded_index(all, v));
+    for (MeasuredPoint& p : d.points) {
+      std::vector<double> values(all.recorded.size(), std::nan(""));
+      for (std::size_t k = 0; k < slot.size(); ++k) values[slot[k]] = p.recorded[k];
+      p.recorded = std::move(values);
+      p.source = static_cast<int>(f);
+      if (!p.normal_load && !loads.empty()) p.normal_load = loads.size() == 1 ? loads[0] : loads[f];
+      all.points.push_back(std::move(p));
+    }
+  }
+  for (MeasuredPoint& p : all.points) p.recorded.resize(all.recorded.size(), std::nan(""));
+  return all;
+}
+
+std::string MeasuredData::in_file_unit(std::size_t point, int channel, double si) const {
+  const std::size_t s = static_cast<std::size_t>(points[point].source);
+  if (s >= channel_units.size() || channel_units[s][channel].unit.empty()) return "";
+  const ChannelUnit& u = channel_units[s][channel];
+  char buf[64];
+  std::snprintf(buf, sizeof buf, "%.6g %s", si / u.to_si, u.unit.c_str());
+  return buf;
+}
+
+std::string point_location(const MeasuredData& data, std::size_t point) {
+  const MeasuredPoint& p = data.points[point];
+  const std::size_t s = static_cast<std::size_t>(p.source);
+  const std::string file = s < data.sources.size() ? data.sources[s] : data.source;
+  return p.line > 0 ? file + ":" + std::to_string(p.line) : "point " + std::to_string(point);
 }
 
 std::optional<LoadFromData> normal_load_from_data(const MeasuredData& data) {

@@ -118,11 +118,15 @@ nlohmann::json fit_report(const ReportInput& info, const FitReport& base) {
                         {"point", o.point},
                         {"channel", kChannelColumns[o.channel]},
                         {"value", o.value},
-                        {"residual_sigma", o.residual_sigma}});
+                        {"residual_sigma", o.residual_sigma},
+                        {"where", o.where},
+                        {"value_in_file_unit", o.file_value}});
   r["input"]["outliers"] = outliers;
   r["input"]["outlier_rule"] =
-      "residual minus the median of its four neighbours in file order, beyond 8 local robust sigma "
-      "(1.4826 median|d| / 1.14): left out of the fit";
+      "residual of a robust fit minus the median of its four neighbours in kinematic order (load, "
+      "spin sense, sliding direction, v/omega), beyond 8 local robust sigma (1.4826 median|d| / "
+      "1.14), the row's own residual carrying at least half of it: left out of the fit";
+  if (!info.sources.empty()) r["input"]["files"] = info.sources;
   if (!info.profile.empty()) {
     r["input"]["profile"] = info.profile;
     if (info.profile_rms_residual_pa) {
@@ -244,6 +248,7 @@ ReportInput describe_run(const std::string& file, const MeasuredData& data, doub
   in.radius_m = radius_m;
   in.normal_load_n = normal_load_n;
   in.column_notes = data.column_notes;
+  if (data.sources.size() > 1) in.sources = data.sources;
   in.columns_not_read = data.columns_not_read;
   for (std::size_t k = 0; k < data.recorded.size(); ++k) {
     RecordedSummary c{data.recorded[k], 0.0, 0.0, 0};

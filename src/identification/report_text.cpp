@@ -25,8 +25,8 @@ std::string input_text(const ReportInput& info) {
   for (const std::string& note : info.columns_not_read) s += "\nnot read: " + note;
   if (!info.outliers.empty()) {
     s += "\noutliers: " + std::to_string(info.outliers.size()) +
-         " values left out of the fit as gross errors (residual more than 8 robust sigma from "
-         "its neighbours'):";
+         " values left out of the fit as gross errors (a robust fit's residual more than 8 robust "
+         "sigma from its kinematic neighbours'):";
     for (const Outlier& o : info.outliers) s += "\n  " + o.describe(info.file);
   }
   if (!info.profile.empty()) {

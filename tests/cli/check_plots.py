@@ -92,6 +92,9 @@ def check_script(gp):
             if not names:
                 continue
             plotted = [n for n in re.findall(r'^"([^"]+)":"([^"]+)"', spec)]
+            # One sweep's rows: "x":(column("sweep")==K?column("y"):NaN).
+            plotted += re.findall(r'^"([^"]+)":\(column\("sweep"\)==\d+\?column\("([^"]+)"\):NaN\)$',
+                                  spec)
             if not plotted:
                 continue
             x, y = plotted[0]

@@ -151,6 +151,29 @@ TEST(Profiles, ReadsProfileCsvNormalisedByTheMeanPressure) {
   EXPECT_LT(m.reference_pressure_pa, 300000.0);
 }
 
+// The pressure column in any pressure unit the readers know, converted as in data files: the
+// same table in Pa, kPa and bar gives the same profile and mean pressure.
+TEST(Profiles, ProfileCsvPressureInOtherUnits) {
+  const MeasuredProfile pa =
+      read_profile_csv(write_temp("pa.csv", "rho,pressure_Pa\n0,300000\n0.5,300000\n1,100000\n"));
+  for (const char* text :
+       {"rho,pressure [kPa]\n0,300\n0.5,300\n1,100\n", "rho,pressure_bar\n0,3\n0.5,3\n1,1\n",
+        "rho,p (MPa)\n0,0.3\n0.5,0.3\n1,0.1\n"}) {
+    const MeasuredProfile m = read_profile_csv(write_temp("units.csv", text));
+    EXPECT_NEAR(m.reference_pressure_pa, pa.reference_pressure_pa, 1e-12 * pa.reference_pressure_pa)
+        << text;
+    EXPECT_NEAR(shape_value(m.profile, 0.8), shape_value(pa.profile, 0.8), 1e-12) << text;
+  }
+  try {
+    read_profile_csv(write_temp("speed.csv", "rho,pressure [m/s]\n0,1\n1,1\n"));
+    FAIL() << "a pressure column in m/s was accepted";
+  } catch (const ParseError& e) {
+    EXPECT_EQ(e.line(), 1);
+    EXPECT_NE(std::string(e.what()).find("not in a pressure unit"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("kPa"), std::string::npos) << e.what();
+  }
+}
+
 TEST(Profiles, ProfileCsvErrorsNameLineAndColumn) {
   auto line_of = [](const std::string& text) {
     try {

@@ -97,6 +97,20 @@ def test_a_mapping_of_columns_works_without_pandas_types():
                                   c.fractional_resultants(law, [0.1, 0.5], [0.0, 0.2], [5.0, -3.0]))
 
 
+def test_kinematic_columns_in_other_units_are_converted_as_in_data_files():
+    law = c.fractional_law_from_patch(c.seed_tire_patch())
+    si = {"vx_mps": [0.5, 1.0], "vy_mps": [0.0, 0.25], "omega_radps": [10.0, -20.0]}
+    other = {"vx [km/h]": [1.8, 3.6], "vy_mm/s": [0.0, 250.0],
+             "omega (rpm)": [10.0 * 60 / (2 * math.pi), -20.0 * 60 / (2 * math.pi)]}
+    np.testing.assert_allclose(c.fractional_resultants(law, pd.DataFrame(other)).resultants,
+                               c.fractional_resultants(law, si).resultants, rtol=1e-13)
+    with pytest.raises(ValueError, match=r"column 'omega \[N\]': 'N' is not a unit of angular rate"):
+        c.fractional_resultants(law, {"vx_mps": [1.0], "vy_mps": [0.0], "omega [N]": [1.0]})
+    with pytest.raises(ValueError, match="two columns for omega_radps"):
+        c.fractional_resultants(law, {"vx_mps": [1.0], "vy_mps": [0.0], "omega [rpm]": [1.0],
+                                      "omega_deg/s": [1.0]})
+
+
 def test_table_errors_name_the_columns():
     law = c.fractional_law_from_patch(c.seed_tire_patch())
     with pytest.raises(ValueError, match=r"missing 'omega_radps'.*vx_mps, vy_mps \[m/s\] and omega_radps"):

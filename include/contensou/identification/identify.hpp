@@ -22,6 +22,7 @@ struct IdentifyOptions {
 struct Identification {
   std::vector<Outlier> outliers;  // left out of the fit (indices into the data given)
   MeasuredData fitted;            // the data the reported fit used
+  std::vector<int> origin;        // for each point of `fitted`, its index in the data given
   FitReport fit;                  // the fractional law (loop off) or the loop's base fit
   std::optional<ClosedLoopReport> loop;
   const FitReport& final_fit() const { return loop ? loop->final_fit : fit; }

@@ -53,6 +53,15 @@ struct MeasuredData {
   std::vector<RecordedVariable> recorded;
   // The columns not read at all, with the reason ("'comment' (column 9): text").
   std::vector<std::string> columns_not_read;
+  // The unit each channel's column is in, per file (sources' order; one entry for a single file;
+  // empty for data made in memory): value in SI = to_si * value in the file.
+  struct ChannelUnit {
+    std::string unit = "";  // as the report writes it ("kN"; "" for SI)
+    double to_si = 1.0;
+  };
+  std::vector<std::array<ChannelUnit, kChannels>> channel_units;
+  // A channel's value as its file writes it, "1.84278 kN" ("" when the file's unit is SI).
+  std::string in_file_unit(std::size_t point, int channel, double value_si) const;
 
   // Number of measured values of a channel.
   int count(int channel) const;
@@ -72,6 +81,18 @@ MeasuredData read_measured_csv(const std::string& path, const ColumnRenames& ren
 // cells, with `rows_numbered` set): the same columns, units, renames and refusals.
 MeasuredData measured_data_from_table(const CsvTable& table, const ColumnRenames& renames = {},
                                       KeyStyle style = KeyStyle::command_line);
+
+// Several files fitted together (a test programme split over files, runs at several loads): the
+// points of each in turn, each keeping its file (MeasuredPoint::source, into `sources`) and line;
+// the recorded columns matched by their header (a column one file lacks is NaN in its rows); the
+// column notes prefixed by their file. `loads` is empty, one load for every file, or one a
+// file: a row without its own Fz value takes its file's load (each row is then fitted at its own
+// load). Throws InvalidArgument for a loads list of another length or a load that is not
+// positive.
+MeasuredData combine_measured(std::vector<MeasuredData> files, const std::vector<double>& loads);
+
+// Where a point came from, "file:line" ("point N" when it has no line).
+std::string point_location(const MeasuredData& data, std::size_t point);
 
 // The normal load the data carry in their Fz column: the mean over the rows that have it, the
 // largest relative deviation from it and the number of rows; nullopt if no row has one.

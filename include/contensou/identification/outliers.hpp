@@ -33,12 +33,16 @@ namespace contensou {
 inline constexpr double kOutlierThresholdSigma = 8.0;
 
 struct Outlier {
-  int point = 0;                                          // index into the data's points
-  int line = 0;                                           // line in the file (0: not from a file)
-  int channel = 0;                                        // 0 Fx, 1 Fy, 2 Mz
-  double value = 0.0;                                     // the measured value [N or N m]
-  double residual_sigma = 0.0;                            // d_i / sigma, signed
-  std::string describe(const std::string& source) const;  // "data.csv:17 Fy_N +41.2 sigma"
+  int point = 0;                // index into the data's points
+  int line = 0;                 // line in the file (0: not from a file)
+  int channel = 0;              // 0 Fx, 1 Fy, 2 Mz
+  double value = 0.0;           // the measured value [N or N m]
+  double residual_sigma = 0.0;  // d_i / sigma, signed
+  std::string where;            // "data.csv:17" (point_location; "" when found by older code)
+  std::string file_value;       // the value in its file's unit when it is not SI ("1.2 kN")
+  // "data.csv:17 Fy_N +41.2 sigma (1200 N = 1.2 kN)"; `source` names the file when `where` is
+  // empty.
+  std::string describe(const std::string& source) const;
 };
 
 // The gross errors in `data` against the model values `prediction` (one per point), most
@@ -48,8 +52,9 @@ std::vector<Outlier> find_outliers(const MeasuredData& data,
                                    double threshold_sigma = kOutlierThresholdSigma);
 
 // The scatter of each channel's residual between neighbouring rows (the rule's d, in kinematic
-// order): 1.4826 median |d| / 1.14 over the channel, a noise scale that a smooth misfit of the
-// model does not inflate (0 for a channel with fewer than four such differences). A residual
+// order): the rms of d over its smaller 98 %, / 1.14, a noise scale comparable with the
+// residual's rms that a smooth misfit of the model does not inflate (0 for a channel with fewer
+// than four such differences). A residual
 // whose rms is several times it is a misfit, not noise.
 std::array<double, kChannels> neighbour_scatter(const MeasuredData& data,
                                                 const std::vector<Resultants<double>>& prediction);

@@ -28,6 +28,7 @@ struct RecordedSummary {
 
 struct ReportInput {
   std::string file;
+  std::vector<std::string> sources;  // the files, when several were fitted together
   int points = 0;
   int values = 0;
   double radius_m = 0.0;

@@ -1,0 +1,31 @@
+// The sweeps of a measured diagram: the rows that share a file, a normal load, a sliding
+// direction and a spin speed, along which only the sliding-spin ratio psi = v / (|omega| R)
+// changes (theory.md §2). The pictures draw one curve a sweep; fit.csv names each row's sweep.
+#pragma once
+
+#include <cstddef>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "contensou/identification/measured_data.hpp"
+
+namespace contensou {
+
+struct Sweep {
+  int file = 0;                         // MeasuredData::sources index
+  std::optional<double> load_n;         // the sweep's mean normal load [N], if the rows carry one
+  std::optional<double> direction_rad;  // atan2(vy, vx), to 1 degree; nullopt: pure spin (v = 0)
+  double spin_speed_mps = 0.0;          // u = |omega| R, the mean over the sweep [m/s]
+  int spin_sign = 1;                    // sign of omega (+1 for pure sliding)
+  std::string label;                    // what tells it from the others ("Fz 4.54 kN, 90 deg")
+  std::vector<std::size_t> points;      // indices into MeasuredData::points, in increasing psi
+};
+
+// Groups every row into exactly one sweep. Loads and spin speeds within 3 % of each other are one
+// level; directions are binned to the degree. Labels name only what varies between sweeps
+// ("all rows" when there is one). Sweeps are ordered by file, load, spin speed, direction.
+// Throws InvalidArgument for a radius that is not positive and finite.
+std::vector<Sweep> sweeps_of(const MeasuredData& data, double radius_m);
+
+}  // namespace contensou
