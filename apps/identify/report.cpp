@@ -44,19 +44,21 @@ const char* const kAxisLabel[kChannels] = {"Fx [N]", "Fy [N]", "Mz [N m]"};
 
 bool write_loop_plots(const OutputDir& dir, const MeasuredData& data,
                       const ClosedLoopReport& loop) {
-  const std::vector<double>& psi = loop.final_fit.psi;  // every fit of the loop has the same data
-  const std::vector<std::size_t> order = points_by_psi(psi);
   std::string gp =
       "set terminal pngcairo size 900,900 font ',10'\nset datafile separator ','\n"
       "set datafile columnheaders\nset datafile missing 'NaN'\n";
   int k = 0;
   for (const LoopStep& st : loop.steps) {
+    // The step's own rows (a large file's steps are decided on a sample of it).
+    const std::vector<double>& psi = st.fit_before.psi;
+    const std::vector<std::size_t> order = points_by_psi(psi);
     const std::string csv = "loop_step_" + std::to_string(++k) + ".csv";
     std::string text = "psi";  // then the residual before and after the step, per channel
     for (int c = 0; c < kChannels; ++c)
       text += std::string(",before_") + kChannelColumns[c] + ",after_" + kChannelColumns[c];
     text += "\n";
     for (std::size_t i : order) {
+      if (i >= st.fit_before.residual.size() || i >= st.fit_after.residual.size()) continue;
       text += fmt("%.10g", psi[i]);
       for (int c = 0; c < kChannels; ++c)
         text += "," + cell(st.fit_before.residual[i][c]) + "," + cell(st.fit_after.residual[i][c]);
@@ -184,31 +186,71 @@ std::string sweeps_csv(const MeasuredData& data, const std::vector<Sweep>& sweep
 // colour a sweep (up to kMaxCurves; beyond, all rows alike, the law as points), then the values
 // left out as gross errors.
 constexpr std::size_t kMaxCurves = 10;
+constexpr std::size_t kDrawnRows = 5000;
 
 std::string channel_clauses(const std::vector<Sweep>& sweeps, const std::string& x,
-                            const std::string& ch, bool any_outlier) {
+                            const std::string& ch, bool any_outlier, const std::string& every) {
   std::string plot = "plot ";
+  const std::string file = "'fit.csv'" + every + " using \"" + x + "\":";
+  const std::string again = "''" + every + " using \"" + x + "\":";
   auto only = [](std::size_t k, const std::string& col) {
     return "(column(\"sweep\")==" + std::to_string(k + 1) + "?column(\"" + col + "\"):NaN)";
   };
   if (sweeps.size() <= kMaxCurves) {
     for (std::size_t k = 0; k < sweeps.size(); ++k) {
       const std::string colour = std::to_string(k + 1);
-      plot += std::string(k ? ", " : "") + "'fit.csv' using \"" + x +
-              "\":" + only(k, "measured_" + ch) + " with points pt 7 ps 0.6 lc " + colour +
-              " title '" + sweeps[k].label + "', '' using \"" + x + "\":" + only(k, "fit_" + ch) +
-              " with lines lw 2 lc " + colour + " notitle";
+      plot += std::string(k ? ", " : "") + file + only(k, "measured_" + ch) +
+              " with points pt 7 ps 0.4 lc " + colour + " title '" + sweeps[k].label + "'";
     }
+    for (std::size_t k = 0; k < sweeps.size(); ++k)  // the law over every sweep's points
+      plot += ", " + again + only(k, "fit_" + ch) + " with lines lw 1.5 lc rgb 'black' " +
+              (k == 0 ? "title 'fitted law'" : "notitle");
   } else {
-    plot += "'fit.csv' using \"" + x + "\":\"measured_" + ch +
+    plot += file + "\"measured_" + ch +
             "\" with points pt 7 ps 0.5 lc rgb '#1f77b4' title 'measured (" +
-            std::to_string(sweeps.size()) + " sweeps)', '' using \"" + x + "\":\"fit_" + ch +
+            std::to_string(sweeps.size()) + " sweeps)', " + again + "\"fit_" + ch +
             "\" with points pt 6 ps 0.5 lc rgb '#d62728' title 'fitted law'";
   }
-  if (any_outlier)
+  if (any_outlier)  // every gross error marked, however many rows are drawn
     plot += ", 'fit.csv' using \"" + x + "\":\"outlier_" + ch +
             "\" with points pt 2 ps 1.6 lw 2 lc rgb 'black' title 'gross error (left out)'";
   return plot + "\n";
+}
+
+// The gnuplot script of the fit pictures: per channel, measured and fitted per sweep, the gross
+// errors marked, the residuals below.
+std::string fit_script(const PlotInput& in, const std::vector<Sweep>& sweeps) {
+  std::string gp =
+      "set terminal pngcairo size 1100,760 font ',10'\nset datafile separator ','\n"
+      "set datafile columnheaders\nset datafile missing 'NaN'\n";
+  const char* title[3] = {"Fx: longitudinal force", "Fy: lateral force", "Mz: spin torque"};
+  // Above kDrawnRows rows, every k-th row of fit.csv is drawn (it is in sweep and psi order, so
+  // each curve keeps its shape); every gross error is marked; fit.csv keeps every row.
+  const std::size_t rows = in.data.points.size(), thin = (rows + kDrawnRows - 1) / kDrawnRows;
+  const std::string every = thin > 1 ? " every " + std::to_string(thin) : "";
+  const std::string drawn =
+      thin > 1 ? " (1 row in " + std::to_string(thin) + " of " + std::to_string(rows) + " drawn)"
+               : "";
+  for (int c = 0; c < kChannels; ++c) {
+    if (in.data.count(c) == 0) continue;
+    bool any_outlier = false;
+    for (const Outlier& o : in.outliers) any_outlier = any_outlier || o.channel == c;
+    const std::string ch = kChannelColumns[c], x = c == 0 ? "psi" : "upsilon";
+    const std::string xlabel = c == 0 ? "psi = v / (omega R) [-]" : "upsilon = omega R / v [-]";
+    gp += "set output 'fit_" + ch + ".png'\n";
+    gp += "set multiplot layout 2,1 title '" + std::string(title[c]) + ": measured and fitted, " +
+          "one colour a sweep" + drawn + "' noenhanced\n";
+    gp +=
+        "set logscale x\nset format x '10^{%L}'\nset grid\n"
+        "set key outside right top box noenhanced\nset lmargin 12\nset rmargin 34\n";
+    gp += "set ylabel '" + std::string(kAxisLabel[c]) + "'\nset xlabel '" + xlabel + "'\n";
+    gp += channel_clauses(sweeps, x, ch, any_outlier, every);
+    gp += "unset key\nset ylabel 'residual " + std::string(kAxisLabel[c]) + "'\n";
+    gp += "plot 'fit.csv'" + every + " using \"" + x + "\":\"residual_" + ch +
+          "\" with impulses lc rgb '#555555' notitle, 0 with lines lc rgb 'black' notitle\n";
+    gp += "unset multiplot\nunset logscale x\n";
+  }
+  return gp;
 }
 
 }  // namespace
@@ -225,30 +267,7 @@ bool write_plots(const OutputDir& dir, const PlotInput& in, const FitReport& fit
     for (std::size_t i : sweeps[k].points) csv += fit_csv_row(in, fit, i, j[i], k, out);
   dir.write("fit.csv", csv);
   dir.write("sweeps.csv", sweeps_csv(in.data, sweeps));
-  std::string gp =
-      "set terminal pngcairo size 1100,760 font ',10'\nset datafile separator ','\n"
-      "set datafile columnheaders\nset datafile missing 'NaN'\n";
-  const char* title[3] = {"Fx: longitudinal force", "Fy: lateral force", "Mz: spin torque"};
-  for (int c = 0; c < kChannels; ++c) {
-    if (in.data.count(c) == 0) continue;
-    bool any_outlier = false;
-    for (const Outlier& o : in.outliers) any_outlier = any_outlier || o.channel == c;
-    const std::string ch = kChannelColumns[c], x = c == 0 ? "psi" : "upsilon";
-    const std::string xlabel = c == 0 ? "psi = v / (omega R) [-]" : "upsilon = omega R / v [-]";
-    gp += "set output 'fit_" + ch + ".png'\n";
-    gp += "set multiplot layout 2,1 title '" + std::string(title[c]) + ": measured and fitted, " +
-          "one colour a sweep' noenhanced\n";
-    gp +=
-        "set logscale x\nset format x '10^{%L}'\nset grid\n"
-        "set key outside right top box noenhanced\nset lmargin 12\nset rmargin 34\n";
-    gp += "set ylabel '" + std::string(kAxisLabel[c]) + "'\nset xlabel '" + xlabel + "'\n";
-    gp += channel_clauses(sweeps, x, ch, any_outlier);
-    gp += "unset key\nset ylabel 'residual " + std::string(kAxisLabel[c]) + "'\n";
-    gp += "plot 'fit.csv' using \"" + x + "\":\"residual_" + ch +
-          "\" with impulses lc rgb '#555555' notitle, 0 with lines lc rgb 'black' notitle\n";
-    gp += "unset multiplot\nunset logscale x\n";
-  }
-  return run_gnuplot(dir, "fit", gp);
+  return run_gnuplot(dir, "fit", fit_script(in, sweeps));
 }
 
 }  // namespace contensou::app

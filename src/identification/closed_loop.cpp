@@ -767,4 +767,35 @@ ClosedLoopReport close_the_loop(const MeasuredData& data, const IdentificationOp
   return report;
 }
 
+ClosedLoopReport close_the_loop_on_sample(const MeasuredData& data,
+                                          const std::vector<char>& sample,
+                                          const IdentificationOptions& options,
+                                          const ClosedLoopOptions& loop) {
+  MeasuredData part = data;
+  part.points.clear();
+  for (std::size_t i = 0; i < data.points.size(); ++i)
+    if (i >= sample.size() || sample[i]) part.points.push_back(data.points[i]);
+  if (part.points.size() == data.points.size()) return close_the_loop(data, options, loop);
+  say(loop, "choosing the model on " + std::to_string(part.points.size()) + " of " +
+                std::to_string(data.points.size()) + " rows (every sweep, every variable's range)");
+  ClosedLoopReport report = close_the_loop(part, options, loop);
+  report.selection_rows = part.points.size();
+  report.rows = data.points.size();
+  NoiseSettings noise = noise_settings_for(options);
+  const std::vector<Covariate> covariates = covariates_of(data);
+  say(loop, "fitting the base law on all " + std::to_string(data.points.size()) + " rows");
+  ModelSpec base = base_spec_for(data, options);
+  LoopState st = fit_state(data, base, noise);
+  st.fit.trace = trace_residual(data, st.fit, st.spec.radius_m, covariates);
+  report.base = st.fit;
+  say(loop, "fitting the chosen model on all " + std::to_string(data.points.size()) + " rows");
+  noise.model = report.noise_model;
+  st = fit_state(data, report.final_spec, noise);
+  st.fit.trace = trace_residual(data, st.fit, st.spec.radius_m, covariates);
+  report.final_fit = st.fit;
+  report.final_spec = st.spec;
+  report.structure_remains = !st.fit.residual_white || !st.fit.trace.followed.empty();
+  return report;
+}
+
 }  // namespace contensou

@@ -2,6 +2,8 @@
 
 #include <algorithm>
 
+#include "contensou/identification/sweeps.hpp"
+
 namespace contensou {
 
 namespace {
@@ -46,7 +48,8 @@ IdentificationOptions robust(const IdentificationOptions& o) {
 // two-coefficient profile identified with them, as the loop's shape step), since the law's own
 // misfit, several noise scales at a sweep's knee, would otherwise show between neighbouring
 // rows; the fractional law if that fit fails.
-FitReport judge_fit(const MeasuredData& data, const IdentificationOptions& judge) {
+FitReport judge_fit(const MeasuredData& data, const IdentificationOptions& judge,
+                    const std::vector<char>& use) {
   const ModelSpec base = base_spec_for(data, judge);
   ModelSpec spec = base;
   spec.exact_only = true;
@@ -54,11 +57,11 @@ FitReport judge_fit(const MeasuredData& data, const IdentificationOptions& judge
   spec.value[kShapeBlend] = 1.0;
   if (!spec.profile_model) spec.free[kProfileB1] = spec.free[kProfileB2] = true;
   try {
-    return fit_model(data, spec, noise_settings_for(judge));
+    return fit_model(data, spec, noise_settings_for(judge), nullptr, use);
   } catch (const Interrupted&) {
     throw;
   } catch (const std::exception&) {
-    return fit_model(data, base, noise_settings_for(judge));
+    return fit_model(data, base, noise_settings_for(judge), nullptr, use);
   }
 }
 
@@ -73,7 +76,9 @@ Identification identify(const MeasuredData& data, const IdentifyOptions& options
     // Rounds of: the robust fit, every gross error it shows (outliers.hpp), the rows without
     // them; a glitch hidden by glitched neighbours shows once they are out.
     const IdentificationOptions judge = robust(options.fit);
-    FitReport current = judge_fit(data, judge);
+    const double R = options.fit.radius_m;
+    FitReport current =
+        judge_fit(data, judge, stratified_sample(data, R, options.selection_rows));
     for (int round = 0; round < 10; ++round) {
       const std::vector<Outlier> found = find_outliers(r.fitted, current.prediction);
       if (found.empty()) break;
@@ -82,14 +87,17 @@ Identification identify(const MeasuredData& data, const IdentifyOptions& options
         r.outliers.push_back(o);
       }
       r.fitted = clean_rows(data, r.outliers, r.origin);
-      current = judge_fit(r.fitted, judge);
+      current =
+          judge_fit(r.fitted, judge, stratified_sample(r.fitted, R, options.selection_rows));
     }
     std::sort(r.outliers.begin(), r.outliers.end(), [](const Outlier& a, const Outlier& b) {
       return std::abs(a.residual_sigma) > std::abs(b.residual_sigma);
     });
   }
   if (options.loop) {
-    r.loop = close_the_loop(r.fitted, options.fit, *options.loop);
+    r.loop = close_the_loop_on_sample(
+        r.fitted, stratified_sample(r.fitted, options.fit.radius_m, options.selection_rows),
+        options.fit, *options.loop);
     r.fit = r.loop->base;
   } else {
     r.fit = fit_fractional_law(r.fitted, options.fit);

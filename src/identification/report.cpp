@@ -198,6 +198,9 @@ nlohmann::json loop_report(const ReportInput& info, const ClosedLoopReport& loop
   }
   r["steps"] = steps;
   r["accepted_effects"] = loop.accepted_effects;
+  // The rows the steps chose the model on: a stratified sample of a large file (the base and
+  // final fits use every row), else every row.
+  r["selection_rows"] = loop.selection_rows > 0 ? loop.selection_rows : loop.final_fit.psi.size();
   nlohmann::json ambiguities = nlohmann::json::array();
   for (const LoopStep& st : loop.steps)
     if (st.accepted && !st.removed)

@@ -87,6 +87,12 @@ const char* verdict_word(const LoopStep& st) {
 
 std::string steps_text(const ClosedLoopReport& loop) {
   std::string s = "\nclosed loop (score test, then LR at alpha / candidates, BIC and 5-fold CV):\n";
+  if (loop.selection_rows > 0)
+    s += "the steps chose the model on " + std::to_string(loop.selection_rows) + " of the " +
+         std::to_string(loop.rows) +
+         " rows (every k-th row of each sweep, and each variable's extremes); the base law and "
+         "the final model below are fitted on all " +
+         std::to_string(loop.rows) + "\n";
   s +=
       "step  effect              detail            LR p-value  threshold  BIC before -> after      "
       "error before -> after  verdict\n";
@@ -220,6 +226,22 @@ std::string trace_text(const FitReport& fit) {
   return s;
 }
 
+// With the profile identified (no --profile) and a residual that still follows the kinematics,
+// the two-coefficient profile misses the tire's shape, and what was accepted besides the shape
+// may stand in for that misfit (offsets, crosstalk): said, with the measurement that decides.
+std::string identified_profile_caveat(const ClosedLoopReport& loop, std::size_t accepted) {
+  if (loop.final_spec.profile_model || !loop.final_spec.uses_exact() || accepted < 2) return "";
+  std::string kinematic;
+  for (const TracedVariable& t : loop.final_fit.trace.followed)
+    if (t.kinematic && kinematic.find(t.variable) == std::string::npos)
+      kinematic += (kinematic.empty() ? "" : ", ") + t.variable;
+  if (kinematic.empty()) return "";
+  return " Caution: the residual still follows the kinematics (" + kinematic +
+         "): the two-coefficient profile identified without --profile does not capture this "
+         "tire's shape, and the effects accepted after the shape may stand in for that misfit; a "
+         "measured profile (--profile) decides them.";
+}
+
 std::string loop_summary(const ClosedLoopReport& loop) {
   std::vector<std::string> shown, not_needed, failed;
   const auto step_name = [](const LoopStep& st) {
@@ -255,7 +277,7 @@ std::string loop_summary(const ClosedLoopReport& loop) {
   if (!not_needed.empty()) s += ". Tried and not needed: " + join(not_needed, ", ", ", ");
   if (!failed.empty()) s += ". Not decided (the fit failed): " + join(failed, ", ", ", ");
   s += ". The fit is limited by " + limit_text(loop.final_fit, loop.structure_remains);
-  return s + ".";
+  return s + "." + identified_profile_caveat(loop, shown.size());
 }
 
 // The radius against the data: the pure-spin torque over the sliding force and the radius,

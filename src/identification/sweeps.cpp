@@ -135,4 +135,45 @@ std::vector<Sweep> sweeps_of(const MeasuredData& data, double radius_m) {
   return sweeps;
 }
 
+namespace {
+
+// Marks the rows at the smallest and largest finite value of x(row).
+template <class Value>
+void keep_extremes(const MeasuredData& data, Value x, std::vector<char>& keep) {
+  std::size_t lo = data.points.size(), hi = data.points.size();
+  for (std::size_t i = 0; i < data.points.size(); ++i) {
+    const double v = x(data.points[i]);
+    if (!std::isfinite(v)) continue;
+    if (lo == data.points.size() || v < x(data.points[lo])) lo = i;
+    if (hi == data.points.size() || v > x(data.points[hi])) hi = i;
+  }
+  if (lo < keep.size()) keep[lo] = keep[hi] = 1;
+}
+
+}  // namespace
+
+std::vector<char> stratified_sample(const MeasuredData& data, double radius_m,
+                                    std::size_t target) {
+  const std::size_t n = data.points.size();
+  std::vector<char> keep(n, 1);
+  if (n <= target || target == 0) return keep;
+  std::fill(keep.begin(), keep.end(), 0);
+  const double step = static_cast<double>(n) / static_cast<double>(target);
+  for (const Sweep& s : sweeps_of(data, radius_m)) {
+    const std::size_t m = s.points.size();
+    for (double k = 0.0; k < static_cast<double>(m); k += step) keep[s.points[static_cast<std::size_t>(k)]] = 1;
+    keep[s.points.back()] = 1;
+  }
+  const double nan = std::nan("");
+  keep_extremes(data, [&](const MeasuredPoint& p) { return p.normal_load.value_or(nan); }, keep);
+  keep_extremes(data, [&](const MeasuredPoint& p) { return p.time.value_or(nan); }, keep);
+  keep_extremes(
+      data, [](const MeasuredPoint& p) { return p.source * 4294967296.0 + p.line; }, keep);
+  for (std::size_t r = 0; r < data.recorded.size(); ++r)
+    keep_extremes(
+        data, [&](const MeasuredPoint& p) { return r < p.recorded.size() ? p.recorded[r] : nan; },
+        keep);
+  return keep;
+}
+
 }  // namespace contensou

@@ -102,6 +102,10 @@ struct ClosedLoopReport {
   std::vector<std::string> accepted_effects;
   NoiseModel noise_model = NoiseModel::additive;  // of the final fit (affine: noise step accepted)
   bool structure_remains = false;                 // the final residual is still not white
+  // Model selection on a sample (close_the_loop_on_sample): the rows the steps were decided on
+  // and the rows of the data (both 0 when every row took part). base and final_fit are then
+  // fitted on every row; the steps' statistics are the sample's.
+  std::size_t selection_rows = 0, rows = 0;
 };
 
 // A loop step whose extended fit ends worse than the model it extends (which it nests): its
@@ -113,5 +117,14 @@ bool step_fit_failed(const LoopStep& step);
 // stages and inside every fit).
 ClosedLoopReport close_the_loop(const MeasuredData& data, const IdentificationOptions& options,
                                 const ClosedLoopOptions& loop = {});
+
+// The loop's model selection on the rows `sample` marks (one entry a row of data), then the
+// base law and the selected model fitted on every row (from the sample's estimates), their
+// residual traced over every row. For large files: the steps' tests need far fewer rows than
+// a day of rig data holds, and each costs a fit per candidate. Throws as close_the_loop.
+ClosedLoopReport close_the_loop_on_sample(const MeasuredData& data,
+                                          const std::vector<char>& sample,
+                                          const IdentificationOptions& options,
+                                          const ClosedLoopOptions& loop = {});
 
 }  // namespace contensou

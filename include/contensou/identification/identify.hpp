@@ -17,6 +17,10 @@ struct IdentifyOptions {
   IdentificationOptions fit;
   std::optional<ClosedLoopOptions> loop;  // nullopt: the fit of the fractional law only
   bool leave_out_outliers = true;         // find gross errors and fit without them
+  // Above this many rows, the robust fit that judges gross errors and the loop's model selection
+  // use a stratified sample of about this many (sweeps.hpp: stratified_sample); the gross errors
+  // are judged, and the reported fits made, on every row. 0: every row always.
+  std::size_t selection_rows = 4000;
 };
 
 struct Identification {

@@ -28,4 +28,11 @@ struct Sweep {
 // Throws InvalidArgument for a radius that is not positive and finite.
 std::vector<Sweep> sweeps_of(const MeasuredData& data, double radius_m);
 
+// A sample of about `target` rows (never fewer) that keeps the data's design: every k-th row of
+// each sweep in psi order (its first and last always), and the rows at the smallest and largest
+// load, time, row (per file) and value of each recorded column, so that every variable keeps
+// its range. One entry a row, 1 where sampled; every row when the data have at most `target`.
+std::vector<char> stratified_sample(const MeasuredData& data, double radius_m,
+                                    std::size_t target);
+
 }  // namespace contensou
