@@ -18,12 +18,10 @@ namespace {
 GearJacobian jacobian_by_differences(const GearModel& model, const GearMode& mode, double t,
                                      const GearState& x) {
   const GearState f0 = gear_rhs(model, mode, t, x);
-  constexpr std::array<double, kStateSize> kScale{1e-3, 1e-1, 1e-3, 1e-1, 1e2, 1e-3,
-                                                  1e-3, 1e-1, 1e2,  1e-3, 1e-3};
   GearJacobian J;
   for (int j = 0; j < kStateSize; ++j) {
     GearState xp = x;
-    const double h = 1e-7 * std::max(std::abs(x[j]), kScale[static_cast<std::size_t>(j)]);
+    const double h = 1e-7 * std::max(std::abs(x[j]), kStateScale[static_cast<std::size_t>(j)]);
     xp[j] += h;
     J.col(j) = (gear_rhs(model, mode, t, xp) - f0) / h;
   }
@@ -85,6 +83,8 @@ Eigen::Matrix<double, 3, 4> contact_law_jacobian(const GearModel& model, const G
 struct FrictionJacobian {
   Eigen::Matrix<double, 3, kStateSize> resultant = Eigen::Matrix<double, 3, kStateSize>::Zero();
   std::array<Eigen::Matrix<double, 1, kStateSize>, 2> wheel_drag{};
+  // With longitudinal relaxation: each wheel's kinematic dvx/dx (the row of its u').
+  std::array<Eigen::Matrix<double, 1, kStateSize>, 2> kinematic_vx{};
 };
 
 FrictionJacobian friction_jacobian(const GearModel& model, const GearMode& mode, const GearState& x,
@@ -99,6 +99,12 @@ FrictionJacobian friction_jacobian(const GearModel& model, const GearMode& mode,
     KinematicsJacobian Di = D;
     Di(0, kPsiDot) = -wc.offset;
     Di(0, wc.spin) = -g.wheel_radius_m;
+    const double sigma_x = model.config.tire.longitudinal_relaxation_length_m;
+    if (sigma_x > 0.0) {  // the law sees V u_i / sigma_x (landing_gear.hpp, SlidingTire)
+      out.kinematic_vx[static_cast<std::size_t>(i)] = Di.row(0);
+      Di.row(0).setZero();
+      Di(0, i == 0 ? kSlipX : kSlipX2) = model.config.scenario.forward_speed_mps / sigma_x;
+    }
     const Eigen::Matrix<double, 3, kStateSize> dFi = K * Di;
     out.wheel_drag[static_cast<std::size_t>(i)] = dFi.row(0);
     dF.row(0) += dFi.row(0);
@@ -153,8 +159,8 @@ void wheel_rows(const GearModel& model, const GearMode& mode, const GearState& x
   }
 }
 
-// The optional degrees of freedom and couplings: fore-aft bending, gyroscopic coupling, and the
-// stretched string while rolling.
+// The optional degrees of freedom and couplings: fore-aft bending, gyroscopic coupling, the
+// longitudinal relaxation and the stretched string while rolling.
 void optional_rows(const GearModel& model, const GearMode& mode, const GearState& x,
                    const ContactState& cs, const KinematicsJacobian& D, const FrictionJacobian& dF,
                    GearJacobian& J) {
@@ -177,6 +183,16 @@ void optional_rows(const GearModel& model, const GearMode& mode, const GearState
     for (int spin : {static_cast<int>(kSpin), static_cast<int>(kSpin2)}) {
       J(kYDot, spin) += dgyro * x[kPsiDot] / g.lateral_mass_kg;
       J(kPsiDot, spin) -= dgyro * x[kYDot] / g.torsional_inertia_kgm2;
+    }
+  }
+  const double sigma_x = model.config.tire.longitudinal_relaxation_length_m;
+  if (sigma_x > 0.0 && mode.loaded) {
+    const double rate = model.config.scenario.forward_speed_mps / sigma_x;
+    J.row(kSlipX) = dF.kinematic_vx[0];
+    J(kSlipX, kSlipX) -= rate;
+    if (g.wheel_spacing_m > 0.0) {
+      J.row(kSlipX2) = dF.kinematic_vx[1];
+      J(kSlipX2, kSlipX2) -= rate;
     }
   }
   if (mode.rolling && mode.loaded) {

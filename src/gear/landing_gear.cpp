@@ -331,6 +331,15 @@ int wheel_contacts(const GearModel& model, const GearMode& mode, double t, const
     w.spin = i == 0 ? kSpin : kSpin2;
     ContactState& cs = w.cs;
     cs.slip.vx = forward * cp + lateral * sp - w.offset * x[kPsiDot] - x[w.spin] * g.wheel_radius_m;
+    // Longitudinal relaxation (SlidingTire::longitudinal_relaxation_length_m): the laws see the
+    // relaxed V u / sigma_x; u relaxes towards sigma_x vx / V while loaded.
+    const double sigma_x = c.tire.longitudinal_relaxation_length_m;
+    if (sigma_x > 0.0) {
+      const double u = x[i == 0 ? kSlipX : kSlipX2];
+      const double relaxed = V * u / sigma_x;
+      if (mode.loaded) cs.longitudinal_rate[0] = cs.slip.vx - relaxed;
+      cs.slip.vx = relaxed;
+    }
     cs.slip.vy = -forward * sp + lateral * cp - g.trail_m * x[kPsiDot];
     cs.slip.omega = x[kPsiDot];
     cs.slip_ratio = cs.slip.vx / V;
@@ -377,6 +386,7 @@ ContactState contact_state(const GearModel& model, const GearMode& mode, double 
   cs.force.Mz = cs.force.Mz - (wheels[0].offset - l) * cs.force.Fx + b.force.Mz -
                 (wheels[1].offset - l) * b.force.Fx;
   cs.wheel_fx_n = {cs.force.Fx, b.force.Fx};
+  cs.longitudinal_rate[1] = b.longitudinal_rate[0];
   cs.wheel_brake_nm = {cs.brake_torque_nm, b.brake_torque_nm};
   cs.force.Fx += b.force.Fx;
   cs.force.Fy += b.force.Fy;
@@ -446,6 +456,9 @@ GearState gear_rhs(const GearModel& model, const GearMode& mode, double t, const
   } else {
     dx[kCarcassY] = dx[kCarcassPsi] = 0.0;
   }
+  // Longitudinal relaxation: u_i' = vx_i - (V / sigma_x) u_i while loaded (wheel_contacts).
+  dx[kSlipX] = cs.longitudinal_rate[0];
+  dx[kSlipX2] = cs.longitudinal_rate[1];
   return dx;
 }
 
