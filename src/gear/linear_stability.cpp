@@ -32,6 +32,25 @@ double scaled_residual(const GearState& f, const std::vector<int>& states) {
   return r;
 }
 
+// Longitudinal relaxation: u_i = sigma_x vx_i / V at the quasi-steady state; Newton starts from
+// the phase's slip.
+void add_longitudinal_states(const GearModel& model, StabilityPhase phase, double touchdown_slip,
+                             QuasiSteadyState& q) {
+  const double sigma_x = model.config.tire.longitudinal_relaxation_length_m;
+  if (!(sigma_x > 0.0)) return;
+  const bool sliding = model.contact != ContactModel::von_schlippe;
+  const double slip = phase == StabilityPhase::braked_slide
+                          ? model.config.scenario.brake_target_slip
+                      : sliding && phase == StabilityPhase::touchdown ? touchdown_slip
+                                                                      : 0.0;
+  q.states.push_back(kSlipX);
+  q.x[kSlipX] = sigma_x * slip;
+  if (model.config.structure.wheel_spacing_m > 0.0) {
+    q.states.push_back(kSlipX2);
+    q.x[kSlipX2] = q.x[kSlipX];
+  }
+}
+
 }  // namespace
 
 GearState quasi_steady_rhs(const GearModel& model, const QuasiSteadyState& q, const GearState& x) {
@@ -78,20 +97,7 @@ QuasiSteadyState quasi_steady_state(const GearModel& model, StabilityPhase phase
     q.states.push_back(kCarcassY);
     q.states.push_back(kCarcassPsi);
   }
-  // Longitudinal relaxation: u_i = sigma_x vx_i / V at the quasi-steady state (Newton starts from
-  // the phase's slip).
-  const double sigma_x = model.config.tire.longitudinal_relaxation_length_m;
-  if (sigma_x > 0.0) {
-    const double slip = phase == StabilityPhase::braked_slide           ? s.brake_target_slip
-                        : sliding && phase == StabilityPhase::touchdown ? touchdown_slip
-                                                                        : 0.0;
-    q.states.push_back(kSlipX);
-    q.x[kSlipX] = sigma_x * slip;
-    if (twin) {
-      q.states.push_back(kSlipX2);
-      q.x[kSlipX2] = q.x[kSlipX];
-    }
-  }
+  add_longitudinal_states(model, phase, touchdown_slip, q);
 
   // Newton's method with a central-difference Jacobian and step halving.
   const int n = static_cast<int>(q.states.size());
