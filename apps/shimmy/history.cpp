@@ -6,7 +6,7 @@
 namespace contensou::app {
 
 const std::vector<HistoryColumn>& history_column_table() {
-  static_assert(kStateSize == 11, "history_column_table: one entry per state");
+  static_assert(kStateSize == 13, "history_column_table: one entry per state");
   static const std::vector<HistoryColumn> table{
       {"t_s", "time t", "s"},
       {"y_m", "lateral deflection y of the strut at the axle", "m"},
@@ -20,6 +20,8 @@ const std::vector<HistoryColumn>& history_column_table() {
       {"wheel_spin2_radps", "second wheel spin", "rad/s"},
       {"carcass_y_m", "carcass lateral deflection", "m"},
       {"carcass_psi_rad", "carcass torsion", "rad"},
+      {"u_x_m", "longitudinal tire deflection u (longitudinal relaxation)", "m"},
+      {"u_x2_m", "second wheel's longitudinal tire deflection", "m"},
       {"load_n", "normal load N", "N"},
       {"patch_radius_m", "patch radius R", "m"},
       {"vx_mps", "patch sliding velocity vx", "m/s"},

@@ -100,7 +100,7 @@ void add_options(CLI::App& app, Options& o) {
   app.add_option("--gear", o.gear,
                  "named gear the configuration starts from: default (a one-wheel main gear, 80 kN "
                  "static load, 0.57 m wheel, wheel 0.25 m beside the strut axis, torsional damping "
-                 "245 N m s/rad: 1.4 times what the classical tire needs) or legacy (the same "
+                 "216 N m s/rad: 1.4 times what the classical tire needs) or legacy (the same "
                  "gear with 100 N m s/rad, which shimmies on the classical tire)")
       ->check(CLI::IsMember({"default", "legacy"}))
       ->capture_default_str();

@@ -70,38 +70,48 @@ std::vector<SensitivityRow> classical_sensitivity(const ShimmyConfig& config,
       std::sqrt(config.gear.scenario.static_load_n /
                 (2.0 * std::numbers::pi * config.gear.tire.inflation_pressure_pa * base.moment_1));
   char buf[96];
-  std::vector<std::pair<std::string, std::function<void(RollingTire&)>>> variants;
-  variants.emplace_back("as configured", [](RollingTire&) {});
+  std::vector<std::pair<std::string, std::function<void(GearConfig&)>>> variants;
+  variants.emplace_back("as configured", [](GearConfig&) {});
   std::snprintf(buf, sizeof buf, "sigma = %.3g m (= R)", R);
-  variants.emplace_back(buf, [R](RollingTire& t) { t.relaxation_length_m = R; });
+  variants.emplace_back(buf, [R](GearConfig& c) { c.rolling.relaxation_length_m = R; });
   std::snprintf(buf, sizeof buf, "sigma = %.3g m (x2)", 2 * rt.relaxation_length_m);
-  variants.emplace_back(buf, [](RollingTire& t) { t.relaxation_length_m *= 2.0; });
+  variants.emplace_back(buf, [](GearConfig& c) { c.rolling.relaxation_length_m *= 2.0; });
   std::snprintf(buf, sizeof buf, "C_x = %.3g (= C_Fa)", rt.cornering_coefficient);
-  variants.emplace_back(
-      buf, [](RollingTire& t) { t.longitudinal_slip_coefficient = t.cornering_coefficient; });
+  variants.emplace_back(buf, [](GearConfig& c) {
+    c.rolling.longitudinal_slip_coefficient = c.rolling.cornering_coefficient;
+  });
   std::snprintf(buf, sizeof buf, "C_x = %.3g (x2)", 2 * rt.longitudinal_slip_coefficient);
-  variants.emplace_back(buf, [](RollingTire& t) { t.longitudinal_slip_coefficient *= 2.0; });
+  variants.emplace_back(buf, [](GearConfig& c) { c.rolling.longitudinal_slip_coefficient *= 2.0; });
   variants.emplace_back("C_Ma = 0 (no pneumatic trail)",
-                        [](RollingTire& t) { t.aligning_coefficient_m = 0.0; });
+                        [](GearConfig& c) { c.rolling.aligning_coefficient_m = 0.0; });
   std::snprintf(buf, sizeof buf, "C_Ma = %.3g m/rad (x2)", 2 * rt.aligning_coefficient_m);
-  variants.emplace_back(buf, [](RollingTire& t) { t.aligning_coefficient_m *= 2.0; });
+  variants.emplace_back(buf, [](GearConfig& c) { c.rolling.aligning_coefficient_m *= 2.0; });
   std::snprintf(buf, sizeof buf, "C_Fa = %.3g /rad (x0.5, same trail)",
                 0.5 * rt.cornering_coefficient);
-  variants.emplace_back(buf, [](RollingTire& t) {
-    t.cornering_coefficient *= 0.5;
-    t.aligning_coefficient_m *= 0.5;
+  variants.emplace_back(buf, [](GearConfig& c) {
+    c.rolling.cornering_coefficient *= 0.5;
+    c.rolling.aligning_coefficient_m *= 0.5;
   });
   std::snprintf(buf, sizeof buf, "C_Fa = %.3g /rad (x2, same trail)", 2 * rt.cornering_coefficient);
-  variants.emplace_back(buf, [](RollingTire& t) {
-    t.cornering_coefficient *= 2.0;
-    t.aligning_coefficient_m *= 2.0;
+  variants.emplace_back(buf, [](GearConfig& c) {
+    c.rolling.cornering_coefficient *= 2.0;
+    c.rolling.aligning_coefficient_m *= 2.0;
   });
   variants.emplace_back("kappa_t = 0 (no tread moment)",
-                        [](RollingTire& t) { t.tread_moment_nm2_per_rad = 0.0; });
+                        [](GearConfig& c) { c.rolling.tread_moment_nm2_per_rad = 0.0; });
+  // The longitudinal relaxation (every model's; landing_gear.hpp, SlidingTire).
+  const double sigma_x = base.config.tire.longitudinal_relaxation_length_m;
+  variants.emplace_back("sigma_x = 0 (no longitudinal relaxation)",
+                        [](GearConfig& c) { c.tire.longitudinal_relaxation_length_m = 0.0; });
+  if (sigma_x > 0.0) {
+    std::snprintf(buf, sizeof buf, "sigma_x = %.3g m (x2)", 2 * sigma_x);
+    variants.emplace_back(buf,
+                          [](GearConfig& c) { c.tire.longitudinal_relaxation_length_m *= 2.0; });
+  }
   std::vector<SensitivityRow> rows;
   for (const auto& [change, apply] : variants) {
     GearModel m = base;
-    apply(m.config.rolling);
+    apply(m.config);
     rows.push_back(assess(m, change));
   }
   rows.push_back(

@@ -1,6 +1,7 @@
 // How far the classical tire's verdict rests on its assumed numbers (docs/shimmy.md, "Like for
 // like"): the classical (von_schlippe) model with its relaxation length, longitudinal slip,
-// cornering and aligning coefficients and tread moment varied one at a time, judged by
+// cornering and aligning coefficients, tread moment and the longitudinal relaxation length (every
+// model's) varied one at a time, judged by
 // eigenvalues: the touchdown's critical torsional damping, the braked slide's growth rate at the
 // configuration, and the braked slide's lowest unstable offset over a few speeds; the coupled
 // model as configured beside it.

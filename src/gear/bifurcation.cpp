@@ -20,10 +20,8 @@ namespace contensou {
 namespace {
 
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
-// The solver's state scales (landing_simulation.hpp): y, y', psi, psi', Omega, lambda, x, x',
-// Omega2, e_y, e_psi.
-constexpr std::array<double, kStateSize> kScale{1e-3, 1e-1, 1e-3, 1e-1, 1e2, 1e-3,
-                                                1e-3, 1e-1, 1e2,  1e-3, 1e-3};
+// The states' scales (landing_gear.hpp, kStateScale).
+constexpr const std::array<double, kStateSize>& kScale = kStateScale;
 
 // The braked slide's fixed mode on the quasi-steady state's active states.
 struct FixedProblem {

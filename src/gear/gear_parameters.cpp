@@ -120,6 +120,16 @@ void window_inside_run(const GearConfig& c) {
                               "automatic)");
 }
 
+// Longitudinal relaxation: off (0) or a length the integrator resolves at landing speeds
+// (V / sigma_x up to 1e4 1/s at 100 m/s).
+void longitudinal_relaxation_resolved(const GearConfig& c) {
+  const double sigma_x = c.tire.longitudinal_relaxation_length_m;
+  if (sigma_x > 0.0 && sigma_x < 0.01)
+    throw InvalidArgument("tire.longitudinal_relaxation_length_m", format_value(sigma_x),
+                          "must be 0 (no relaxation) or at least 0.01 m (a shorter one relaxes "
+                          "faster than the integrator's steps)");
+}
+
 constexpr ParameterSwitch kBraking = ParameterSwitch::braking;
 constexpr ParameterSwitch kCarcass = ParameterSwitch::carcass;
 
@@ -235,6 +245,12 @@ constexpr std::array kTire{
            [](GearConfig& c) -> std::string& { return c.tire.law_coefficients; }),
     flag("tire.exact_integrals", "coupled model: the exact law instead of the fractional one",
          [](GearConfig& c) -> bool& { return c.tire.exact_integrals; }),
+    with_relation(
+        number("tire.longitudinal_relaxation_length_m", "m",
+               interval(0.0, 10.0, "must lie in [0, 10) m (0: no relaxation)"),
+               "sigma_x, longitudinal relaxation length of every contact model (0: none)",
+               [](GearConfig& c) -> double& { return c.tire.longitudinal_relaxation_length_m; }),
+        longitudinal_relaxation_resolved, "0 or at least 0.01 m"),
 };
 
 // The rolling tire (RollingTire; Pacejka 2012, ch. 5).

@@ -1,5 +1,7 @@
 #include "contensou/gear/landing_gear.hpp"
 
+#include "gear_internals.hpp"
+
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -35,7 +37,7 @@ ContactModel contact_model_from_string(const std::string& name) {
                         "must be coupled, decoupled or von_schlippe (alias nonholonomic)");
 }
 
-namespace {
+namespace detail {
 
 ContactPatch unit_patch(const SlidingTire& tire) {
   ContactPatch p;
@@ -53,7 +55,9 @@ double smoothstep(double x) {
   return x * x * (3.0 - 2.0 * x);
 }
 
-}  // namespace
+}  // namespace detail
+
+using namespace detail;
 
 GearModel make_gear_model(const GearConfig& config, ContactModel contact) {
   validate(config);
@@ -98,7 +102,7 @@ GearMode initial_mode(const GearModel& model) {
   return mode;
 }
 
-namespace {
+namespace detail {
 
 // The vector fractional law of the coupled model at load N, patch radius R and friction f:
 // F0 = f N, M0 = f N R A^2/A^1, Mk = f N R A^3 / (2 A^1) (theory.md section 4).
@@ -192,47 +196,6 @@ double friction_slope(const SlipSpeedFriction<double>& law, double w) {
          w;
 }
 
-// The stretched string with combined slip on a friction circle (landing_gear.hpp, RollingTire):
-// the demanded force D = (-C_x s N, C_Fa alpha N) saturates on the circle, |F| = cap tanh(z),
-// z = |D| / cap, cap = f(w) N, and turns from D's direction to the sliding one as the sliding
-// share beta = tanh(z)^2 grows: at full slide F = -f(w) N e_s, e_s = (vx, -V alpha) / w the
-// tread's sliding velocity (= (vx, vy) in a steady slide), the sliding tires' Coulomb force.
-// The pneumatic trail C_Ma / C_Fa shrinks with the adhering share: Mz carries (1 - beta) of it
-// (the brush model's trail vanishes at full slide; Pacejka 2012, sec. 3.2).
-void rolling_forces(const GearConfig& c, double lambda, ContactState& cs) {
-  const RollingTire& rt = c.rolling;
-  const double V = c.scenario.forward_speed_mps, N = cs.load_n;
-  const double alpha = lambda / rt.relaxation_length_m;
-  const double sx = cs.slip.vx, sy = -V * alpha;  // the tread's sliding velocity
-  const double w = std::hypot(sx, sy);
-  const double mu = friction_at(c.tire.friction, w);
-  const double dx = -rt.longitudinal_slip_coefficient * cs.slip_ratio * N;
-  const double dy = rt.cornering_coefficient * alpha * N;
-  const double demand = std::hypot(dx, dy), cap = mu * N;
-  const double z = demand / cap;
-  // cap tanh(z) / |D| -> (1 - z^2 / 3) / 1 for small z; beta = tanh(z)^2 -> z^2.
-  const double th = z > 1e-4 ? std::tanh(z) : z - z * z * z / 3.0;
-  const double beta = th * th;
-  double fx = 0.0, fy = 0.0;
-  if (demand > 0.0) {
-    // The blend of the two unit directions (same quadrant: -e_s and D both oppose the slip).
-    const double ex = (1.0 - beta) * dx / demand - (w > 0.0 ? beta * sx / w : 0.0);
-    const double ey = (1.0 - beta) * dy / demand - (w > 0.0 ? beta * sy / w : 0.0);
-    const double norm = std::hypot(ex, ey);
-    const double size = z > 1e-4 ? cap * th : demand * (1.0 - z * z / 3.0);
-    if (norm > 0.0) {
-      fx = size * ex / norm;
-      fy = size * ey / norm;
-    }
-  }
-  cs.friction = mu;
-  cs.force.Fx = fx;
-  cs.force.Fy = fy;
-  cs.force.Mz = -rt.aligning_coefficient_m / rt.cornering_coefficient * (1.0 - beta) * fy -
-                rt.tread_moment_nm2_per_rad * (N / c.scenario.static_load_n) * cs.slip.omega / V;
-}
-
-// The friction on the tire from the patch kinematics cs.slip (and slip_ratio), the string's
 // deflection lambda, at cs.load_n > 0 and cs.patch_radius_m; fills cs.force and cs.friction.
 void contact_forces(const GearModel& model, bool rolling, double lambda, ContactState& cs) {
   const GearConfig& c = model.config;
@@ -338,16 +301,9 @@ void carcass_contact(const GearModel& model, double psi_rate, double e_y, double
   cs.carcass_rate = {z[0], z[1]};
 }
 
-}  // namespace
+}  // namespace detail
 
-namespace {
-
-// One wheel's contact: its patch state, its lateral offset l_i and its spin state.
-struct WheelContact {
-  ContactState cs;
-  double offset = 0.0;
-  int spin = kSpin;
-};
+namespace detail {
 
 // The wheels of the gear (landing_gear.hpp, GearStructure::wheel_spacing_m): one at the offset
 // l, or two at l + b/2 and l - b/2 that share the load; each with its patch kinematics, load,
@@ -375,6 +331,15 @@ int wheel_contacts(const GearModel& model, const GearMode& mode, double t, const
     w.spin = i == 0 ? kSpin : kSpin2;
     ContactState& cs = w.cs;
     cs.slip.vx = forward * cp + lateral * sp - w.offset * x[kPsiDot] - x[w.spin] * g.wheel_radius_m;
+    // Longitudinal relaxation (SlidingTire::longitudinal_relaxation_length_m): the laws see the
+    // relaxed V u / sigma_x; u relaxes towards sigma_x vx / V while loaded.
+    const double sigma_x = c.tire.longitudinal_relaxation_length_m;
+    if (sigma_x > 0.0) {
+      const double u = x[i == 0 ? kSlipX : kSlipX2];
+      const double relaxed = V * u / sigma_x;
+      if (mode.loaded) cs.longitudinal_rate[0] = cs.slip.vx - relaxed;
+      cs.slip.vx = relaxed;
+    }
     cs.slip.vy = -forward * sp + lateral * cp - g.trail_m * x[kPsiDot];
     cs.slip.omega = x[kPsiDot];
     cs.slip_ratio = cs.slip.vx / V;
@@ -397,7 +362,7 @@ int wheel_contacts(const GearModel& model, const GearMode& mode, double t, const
   return n;
 }
 
-}  // namespace
+}  // namespace detail
 
 ContactState contact_state(const GearModel& model, const GearMode& mode, double t,
                            const GearState& x) {
@@ -421,205 +386,12 @@ ContactState contact_state(const GearModel& model, const GearMode& mode, double 
   cs.force.Mz = cs.force.Mz - (wheels[0].offset - l) * cs.force.Fx + b.force.Mz -
                 (wheels[1].offset - l) * b.force.Fx;
   cs.wheel_fx_n = {cs.force.Fx, b.force.Fx};
+  cs.longitudinal_rate[1] = b.longitudinal_rate[0];
   cs.wheel_brake_nm = {cs.brake_torque_nm, b.brake_torque_nm};
   cs.force.Fx += b.force.Fx;
   cs.force.Fy += b.force.Fy;
   cs.brake_torque_nm += b.brake_torque_nm;
   return cs;
-}
-
-namespace {
-
-// d(dx/dt)/dx by forward differences of gear_rhs, one evaluation per state (carcass compliance:
-// e_y', e_psi' come from an implicit solve).
-GearJacobian jacobian_by_differences(const GearModel& model, const GearMode& mode, double t,
-                                     const GearState& x) {
-  const GearState f0 = gear_rhs(model, mode, t, x);
-  constexpr std::array<double, kStateSize> kScale{1e-3, 1e-1, 1e-3, 1e-1, 1e2, 1e-3,
-                                                  1e-3, 1e-1, 1e2,  1e-3, 1e-3};
-  GearJacobian J;
-  for (int j = 0; j < kStateSize; ++j) {
-    GearState xp = x;
-    const double h = 1e-7 * std::max(std::abs(x[j]), kScale[static_cast<std::size_t>(j)]);
-    xp[j] += h;
-    J.col(j) = (gear_rhs(model, mode, t, xp) - f0) / h;
-  }
-  return J;
-}
-
-using KinematicsJacobian = Eigen::Matrix<double, 4, kStateSize>;
-
-// d(vx, vy, omega, lambda)/dx of the patch kinematics (landing_gear.hpp; theory.md section 1),
-// without the wheel's own columns (offset l_i on psi', spin Omega_i), which wheel_kinematics adds.
-KinematicsJacobian kinematics_jacobian(const GearModel& model, const GearState& x) {
-  const LandingScenario& s = model.config.scenario;
-  const double cp = std::cos(x[kPsi]), sp = std::sin(x[kPsi]);
-  const double lateral = x[kYDot] + s.drift_speed_mps;
-  const double forward = s.forward_speed_mps + x[kXDot];
-  KinematicsJacobian D = KinematicsJacobian::Zero();
-  D(0, kYDot) = sp;
-  D(0, kPsi) = -forward * sp + lateral * cp;
-  D(0, kXDot) = cp;
-  D(1, kYDot) = cp;
-  D(1, kPsi) = -forward * cp - lateral * sp;
-  D(1, kXDot) = -sp;
-  D(1, kPsiDot) = -model.config.structure.trail_m;
-  D(2, kPsiDot) = 1.0;
-  D(3, kLambda) = 1.0;
-  return D;
-}
-
-// K = d(Fx, Fy, Mz)/d(vx, vy, omega, lambda) of one wheel's contact law at fixed load and patch:
-// analytic for the sliding coupled law, forward differences of the law in its inputs (one
-// evaluation each) for the others; zero without load.
-Eigen::Matrix<double, 3, 4> contact_law_jacobian(const GearModel& model, const GearMode& mode,
-                                                 const GearState& x, const ContactState& w) {
-  Eigen::Matrix<double, 3, 4> K = Eigen::Matrix<double, 3, 4>::Zero();
-  if (!(w.load_n > 0.0)) return K;
-  if (!mode.rolling && model.contact == ContactModel::coupled) {
-    K.leftCols<3>() = sliding_law_jacobian(model, w);
-    return K;
-  }
-  const double V = model.config.scenario.forward_speed_mps;
-  const Eigen::Vector3d F0(w.force.Fx, w.force.Fy, w.force.Mz);
-  const int inputs = mode.rolling ? 4 : 3;
-  for (int j = 0; j < inputs; ++j) {
-    ContactState p = w;
-    double lambda = x[kLambda];
-    double* v = j == 0 ? &p.slip.vx : j == 1 ? &p.slip.vy : j == 2 ? &p.slip.omega : &lambda;
-    const double h =
-        j == 3 ? 1e-7 * std::max(std::abs(lambda), 1e-3) : 1e-7 * std::max(std::abs(*v), 1.0);
-    *v += h;
-    p.slip_ratio = p.slip.vx / V;
-    contact_forces(model, mode.rolling, lambda, p);
-    K.col(j) = (Eigen::Vector3d(p.force.Fx, p.force.Fy, p.force.Mz) - F0) / h;
-  }
-  return K;
-}
-
-// The friction's partials in the state: rows Fx, Fy, Mz of the gear's resultant (the moment
-// about the midpoint for a twin), and each wheel's drag.
-struct FrictionJacobian {
-  Eigen::Matrix<double, 3, kStateSize> resultant = Eigen::Matrix<double, 3, kStateSize>::Zero();
-  std::array<Eigen::Matrix<double, 1, kStateSize>, 2> wheel_drag{};
-};
-
-FrictionJacobian friction_jacobian(const GearModel& model, const GearMode& mode, const GearState& x,
-                                   const KinematicsJacobian& D,
-                                   const std::array<WheelContact, 2>& wheels, int n) {
-  const GearStructure& g = model.config.structure;
-  FrictionJacobian out;
-  Eigen::Matrix<double, 3, kStateSize>& dF = out.resultant;
-  for (int i = 0; i < n; ++i) {
-    const WheelContact& wc = wheels[static_cast<std::size_t>(i)];
-    const Eigen::Matrix<double, 3, 4> K = contact_law_jacobian(model, mode, x, wc.cs);
-    KinematicsJacobian Di = D;
-    Di(0, kPsiDot) = -wc.offset;
-    Di(0, wc.spin) = -g.wheel_radius_m;
-    const Eigen::Matrix<double, 3, kStateSize> dFi = K * Di;
-    out.wheel_drag[static_cast<std::size_t>(i)] = dFi.row(0);
-    dF.row(0) += dFi.row(0);
-    dF.row(1) += dFi.row(1);
-    dF.row(2) += dFi.row(2) - (n == 1 ? 0.0 : wc.offset - g.offset_m) * dFi.row(0);
-  }
-  return out;
-}
-
-// The strut's rows: lateral bending and torsion (landing_gear.hpp, equations of motion).
-void strut_rows(const GearModel& model, const GearState& x, const Resultants<double>& F,
-                const FrictionJacobian& dF, GearJacobian& J) {
-  const GearStructure& g = model.config.structure;
-  const double cp = std::cos(x[kPsi]), sp = std::sin(x[kPsi]);
-  const Eigen::Matrix<double, 3, kStateSize>& dR = dF.resultant;
-  J(kY, kYDot) = 1.0;
-  J.row(kYDot) = (dR.row(0) * sp + dR.row(1) * cp) / g.lateral_mass_kg;
-  J(kYDot, kPsi) += (F.Fx * cp - F.Fy * sp) / g.lateral_mass_kg;
-  J(kYDot, kY) -= g.lateral_stiffness_n_per_m / g.lateral_mass_kg;
-  J(kYDot, kYDot) -= g.lateral_damping_ns_per_m / g.lateral_mass_kg;
-  J(kPsi, kPsiDot) = 1.0;
-  J.row(kPsiDot) =
-      (dR.row(2) - g.trail_m * dR.row(1) - g.offset_m * dR.row(0)) / g.torsional_inertia_kgm2;
-  J(kPsiDot, kPsi) -= g.torsional_stiffness_nm_per_rad *
-                      freeplay_deflection(x[kPsi], g.freeplay_rad).second /
-                      g.torsional_inertia_kgm2;
-  J(kPsiDot, kPsiDot) -= g.torsional_damping_nms_per_rad / g.torsional_inertia_kgm2;
-}
-
-// Each wheel's row: I_w Omega_i' = -r Fx_i - T_i(Omega_i) tanh(Omega_i), with
-// T = T_max / (1 + e^z), z = (1 - Omega r / V - s*) / ds.
-void wheel_rows(const GearModel& model, const GearMode& mode, const GearState& x,
-                const std::array<WheelContact, 2>& wheels, int n, const FrictionJacobian& dF,
-                GearJacobian& J) {
-  const GearStructure& g = model.config.structure;
-  const LandingScenario& s = model.config.scenario;
-  const double V = s.forward_speed_mps, r = g.wheel_radius_m;
-  for (int i = 0; i < n; ++i) {
-    const WheelContact& wc = wheels[static_cast<std::size_t>(i)];
-    J.row(wc.spin) = -r * dF.wheel_drag[static_cast<std::size_t>(i)] / g.wheel_inertia_kgm2;
-    const double th = std::tanh(x[wc.spin]);
-    double dT = 0.0;
-    if (mode.brake_command) {
-      const double z = (1.0 - x[wc.spin] * r / V - s.brake_target_slip) / s.brake_slip_band;
-      if (std::abs(z) < 50.0) {
-        const double ez = std::exp(z);
-        dT = s.brake_max_torque_nm * ez / ((1.0 + ez) * (1.0 + ez)) * r / (V * s.brake_slip_band);
-      }
-    }
-    J(wc.spin, wc.spin) -=
-        (dT * th + wc.cs.brake_torque_nm * (1.0 - th * th)) / g.wheel_inertia_kgm2;
-  }
-}
-
-// The optional degrees of freedom and couplings: fore-aft bending, gyroscopic coupling, and the
-// stretched string while rolling.
-void optional_rows(const GearModel& model, const GearMode& mode, const GearState& x,
-                   const ContactState& cs, const KinematicsJacobian& D, const FrictionJacobian& dF,
-                   GearJacobian& J) {
-  const GearStructure& g = model.config.structure;
-  const double cp = std::cos(x[kPsi]), sp = std::sin(x[kPsi]);
-  const Resultants<double>& F = cs.force;
-  if (g.fore_aft_stiffness_n_per_m > 0.0) {
-    const Eigen::Matrix<double, 3, kStateSize>& dR = dF.resultant;
-    J(kX, kXDot) = 1.0;
-    J.row(kXDot) = (dR.row(0) * cp - dR.row(1) * sp) / g.fore_aft_mass_kg;
-    J(kXDot, kPsi) += (-F.Fx * sp - F.Fy * cp) / g.fore_aft_mass_kg;
-    J(kXDot, kX) -= g.fore_aft_stiffness_n_per_m / g.fore_aft_mass_kg;
-    J(kXDot, kXDot) -= g.fore_aft_damping_ns_per_m / g.fore_aft_mass_kg;
-  }
-  if (g.gyroscopic_length_m > 0.0) {
-    const double gyro = gyroscopic_coefficient(g, x[kSpin] + x[kSpin2]);
-    const double dgyro = g.wheel_inertia_kgm2 / g.gyroscopic_length_m;  // d g / d Omega_i
-    J(kYDot, kPsiDot) += gyro / g.lateral_mass_kg;
-    J(kPsiDot, kYDot) -= gyro / g.torsional_inertia_kgm2;
-    for (int spin : {static_cast<int>(kSpin), static_cast<int>(kSpin2)}) {
-      J(kYDot, spin) += dgyro * x[kPsiDot] / g.lateral_mass_kg;
-      J(kPsiDot, spin) -= dgyro * x[kYDot] / g.torsional_inertia_kgm2;
-    }
-  }
-  if (mode.rolling && mode.loaded) {
-    J.row(kLambda) = -D.row(1);
-    J(kLambda, kPsiDot) -= cs.patch_radius_m;
-    J(kLambda, kLambda) -=
-        model.config.scenario.forward_speed_mps / model.config.rolling.relaxation_length_m;
-  }
-}
-
-}  // namespace
-
-GearJacobian gear_jacobian(const GearModel& model, const GearMode& mode, double t,
-                           const GearState& x) {
-  if (model.config.structure.carcass_compliance())
-    return jacobian_by_differences(model, mode, t, x);
-  const ContactState cs = contact_state(model, mode, t, x);
-  std::array<WheelContact, 2> wheels;
-  const int n = wheel_contacts(model, mode, t, x, wheels);
-  const KinematicsJacobian D = kinematics_jacobian(model, x);
-  const FrictionJacobian dF = friction_jacobian(model, mode, x, D, wheels, n);
-  GearJacobian J = GearJacobian::Zero();
-  strut_rows(model, x, cs.force, dF, J);
-  wheel_rows(model, mode, x, wheels, n, dF, J);
-  optional_rows(model, mode, x, cs, D, dF, J);
-  return J;
 }
 
 GearState gear_rhs(const GearModel& model, const GearMode& mode, double t, const GearState& x) {
@@ -684,51 +456,15 @@ GearState gear_rhs(const GearModel& model, const GearMode& mode, double t, const
   } else {
     dx[kCarcassY] = dx[kCarcassPsi] = 0.0;
   }
+  // Longitudinal relaxation: u_i' = vx_i - (V / sigma_x) u_i while loaded (wheel_contacts).
+  dx[kSlipX] = cs.longitudinal_rate[0];
+  dx[kSlipX2] = cs.longitudinal_rate[1];
   return dx;
-}
-
-double string_deflection_for_force(const GearModel& model, double t, const GearState& x,
-                                   double lateral_force_n) {
-  const GearMode rolling{true, true, false};
-  GearState probe = x;
-  const auto force = [&](double lambda) {
-    probe[kLambda] = lambda;
-    return contact_state(model, rolling, t, probe).force.Fy;
-  };
-  if (contact_state(model, rolling, t, x).load_n <= 0.0) return 0.0;
-  // Fy(lambda) rises from 0 to its peak within a slip angle of a few mu / C_Fa; search up to
-  // alpha = 1 rad, and stop at the bracket's end if the force is out of reach.
-  const double sigma = model.config.rolling.relaxation_length_m;
-  double lo = 0.0, hi = std::copysign(sigma, lateral_force_n);
-  if (std::abs(force(hi)) < std::abs(lateral_force_n)) return hi;
-  for (int i = 0; i < 60; ++i) {
-    const double mid = 0.5 * (lo + hi);
-    (std::abs(force(mid)) < std::abs(lateral_force_n) ? lo : hi) = mid;
-  }
-  return 0.5 * (lo + hi);
 }
 
 GearConfig legacy_gear_config() {
   GearConfig c;
   c.structure.torsional_damping_nms_per_rad = 100.0;
-  return c;
-}
-
-GearConfig carcass_from_string_tire(GearConfig c) {
-  // Stretched string (Pacejka 2012, sec. 5.4; Besselink 2000, ch. 3): string stiffness per
-  // length c_c, free length sigma on each side of a contact line of half-length a. Cornering
-  // stiffness C_Fa = 2 c_c (sigma + a)^2; rim translated by e with the contact line held:
-  // foundation force 2 c_c a e (contact) + 2 c_c sigma e (free parts); rim turned by e_psi:
-  // moment c_c e_psi (2 a^3 / 3 + 2 a sigma (sigma + a)) (contact part and the free parts'
-  // deflection a e_psi decaying over sigma, at mean lever a + sigma).
-  const double N = c.scenario.static_load_n;
-  const double a = std::sqrt(N / (2.0 * std::numbers::pi * c.tire.inflation_pressure_pa *
-                                  moment(unit_patch(c.tire).profile, 1)));
-  const double sigma = c.rolling.relaxation_length_m;
-  const double cc = c.rolling.cornering_coefficient * N / (2.0 * (sigma + a) * (sigma + a));
-  c.structure.carcass_lateral_stiffness_n_per_m = 2.0 * cc * (sigma + a);
-  c.structure.carcass_torsional_stiffness_nm_per_rad =
-      cc * (2.0 / 3.0 * a * a * a + 2.0 * a * sigma * (sigma + a));
   return c;
 }
 

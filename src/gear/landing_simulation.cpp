@@ -61,6 +61,10 @@ std::vector<int> active_states(const GearModel& m) {
     a.push_back(kCarcassY);
     a.push_back(kCarcassPsi);
   }
+  if (m.config.tire.longitudinal_relaxation_length_m > 0.0) {
+    a.push_back(kSlipX);
+    if (m.config.structure.wheel_spacing_m > 0.0) a.push_back(kSlipX2);
+  }
   return a;
 }
 
@@ -224,13 +228,11 @@ void start_cvode(Cvode& cv, Problem& problem, const GearState& x, const SolverOp
   detail::use_compiled_vector_ops(cv.y);
   detail::use_compiled_vector_ops(cv.atol);
   detail::use_compiled_vector_ops(cv.out);
-  const std::array<double, kStateSize> scale{1e-3, 1e-1, 1e-3, 1e-1, 1e2, 1e-3,
-                                             1e-3, 1e-1, 1e2,  1e-3, 1e-3};
   from_state(problem, x, cv.y);
   for (int k = 0; k < n; ++k) {
     NV_Ith_S(cv.atol, k) =
         options.relative_tolerance *
-        scale[static_cast<std::size_t>(problem.active[static_cast<std::size_t>(k)])];
+        kStateScale[static_cast<std::size_t>(problem.active[static_cast<std::size_t>(k)])];
   }
   cv.mem = CVodeCreate(options.method == Integrator::bdf ? CV_BDF : CV_ADAMS, cv.ctx);
   const double t = 0.0;

@@ -19,10 +19,8 @@ namespace contensou {
 
 namespace {
 
-// Scales of the states (the solver's absolute-tolerance scales): y, y', psi, psi', Omega,
-// lambda, x, x', Omega2, e_y, e_psi.
-constexpr std::array<double, kStateSize> kScale{1e-3, 1e-1, 1e-3, 1e-1, 1e2, 1e-3,
-                                                1e-3, 1e-1, 1e2,  1e-3, 1e-3};
+// The states' scales (landing_gear.hpp, kStateScale).
+constexpr const std::array<double, kStateSize>& kScale = kStateScale;
 
 double scale_of(int i) {
   return kScale[static_cast<std::size_t>(i)];
@@ -32,6 +30,25 @@ double scaled_residual(const GearState& f, const std::vector<int>& states) {
   double r = 0.0;
   for (int i : states) r = std::max(r, std::abs(f[i]) / scale_of(i));
   return r;
+}
+
+// Longitudinal relaxation: u_i = sigma_x vx_i / V at the quasi-steady state; Newton starts from
+// the phase's slip.
+void add_longitudinal_states(const GearModel& model, StabilityPhase phase, double touchdown_slip,
+                             QuasiSteadyState& q) {
+  const double sigma_x = model.config.tire.longitudinal_relaxation_length_m;
+  if (!(sigma_x > 0.0)) return;
+  const bool sliding = model.contact != ContactModel::von_schlippe;
+  const double slip = phase == StabilityPhase::braked_slide
+                          ? model.config.scenario.brake_target_slip
+                      : sliding && phase == StabilityPhase::touchdown ? touchdown_slip
+                                                                      : 0.0;
+  q.states.push_back(kSlipX);
+  q.x[kSlipX] = sigma_x * slip;
+  if (model.config.structure.wheel_spacing_m > 0.0) {
+    q.states.push_back(kSlipX2);
+    q.x[kSlipX2] = q.x[kSlipX];
+  }
 }
 
 }  // namespace
@@ -80,6 +97,7 @@ QuasiSteadyState quasi_steady_state(const GearModel& model, StabilityPhase phase
     q.states.push_back(kCarcassY);
     q.states.push_back(kCarcassPsi);
   }
+  add_longitudinal_states(model, phase, touchdown_slip, q);
 
   // Newton's method with a central-difference Jacobian and step halving.
   const int n = static_cast<int>(q.states.size());
@@ -227,6 +245,17 @@ int index_of(const QuasiSteadyState& q, int state) {
   return -1;
 }
 
+// The mode's longitudinal tire deflection |u| + |u2| (the wheel-tire longitudinal mode the
+// longitudinal relaxation adds; 0 without it).
+double longitudinal_deflection(const QuasiSteadyState& q, const Eigen::VectorXcd& v) {
+  double u = 0.0;
+  for (int state : {static_cast<int>(kSlipX), static_cast<int>(kSlipX2)}) {
+    const int k = index_of(q, state);
+    if (k >= 0) u += std::abs(v[k]);
+  }
+  return u;
+}
+
 // The work per cycle of each term along the mode v (complex amplitudes of the active states,
 // angular frequency w), the contact forces along it from Jc (linear_stability.hpp).
 EnergyPerCycle mode_energy(const GearModel& model, const QuasiSteadyState& q,
@@ -272,7 +301,9 @@ void describe_dominant_mode(const GearModel& model, const QuasiSteadyState& q,
   rep.torsion_share = std::abs(psi) / (std::abs(psi) + std::abs(y) / 0.1);
   const int ix = index_of(q, kX);
   const double fore_aft = ix >= 0 ? std::abs(v[ix]) : 0.0;
-  rep.mode_kind = fore_aft > std::max(std::abs(psi) * 1.0, std::abs(y))
+  const double tire = longitudinal_deflection(q, v);
+  rep.mode_kind = tire > std::max({std::abs(psi) * 1.0, std::abs(y), fore_aft}) ? "longitudinal"
+                  : fore_aft > std::max(std::abs(psi) * 1.0, std::abs(y))
                       ? "fore-aft"
                       : (std::abs(psi) * 1.0 >= std::abs(y) ? "torsion" : "lateral");
   // Amplitude: 1 mrad of torsion or 1 mm of lateral or fore-aft deflection, whichever the mode
@@ -323,8 +354,10 @@ StabilityReport assess_stability(const GearModel& model, StabilityPhase phase,
     const std::complex<double> ev = es.eigenvalues()[k];
     if (ev.imag() <= 2 * std::numbers::pi * 0.5) continue;
     const Eigen::VectorXcd v = es.eigenvectors().col(k);
-    const double share = std::abs(v[index_of(q, kPsi)]) /
-                         (std::abs(v[index_of(q, kPsi)]) + std::abs(v[index_of(q, kY)]) / 0.1);
+    // The torsion against the lateral and the tire's longitudinal deflection (1 mrad ~ 0.1 mm).
+    const double psi = std::abs(v[index_of(q, kPsi)]);
+    const double share =
+        psi / (psi + (std::abs(v[index_of(q, kY)]) + longitudinal_deflection(q, v)) / 0.1);
     if (share > best_share) {
       best_share = share;
       rep.torsion_growth_rate_per_s = ev.real();

@@ -76,6 +76,8 @@ TEST(Carcass, SteadySlideDeflectsTheCarcassByFrictionOverStiffness) {
   for (ContactModel m : {ContactModel::coupled, ContactModel::decoupled}) {
     GearConfig rigid;
     rigid.scenario.drift_speed_mps = 1.0;
+    // The carcass's own balance: no longitudinal relaxation, the law sees the rim's vx.
+    rigid.tire.longitudinal_relaxation_length_m = 0.0;
     const GearConfig c = carcass_from_string_tire(rigid);
     const GearModel model = make_gear_model(c, m);
     const GearMode mode{true, false, false};
@@ -221,10 +223,14 @@ TEST(Carcass, JacobianAgreesWithCentralDifferences) {
   x[kSpin] = 100.0;
   x[kCarcassY] = 2e-3;
   x[kCarcassPsi] = 1e-4;
+  // The longitudinal deflection at its steady value sigma_x vx / V (vx = V - Omega r - l psi').
+  x[kSlipX] = c.tire.longitudinal_relaxation_length_m *
+              (1.0 - (100.0 * c.structure.wheel_radius_m + 0.3 * c.structure.offset_m) /
+                         c.scenario.forward_speed_mps);
   const double t = 0.5;
   const GearJacobian J = gear_jacobian(model, mode, t, x);
   for (int j : {static_cast<int>(kPsiDot), static_cast<int>(kSpin), static_cast<int>(kCarcassY),
-                static_cast<int>(kCarcassPsi)}) {
+                static_cast<int>(kCarcassPsi), static_cast<int>(kSlipX)}) {
     const double h = 1e-6 * std::max(std::abs(x[j]), 1e-3);
     GearState xp = x, xm = x;
     xp[j] += h;

@@ -57,6 +57,7 @@ TEST(GearParameters, NumericNamesInTheOrderOfValidation) {
                                           "tire.friction.reference_speed",
                                           "tire.friction.exponent",
                                           "tire.regularization_speed",
+                                          "tire.longitudinal_relaxation_length_m",
                                           "rolling.relaxation_length_m",
                                           "rolling.cornering_coefficient",
                                           "rolling.aligning_coefficient_m",

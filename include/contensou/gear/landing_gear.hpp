@@ -9,6 +9,8 @@
 //   Omega2    the second wheel's spin of a twin gear [rad/s] (optional)
 //   e_y, e_psi lateral offset and yaw of the sliding patch relative to the rim [m, rad]
 //             (tire carcass compliance, optional; docs/shimmy.md, "Carcass compliance")
+//   u, u2     longitudinal deflection of each wheel's tire, whose first-order relaxation gives the
+//             longitudinal slip every contact law sees [m] (tire.longitudinal_relaxation_length_m)
 // Ground frame X forward, Y left, Z up; the wheel frame is turned by psi. The patch centre lies
 // a trail e behind the strut axis and an offset l to its left. Patch kinematics (theory.md
 // section 1, with spin omega = psi'):
@@ -57,7 +59,7 @@ struct GearStructure {
   // c_psi, strut damping and shimmy damper together: 1.4 times the largest damping the
   // classical (rolling, unbraked) model needs over 30-90 m/s (docs/shimmy.md, "Default gear");
   // the legacy gear (legacy_gear_config) has 100 (1 % of critical).
-  double torsional_damping_nms_per_rad = 245.0;
+  double torsional_damping_nms_per_rad = 216.0;
   double trail_m = 0.05;             // e, patch centre behind the strut axis
   double offset_m = 0.25;            // l, patch centre left of the strut axis
   double wheel_radius_m = 0.57;      // r, rolling radius
@@ -115,6 +117,17 @@ struct SlidingTire {
   // or "seed" (a = 1.03, m = 1.72 of seed Table 3).
   std::string law_coefficients = "fitted";
   bool exact_integrals = false;  // coupled model: exact integrals instead of the law
+  // Longitudinal relaxation of every contact model (docs/shimmy.md, "Longitudinal relaxation"):
+  // each wheel's tire deflects longitudinally by u, and the laws see the relaxed slip velocity
+  // V u / sigma_x instead of the kinematic vx (Pacejka 2012, ch. 7, the first-order transient
+  // slip sigma_k dk'/dt + V k' = -V_sx, here with u = -sigma_x k'):
+  //   u' = vx - (V / sigma_x) u,
+  // so that a step in vx reaches 63 % after sigma_x of rolling. The default is the half contact
+  // length (the patch radius R at the static load, 0.15 m), the order of the longitudinal
+  // relaxation length at the nominal load (Pacejka 2012, ch. 7); an assumed number, varied in
+  // the classical verdict's sensitivity table.
+  // 0: no relaxation (the laws see vx itself).
+  double longitudinal_relaxation_length_m = 0.15;  // sigma_x
 };
 
 // The rolling tire (von Schlippe / Somieski stretched string; Pacejka 2012, ch. 5) with combined
@@ -195,6 +208,8 @@ std::vector<std::string> gear_parameter_names();
 // Omega2: the second wheel's spin of a twin gear (structure.wheel_spacing_m > 0; inert otherwise).
 // e_y, e_psi: the patch's offset and yaw relative to the rim (structure.carcass_*; inert
 // otherwise).
+// u, u2: each wheel's longitudinal deflection (tire.longitudinal_relaxation_length_m > 0; u2 for
+// a twin gear; inert otherwise).
 enum StateIndex : int {
   kY = 0,
   kYDot,
@@ -207,9 +222,17 @@ enum StateIndex : int {
   kSpin2,
   kCarcassY,
   kCarcassPsi,
+  kSlipX,
+  kSlipX2,
   kStateSize
 };
 using GearState = Eigen::Matrix<double, kStateSize, 1>;
+
+// The states' scales (the solver's absolute tolerances are relative_tolerance times these): 1 mm,
+// 0.1 m/s, 1 mrad, 0.1 rad/s, 100 rad/s, 1 mm, 1 mm, 0.1 m/s, 100 rad/s, 1 mm, 1 mrad, 1 mm,
+// 1 mm (in StateIndex order).
+inline constexpr std::array<double, kStateSize> kStateScale{
+    1e-3, 1e-1, 1e-3, 1e-1, 1e2, 1e-3, 1e-3, 1e-1, 1e2, 1e-3, 1e-3, 1e-3, 1e-3};
 
 // The discrete part of the state, changed only at events.
 struct GearMode {
@@ -235,6 +258,9 @@ struct ContactState {
   // Carcass compliance: (e_y', e_psi'), the patch's motion relative to the rim; slip is then the
   // patch's own motion (the rim's plus these), on which the law acts.
   std::array<double, 2> carcass_rate{};
+  // Longitudinal relaxation: each wheel's u' = vx_kinematic - (V / sigma_x) u (zero without it);
+  // slip.vx (and slip_ratio) is then the relaxed V u / sigma_x the law acts on.
+  std::array<double, 2> longitudinal_rate{};
 };
 
 // Everything fixed for one run: the configuration, the contact model and the friction law's

@@ -81,10 +81,13 @@ struct StabilityReport {
   double growth_rate_per_s = 0.0;  // largest real part of an oscillatory eigenvalue (Im > 0.5 Hz)
   double frequency_hz = 0.0;       // of that mode
   double torsion_share = 0.0;      // |psi| / (|psi| + |y| / 0.1 m) in that mode's eigenvector
-  // What that mode moves most, comparing |psi| x 1 m, |y| and |x| in its eigenvector: "torsion",
-  // "lateral" (both shimmy) or "fore-aft" (gear walk); empty without an oscillatory mode.
+  // What that mode moves most, comparing |psi| x 1 m, |y|, |x| and the tire's longitudinal
+  // deflection |u| in its eigenvector: "torsion", "lateral" (both shimmy), "fore-aft" (gear walk)
+  // or "longitudinal" (the wheel spinning against the tire's longitudinal deflection); empty
+  // without an oscillatory mode.
   std::string mode_kind;
-  // The torsional mode: the oscillatory eigenvalue with the largest torsion share (what the
+  // The torsional mode: the oscillatory eigenvalue with the largest share of torsion against
+  // lateral and longitudinal tire deflection, |psi| / (|psi| + (|y| + |u|) / 0.1 m) (what the
   // standard perturbation, a kick of psi', measures).
   double torsion_growth_rate_per_s = 0.0;
   double torsion_frequency_hz = 0.0;
