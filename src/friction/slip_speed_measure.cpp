@@ -21,8 +21,8 @@ constexpr int kRingCapacity = 640;
 
 // The profile at n points t (with its Hertz edge).
 void profile_at(const ExactModel<double>& m, const double* t, int n, double* p) {
-  detail::profile_batch(m, t, n, m.chebyshev.size(), p);
-  if (m.sqrt_edge)
+  detail::profile_batch(m, t, n, m.chebyshev().size(), p);
+  if (m.sqrt_edge())
     for (int i = 0; i < n; ++i) p[i] *= std::sqrt(std::max(0.0, 1.0 - t[i]));
 }
 
@@ -116,7 +116,7 @@ struct PieceLanes {
 // least with rules.reach[n] <= r (rules.reach[n]: B^(-2n) below about 1e-2 of the ring tolerance).
 CONTENSOU_LANE_INLINE void piece_lanes(const ExactModel<double>& m, std::size_t k,
                                        const RingLanes& r, const RingRules& rules, PieceLanes& q) {
-  const double lo = m.knot[k], hi = m.knot[k + 1];
+  const double lo = m.table()->knot[k], hi = m.table()->knot[k + 1];
   Lanes gap, far;
   for (int l = 0; l < kLanes; ++l) {
     const double a = std::min(std::max(lo, r.t_min[l]), r.t_end[l]);
@@ -148,7 +148,7 @@ CONTENSOU_LANE_INLINE void piece_lanes(const ExactModel<double>& m, std::size_t 
   q.nodes = static_cast<int>(most);
   q.plain = !(nearest < 0.0);
   q.tk = lo;
-  for (int j = 0; j < 4; ++j) q.c[j] = m.piece[k][j];
+  for (int j = 0; j < 4; ++j) q.c[j] = m.table()->piece[k][j];
 }
 
 // The sums S_l = sum f lambda^l (l = 0..3, lambda = (t - t_min) / D) of a piece's nodes under
@@ -207,7 +207,7 @@ CONTENSOU_LANE_CLONES void table_ring_sums(const ExactModel<double>& m, std::siz
                                            const RingRules& rules, double S[4][kLanes]) {
   PieceLanes q;
   for (int l = 0; l < kLanes; ++l) {
-    const double a = std::min(std::max(m.knot[first], r.t_min[l]), r.t_end[l]);
+    const double a = std::min(std::max(m.table()->knot[first], r.t_min[l]), r.t_end[l]);
     q.root_a0[l] = std::sqrt(a - r.t_min[l]);
     q.root_a1[l] = std::sqrt(std::max(0.0, r.t_max[l] - a));
   }
@@ -227,9 +227,11 @@ CONTENSOU_LANE_CLONES void table_ring_sums(const ExactModel<double>& m, std::siz
 // The table's piece holding t (its first piece below knot[1], its last from the last knot but
 // one), with `above` the piece k with knot[k] < t <= knot[k + 1] instead.
 std::size_t piece_of(const ExactModel<double>& m, double t, bool above) {
-  const auto it = above ? std::lower_bound(m.knot.begin(), m.knot.end(), t)
-                        : std::upper_bound(m.knot.begin(), m.knot.end(), t);
-  const std::ptrdiff_t k = std::clamp<std::ptrdiff_t>(it - m.knot.begin(), 1, m.piece.size());
+  const std::vector<double>& knot = m.table()->knot;
+  const auto it = above ? std::lower_bound(knot.begin(), knot.end(), t)
+                        : std::upper_bound(knot.begin(), knot.end(), t);
+  const auto pieces = static_cast<std::ptrdiff_t>(m.table()->piece.size());
+  const std::ptrdiff_t k = std::clamp<std::ptrdiff_t>(it - knot.begin(), 1, pieces);
   return static_cast<std::size_t>(k - 1);
 }
 
@@ -245,7 +247,7 @@ void half_rings_table(const ExactModel<double>& m, double eps, const std::size_t
                       std::vector<SlipMoments>& value) {
   RingLanes r;
   double t_c[kLanes];
-  std::size_t first = m.piece.size(), last = 0;
+  std::size_t first = m.table()->piece.size(), last = 0;
   for (int l = 0; l < kLanes; ++l) {
     const double sl = s[ring[std::min(l, count - 1)]];
     r.s[l] = sl;
@@ -283,10 +285,10 @@ RingKind ring_kind(const ExactModel<double>& m, double s, double eps) {
   const double dsq = (s - eps) * (s - eps), four_es = 4.0 * eps * s;
   if (!(dsq < 1.0)) return RingKind::kOutside;
   if (!(four_es > 0.0)) return RingKind::kAboutOrigin;
-  if (!m.piece.empty() && four_es > 1e-6) {
+  if (m.table() && four_es > 1e-6) {
     const double t_end = std::min(1.0, (s + eps) * (s + eps));
-    const auto it = std::upper_bound(m.knot.begin(), m.knot.end(), dsq);
-    if (it != m.knot.end() && *it < t_end) return RingKind::kTable;
+    const auto it = std::upper_bound(m.table()->knot.begin(), m.table()->knot.end(), dsq);
+    if (it != m.table()->knot.end() && *it < t_end) return RingKind::kTable;
   }
   return RingKind::kAdaptive;
 }
@@ -311,7 +313,7 @@ SlipMoments half_ring(const ExactModel<double>& m, double s, double eps, double 
   // Arc end: |r|^2 = 1 at sin^2(theta_w / 2) = (1 - dsq) / (4 eps s).
   const double theta_w =
       four_es <= 1.0 - dsq ? kPi : 2.0 * std::asin(std::sqrt((1.0 - dsq) / four_es));
-  const bool edge = m.sqrt_edge && theta_w < kPi;  // sqrt(1 - |r|^2) at the arc end
+  const bool edge = m.sqrt_edge() && theta_w < kPi;  // sqrt(1 - |r|^2) at the arc end
   auto f = [&](const double* x, int n, int, detail::Sample<double, 6>* values) {
     double tr[detail::kKronrodPoints], p[detail::kKronrodPoints], phi[detail::kKronrodPoints],
         jac[detail::kKronrodPoints];
@@ -600,8 +602,8 @@ void assemble(const PanelContext& ctx, const PendingMeasure& pending,
 // and the rules of the pieces; a piece's rule aims at 1e2 ring_tolerance relative to it.
 void add_table_context(PanelContext& ctx, double t, const SlipSpeedMeasureOptions& o) {
   const ExactModel<double>& model = ctx.model;
-  for (std::size_t k = 1; k + 1 < model.knot.size(); ++k) {
-    const double rho = std::sqrt(model.knot[k]);
+  for (std::size_t k = 1; k + 1 < model.table()->knot.size(); ++k) {
+    const double rho = std::sqrt(model.table()->knot[k]);
     ctx.onsets.push_back(ctx.eta * std::abs(rho - ctx.eps));
     ctx.exits.push_back(ctx.eta * (rho + ctx.eps));
   }
@@ -659,7 +661,7 @@ SlipSpeedMeasure slip_speed_measure(const ExactModel<double>& model, double t,
     ring_rule.reach.push_back(n < 1 ? INFINITY : std::cosh(exponent / n));
   PanelContext ctx{model, eps, eta, g, {}, {}, {}, {}, {}, 0.0};
   PendingMeasure pending;
-  if (model.piece.empty()) {
+  if (!model.table()) {
     for (const Panel& p : panels) panel_points(ctx, p, g, pending);
     pending.groups.push_back({Panel{0.0, 1.0, 0}, 0, pending.nu.size(), false});
   } else {

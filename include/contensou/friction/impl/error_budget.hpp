@@ -50,7 +50,7 @@ template <class T>
 ResultantErrors representation_error_bound(const ExactModel<T>& m) {
   const double R = m.radius;
   const double repr =
-      m.representation_error * value_of(m.pressure) * m.friction_scale * std::numbers::pi * R * R;
+      m.representation_error() * value_of(m.pressure) * m.friction_scale * std::numbers::pi * R * R;
   return {repr, repr, repr * R};
 }
 
@@ -79,8 +79,8 @@ T falling_coefficient(const ExactModel<T>& m) {
 // tail, over at most pi of beta (tail_scale = 2 pi R^2 (1 + |k|)).
 template <class T>
 std::size_t chord_transform_terms(const ExactModel<T>& m, double unit, double tail_scale) {
-  std::size_t terms = m.chord_q0.size();
-  while (terms > 1 && m.chord_tail[terms - 1] * tail_scale <= 1e-3 * unit) --terms;
+  std::size_t terms = m.chord_q0().size();
+  while (terms > 1 && m.chord_tail()[terms - 1] * tail_scale <= 1e-3 * unit) --terms;
   return terms;
 }
 
@@ -92,11 +92,11 @@ std::size_t falling_profile_terms(const ExactModel<T>& m, double fall, double un
                                   double& dropped) {
   const double R = m.radius;
   const double area = std::numbers::pi * R * R * (1.0 + std::hypot(value_of(m.kx), value_of(m.ky)));
-  std::size_t terms = m.chebyshev.size();
+  std::size_t terms = m.chebyshev().size();
   double tail = 0.0;
   while (terms > 1 &&
-         (tail + std::abs(value_of(m.chebyshev[terms - 1]))) * fall * area <= 1e-3 * unit) {
-    tail += std::abs(value_of(m.chebyshev[terms - 1]));
+         (tail + std::abs(value_of(m.chebyshev()[terms - 1]))) * fall * area <= 1e-3 * unit) {
+    tail += std::abs(value_of(m.chebyshev()[terms - 1]));
     --terms;
   }
   dropped = fall * value_of(m.pressure) * tail * area;
@@ -148,16 +148,16 @@ SpinBudget spin_budget(const ExactModel<T>& m, const ToleranceScale& s, Resultan
   const double tail_scale = 2.0 * std::numbers::pi * R * R * shift;
   b.terms = chord_transform_terms(m, unit, tail_scale);
   const double fall = std::abs(value_of(falling_coefficient(m)));
-  if (m.piece.empty())
+  if (!m.table())
     add_dropped(e,
                 std::abs(value_of(constant_coefficient(m)) * value_of(m.pressure)) *
-                    m.chord_tail[b.terms] * tail_scale,
+                    m.chord_tail()[b.terms] * tail_scale,
                 R);
-  b.profile_terms = m.chebyshev.size();
+  b.profile_terms = m.chebyshev().size();
   b.break_at_knots = tol >= kBreakChordsTolerance;
   if (m.slip_speed && fall > 0.0) {
     for (double& t : b.tol_fall) t /= fall;
-    if (m.piece.empty()) {
+    if (!m.table()) {
       double dropped = 0.0;
       b.profile_terms = falling_profile_terms(m, fall, unit, dropped);
       add_dropped(e, dropped, R);
