@@ -1,34 +1,9 @@
-// The exact law: the exact resultants of a patch (theory.md section 2) from tables built once
-// per pressure profile, at the cost of a closed-form law, with a certified error and the
-// Jacobian.
-//
-// Why tables suffice. The resultants are linear in the pressure, hence in (1, kx, ky), and the
-// default orthotropic law tau = -sigma f D vc/|vc|, D = diag(1, kappa), is D times the isotropic
-// one. In the frame of the sliding direction e = v/|v| (n = z x e, s = sign(omega)) the
-// isotropic integrals of an axisymmetric profile depend on eps = |v|/(|omega| R) only, and the
-// symmetries of theory.md section 2 (x -> -x with time reversal; y -> -y with omega -> -omega)
-// leave six functions of eps (R = 1, p* = 1, f = 1, u_hat = vc/|vc|, integrals over the disk):
-//   A = integral p u_x,  a = integral p x u_y,  b = integral p y u_x   (a, b odd in omega)
-//   alpha = integral p x^2 u_x,  c = integral p x y u_y,  d = integral p y^2 u_x.
-// Then, with N = 2 pi R^2 p* A^1 the load, k_par = k.e, k_perp = k.n (k = (kx, ky)):
-//   F  = -f N D [A e + s (a (z x k) + (a + b) k_perp e)] / L
-//   Mz = -f N R [s (a (1 + kappa) - (a + b) e'De) + (1 + kappa)/2 (c - d) k_perp
-//                + (kappa - 1) ((alpha - c) e_x e_y k_par + (c + d)/2 (e_x^2 - e_y^2) k_perp)] / L
-// with L = 2 pi A^1 (the same formulas as exact_resultants at eps -> 0 and eps -> infinity:
-// pure spin, Mz = -s M0 (1 + kappa)/2, F = s (M0/2R) D (z x k); pure sliding, F = -f N D e).
-// Every profile, shift and kappa therefore shares one table of six functions of one variable,
-//   t = (|v| - |omega| R) / (|v| + |omega| R) in [-1, 1]   (t = 0: the centre of sliding on the
-//   rim),
-// tabulated as A/sigma, a, (a + b)/sigma, (alpha - c)/sigma, (c - d)/sigma, (c + d)/sigma
-// (sigma = |v|/(|v| + |omega| R), all divided by L), which are bounded and make the law smooth in v
-// at v = 0. Their values at t = -1 (pure spin) are closed forms of the moments A^n (theory.md
-// section 4), from the first-order turn of the slip direction about a centre of sliding r_c near
-// O, u_hat = u_hat_0 + eps cos(theta) r_hat / rho: A/sigma -> A^0/(2 A^1), a -> A^2/(2 A^1),
-// (alpha - c)/sigma and (c + d)/sigma -> A^2/(4 A^1), (a + b)/sigma and (c - d)/sigma -> 0.
-// The table is piecewise Chebyshev (piecewise_chebyshev.hpp), graded towards t = 0 where the
-// functions have an x log|x| singularity, and checked between its nodes against the adaptive
-// integrator (exact_resultants.hpp): `achieved` is the largest error found, as a bound on the
-// resultants relative to f N and f N R for the model's own kappa and shift.
+/// \file
+/// The exact law: the exact resultants of a patch (theory.md §2) from tables of six functions of
+/// t = (|v| - |omega| R) / (|v| + |omega| R), built once per pressure profile (make_exact_law),
+/// evaluated at the cost of a closed-form law (exact_law_resultants) with the Jacobian and a
+/// certified error bound (`achieved`, relative to f N and f N R). The derivation of the six
+/// functions and of the resultants from them: docs/theory.md §7.4.
 #pragma once
 
 #include <Eigen/Core>

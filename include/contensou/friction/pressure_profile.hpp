@@ -60,7 +60,7 @@ struct PressureProfile {
 
 // The most points a tabulated profile takes (tabulated_profile, read_profile_table,
 // validate(ContactPatch)): its exact model holds about 0.4 KB a knot, and building the model
-// and its exact law takes about 1.7 KB a knot (1.7 GB and some 35 s on one core at the limit);
+// and its exact law takes about 1.7 KB a knot (1.7 GB at the limit; docs/speed.md);
 // a denser measurement is better resampled, or fitted (smoothed_profile). Beyond 2.7e8 knots
 // the outer rule's interval counts (int) would overflow.
 inline constexpr std::size_t kMaxProfilePoints = 1'000'000;

@@ -115,10 +115,10 @@ void cubic_moments(const std::array<double, 4>& c, double t0, double lo, double 
 // holds the antiderivative of the piece below knot far_from[k] (which they leave out), so that
 // its (knot - t_f)^(1/2) singularity cancels. A chord thus costs a few knot terms or pieces and
 // two short series, whatever the number of knots. The series are fitted top-down on a binary
-// tree of the pieces (exact_resultants.cpp): a node's (or interval's) far sums are its
+// tree of the pieces (table_far_sums.cpp): a node's (or interval's) far sums are its
 // parent's series plus the few pieces between the two, summed from the pieces' moments, so
-// that every fit sums a bounded number of terms: O(n) in the number of knots (0.3 s for 10^4
-// knots, 3 s for 10^5). Returns the largest deviation of the series from those sums at test
+// that every fit sums a bounded number of terms: O(n) in the number of knots (docs/speed.md,
+// "Dense tables"). Returns the largest deviation of the series from those sums at test
 // points (M0 and M2), the deviations of its ancestors' series added.
 inline constexpr std::size_t kMaxNear = 512;
 double update_far_sums(TablePieces& table);
