@@ -16,8 +16,8 @@
 
 #include "closed_forms.hpp"
 #include "contensou/friction/exact_law.hpp"
-#include "contensou/friction/forward_derivative.hpp"
 #include "contensou/friction/fractional_law.hpp"
+#include "contensou/friction/impl/forward_derivative.hpp"
 #include "contensou/friction/slip_speed_measure.hpp"
 #include "jet_checks.hpp"
 #include "patches.hpp"
@@ -337,7 +337,7 @@ TEST(ExactLaw, HandJacobianEqualsForwardDerivatives) {
   p.slip_speed_friction = SlipSpeedFriction<double>{0.35, 0.2, 4.0, 1.0};
   const ExactLaw laws[] = {make_exact_law(make_exact_model(p)),
                            make_exact_law(make_exact_model(test_support::uniform_patch()))};
-  using D = ForwardDerivative<3>;
+  using D = detail::ForwardDerivative<3>;
   for (const ExactLaw& law : laws) {
     std::mt19937 rng(29);
     for (int i = 0; i < 3000; ++i) {
