@@ -1,97 +1,15 @@
 // MuJoCo engine plugin "contensou.friction": coupled sliding-spinning friction over a circular
-// contact patch (theory.md sections 1-4) for the geom pairs named in the plugin's configuration.
-//
-// MJCF:
-//   <extension><plugin plugin="contensou.friction"><instance name="patch">
-//     <config key="pairs" value="disk floor"/>      tire geom, road geom [; tire road ...]
-//     <config key="profile" value="uniform"/>       uniform | hertz | seed-tire
-//     <config key="friction" value="0.5"/>          f, in [1e-6, 100]
-//     <config key="kappa" value="1"/>               lateral/longitudinal friction ratio, in
-//                                                   [1e-3, 1e3] (theory.md section 2; the
-//                                                   tire geom's x axis, projected on the
-//                                                   contact plane, is the longitudinal one)
-//     <config key="radius" value="0.05"/>           patch radius R [m], in [1e-15, the tire
-//                                                   geom's bounding radius], or instead:
-//     <config key="stiffness" value="1e7"/>         k [N/m^3]: R = (N / k)^(1/3) (Hertz-like),
-//                                                   kept in the same range; k is refused
-//                                                   where the patch under the weight of the
-//                                                   tire's mechanism would leave it
-//     (no load or pressure key: the normal load N is MuJoCo's, the contact force its
-//     constraint solver computes for the pair, below; p* follows from N, R and the profile)
-//     <config key="law" value="fractional"/>        fractional (default) | exact | set-valued
-//     <config key="surface" value="exact"/>         set-valued only: exact (default) | ellipsoid
-//     <config key="regularization" value="1e-4"/>   fractional only: eps [m/s] of the law,
-//                                                   in [1e-15, 1e10]
-//     <config key="tolerance" value="1e-8"/>        exact: the law's error bound (relative to
-//                                                   f N and f N R), in (1e-14, 1e-2); set-valued:
-//                                                   of the surface's integrals, [1e-14, 1e-6]
-//   </instance></plugin></extension>
-// A value outside its range is an error at init naming the key, the value and the range
-// (check_patch_size, require_within: why these ranges). MuJoCo compiles an empty value as an
-// absent key, which keeps its default: the plugin cannot tell them apart (contensou.mujoco's
-// model_from_xml refuses empty values before compiling).
-// The named geoms must have condim="1": MuJoCo keeps the normal force (its constraint solver)
-// and the plugin replaces MuJoCo's friction by the wrench (Fx, Fy, Mz) of the patch. A pair
-// whose friction would be applied twice or never is an error at init: a geom pair named twice
-// (in either order, or also by another instance of the plugin), a geom paired with itself or
-// with a geom MuJoCo never collides it with (one weld body, parent and child, contype and
-// conaffinity that do not match, unless a <contact><pair> names them), a plane or height field
-// as the tire (the patch centre is the tire's centre projected onto the contact plane).
-//
-// Per step: one pass over d->contact sorts the contacts to the pairs (a hash table keyed by the
-// unordered geom pair), so the cost per pair does not grow with the number of contacts. Per
-// pair: its contacts give the normal n (of the first contact, from road into tire, theory.md
-// section 1) and a point (their mean); the patch centre is the tire geom's centre projected
-// onto the contact plane. The sliding velocity (tire relative to road at that point) and the
-// spin (relative angular velocity about n) in the patch frame (x along the tire geom's x axis
-// projected onto the plane, z = n) enter the law; the wrench
-// on the tire (and its opposite on the road) goes to qfrc_passive by mj_applyFT.
-//
-// The normal force: passive forces are computed before MuJoCo's constraint solver, so the
-// contact solution of this step does not exist yet. The plugin uses the PREVIOUS step's
-// solution: in `advance` (after the solver) it stores N = sum over the pair's contacts of the
-// normal component of mj_contactForce, and the next step's friction uses it. A contact that is
-// new this step has N = 0 (no friction in its first step).
-//
-// law="exact": the exact law (exact_law.hpp) of the unit patch, built once at init to
-// `tolerance` (tables of six functions of t = (|v| - |omega| R) / (|v| + |omega| R)); a law
-// that does not reach the tolerance is an error at init.
-//
-// law="set-valued" (issue 15): the wrench is a point of the patch's limit surface C (the exact
-// one, or its fitted ellipsoid; limit_surface.hpp), found per pair by one local Moreau-Jean
-// projection before MuJoCo's solver (Moreau 1988; Leine & Glocker 2003), so that a contact
-// loaded inside the limit sticks with zero twist instead of creeping:
-//   J (3 x nv): the twist s = (vx, vy, omega) = J qvel of tire relative to road at the patch
-//     centre (rows ex.Jp, ey.Jp, n.Jr of mj_jac(tire) - mj_jac(road));
-//   A = h J M^-1 J^T, the Delassus matrix (twist change over a step h per unit wrench); M^-1 by
-//     mj_solveM with qLD, which mj_fwdPosition (mj_factorM) has made current before the
-//     passive stage. Its symmetric part is used; if its smallest eigenvalue is below 1e-12 of
-//     the largest (a pair that cannot slide or spin in some direction) 1e-12 of the largest is
-//     added to the diagonal; a pair with A = 0 gets no friction;
-//   s_free = s + h J a_other, the twist at the end of the step without this pair's friction:
-//     a_other = M^-1 f_app (f_app = qfrc_applied + xfrc_applied of this step, known now) + the
-//     rest (gravity and bias forces, other passive forces, actuators, MuJoCo's constraint
-//     forces, the other pairs' friction) taken from the PREVIOUS step: `advance` stores the
-//     patch acceleration (world frame, linear and angular)
-//       c = (J qvel+ - s) / h - J M^-1 (J^T w + f_app)      (qvel+: the velocity after the step)
-//     and the next step uses J a_other = (projection of c) + J M^-1 f_app. With no history (the
-//     first step of a contact) s_free = s;
-//   trial w_t = -A^-1 s_free; w = argmin over w in C(N, R) of (w - w_t)^T A (w - w_t); the
-//     twist at the end of the step is then s_free + A w: 0 when w_t is inside C (stick). In the
-//     scaled wrench u = (Fx, Fy, Mz / R) / N on the unit patch's surface C_1 (R = 1, N = 1; C
-//     scales as w = N S u, S = diag(1, 1, R)): metric G = S A S, u_t = -G^-1 S s_free / N.
-// At rest under a constant load the trial is the previous step's wrench (J qacc = 0 there), so
-// a load inside C is a fixed point: the same wrench, the same qacc, the twist stays 0.
-// What stays approximate (docs/mujoco.md, "Creep"): N and the non-friction forces lag one step; the
-// projection is per pair (the other pairs enter through the previous step); the estimate
-// assumes qvel+ = qvel + h qacc with the same M (Euler without implicit damping).
-//
-// State per pair (kStateSize numbers): [0] N stored for the next step, [1] N used this step,
-// [2] R, [3..5] vx vy omega, [6..8] Fx Fy Mz, [9] set-valued: 1 if the trial was inside C
-// (stick), [10] projection iterations, [11] 1 if the pair had contacts this step, [12..14]
-// patch centre (world), [15..20] relative velocity at the centre this step (world, linear and
-// angular), [21..26] force and torque on the tire (world), [27..32] c of `advance` (world,
-// linear and angular), [33] 1 if c is valid (the pair had contacts in the previous step).
+// contact patch (theory.md §1-4) for the geom pairs named in the plugin's configuration, which
+// must have condim="1": MuJoCo keeps the normal force, the plugin replaces MuJoCo's friction by
+// the patch's wrench (Fx, Fy, Mz), applied to qfrc_passive. Laws: fractional (default), exact
+// (exact_law.hpp, built at init), set-valued (a Moreau-Jean projection onto the limit surface,
+// limit_surface.hpp). The normal force is the previous step's contact solution, stored in
+// `advance`.
+// Contract: the configuration keys, their ranges and the errors at init (a value outside its
+// range, a pair named twice or never colliding, a plane as the tire, a tolerance the exact law
+// cannot reach) are documented in docs/mujoco.md, "The plugin"; the per-step algorithm, the
+// set-valued step and the state layout per pair (kStateSize numbers) in docs/mujoco.md,
+// "Inside the plugin". An exception of the library becomes mju_error naming the plugin (fail).
 #include <mujoco/mujoco.h>
 
 #include <Eigen/Cholesky>
