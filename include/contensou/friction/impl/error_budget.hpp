@@ -131,9 +131,9 @@ struct SpinBudget {
 // beta, so they get 1/(20 pi) of it. Floor of the estimate: min(1e-11, tol / 10) of f N (f N
 // R): on 10^4 random kinematics per profile kind the Kronrod heuristic's estimate fell below
 // the achieved error only at rounding level, at most 6.6e-12 of f N (uniform pressure,
-// tolerance 1e-8, a first partition that over-delivers); test_exact checks the bound. A table's
-// chords are broken at knot crossings only for tol >= kBreakChordsTolerance: below, the pieces
-// between every m-th knot still hold kinks, G7K15 runs out of its 32 intervals and the
+// tolerance 1e-8, a first partition that over-delivers); test_exact_resultants checks the bound. A
+// table's chords are broken at knot crossings only for tol >= kBreakChordsTolerance: below, the
+// pieces between every m-th knot still hold kinks, G7K15 runs out of its 32 intervals and the
 // unconverged inner estimates can keep the outer rule bisecting to capacity; the unbroken
 // panels converge down to ~3e-9 (101-point table), and below that still report a 100x smaller
 // estimate.
