@@ -18,5 +18,6 @@ set(contensou_friction_sources
   pressure_profile.cpp
   quadrature.cpp
   slip_speed_measure.cpp
+  slip_speed_rings.cpp
   table_far_sums.cpp
   units.cpp)

@@ -520,7 +520,7 @@ TEST(ExactLaw, RejectsBadInputWithClearErrors) {
   }
 }
 
-// Issue 22 (Bounds): a build stopped by its caller throws Interrupted.
+// A build stopped by its caller throws Interrupted.
 TEST(ExactLaw, AStopRequestStopsTheBuild) {
   ExactLawOptions o;
   o.stop = [] { return true; };

@@ -1,7 +1,7 @@
-// Dense tabulated profiles (issue 22): the far-knot series of a table, fitted top-down on a tree
-// of its pieces in O(n) (update_far_sums), against the quadratic sums they replace; a 10^5-point
-// table (its model and its exact law) against a 10^4-point one of the same function; the limit
-// on the number of points.
+// Dense tabulated profiles (table_far_sums.cpp): the far-knot series of a table, fitted top-down on
+// a tree of its pieces in O(n) (update_far_sums), against the quadratic sums they replace; a
+// 10^5-point table (its model and its exact law) against a 10^4-point one of the same function; the
+// limit on the number of points.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -124,8 +124,7 @@ Kinematics<double> kinematics(double ratio, double angle, double R) {
 
 // On 200-point tables (even knots with a kink; random knots with noise) the O(n) fits give the
 // chord integrals of the quadratic sums: against the brute-force sum over every piece at 4,000
-// feet within 1e-14 of their largest value (3e-15 on both; the far sums on the tree before,
-// fitted at feet rounded to doubles, were 1.3e-14 off on the random table), and the resultants
+// feet within 1e-14 of their largest value (3e-15 on both), and the resultants
 // of the model equal, to 1e-13 of f N (f N R), those of the same model with its far series
 // refitted from the quadratic sums.
 TEST(DenseProfile, FarSeriesMatchTheQuadraticSums) {
@@ -166,11 +165,11 @@ TEST(DenseProfile, FarSeriesMatchTheQuadraticSums) {
   }
 }
 
-// A 10^5-point table builds (2-3 s on one core, where the far sums on the tree took 13 s, and
-// the knot terms before them minutes) and agrees with the 10^4-point table of the same function
+// A 10^5-point table builds (docs/speed.md, "Dense tables") and agrees with the 10^4-point
+// table of the same function
 // to the interpolation error of the coarser one: their loads differ by 2.4e-10, their
 // resultants by 2e-10 of f N (f N R) at most; checked to 2e-9. Their exact laws (rings summed
-// on a tree of the pieces' moments: 0.6 s for 10^5 knots, 37 s piece by piece before) agree
+// on a tree of the pieces' moments) agree
 // with the integrator within their certified bounds on 40 kinematics (every regime and
 // direction; the 10^4-point law), and with each other within the two bounds and 2e-9.
 TEST(DenseProfile, TenToTheFiveKnotsAgreeWithTenToTheFour) {
