@@ -36,6 +36,7 @@ struct ModelErrorReport {
 
 /// Compares both coefficient sets with the exact integrals, sliding along x, at `points`
 /// log-spaced psi = v/u in [psi_min, psi_max]. F_lat is reported when the patch has kx != 0.
+/// Throws InvalidArgument for an invalid patch, psi_min <= 0, psi_max <= psi_min or points < 2.
 ModelErrorReport model_error_report(const ContactPatch& patch, double psi_min = 1e-3,
                                     double psi_max = 1e3, int points = 61);
 

@@ -78,6 +78,8 @@ struct PiecewiseChebyshevBuild {
 
 /// Adaptive build: each piece is checked at the n midpoints between its Lobatto nodes
 /// (x = cos((j + 1/2) pi / n)) against the sampler and bisected while it misses the tolerance.
+/// Throws std::invalid_argument for functions < 1 or a degree outside [2, 40]; what the sampler
+/// throws (Interrupted from a stop request) passes through.
 PiecewiseChebyshevBuild build_piecewise_chebyshev(int functions, const ChebyshevSampler& sample,
                                                   const PiecewiseChebyshevOptions& options);
 /// The same with the points of each piece sampled in one call.

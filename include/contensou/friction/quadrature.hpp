@@ -17,7 +17,8 @@ struct GaussLegendreRule {
 };
 
 /// n-point Gauss-Legendre rule (exact for polynomials of degree 2n-1), computed by Newton's
-/// method on the three-term recurrence of P_n; accurate to a few ulp for n <= 1000.
+/// method on the three-term recurrence of P_n; accurate to a few ulp for n <= 1000. Throws
+/// InvalidArgument for n outside [1, 1000].
 GaussLegendreRule gauss_legendre(int n);
 
 namespace detail {
