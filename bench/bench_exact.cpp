@@ -325,7 +325,7 @@ void BM_DenseModelBuild(benchmark::State& state) {
   double error = 0.0;
   for (auto _ : state) {
     const ExactModel<double> model = make_exact_model(patch);
-    error = model.representation_error;
+    error = model.representation_error();
     benchmark::DoNotOptimize(model);
   }
   state.counters["representation_error"] = error;

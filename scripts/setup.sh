@@ -9,7 +9,7 @@ cd "$(dirname "$0")/.."
 
 packages=(build-essential cmake ninja-build pkg-config
   libeigen3-dev libceres-dev libboost-dev libsundials-dev libgtest-dev libgmock-dev libbenchmark-dev
-  libcubature-dev libcli11-dev nlohmann-json3-dev gnuplot-nox clang-format
+  libcubature-dev libcli11-dev nlohmann-json3-dev gnuplot-nox clang-format doxygen
   clang-14 libclang-rt-14-dev libomp-14-dev python3-venv python3-dev)
 missing=()
 for p in "${packages[@]}"; do

@@ -1,6 +1,7 @@
-// The friction module (target contensou::friction, Eigen only): pressure profiles and their
-// moments, the contact patch, the exact resultants by adaptive cubature and the exact law built
-// from them, the fractional laws and the model-error report (theory.md sections 1-5).
+/// \file
+/// The friction module (target contensou::friction, Eigen only): pressure profiles and their
+/// moments, the contact patch, the exact resultants by adaptive cubature and the exact law built
+/// from them, the fractional laws and the model-error report (theory.md sections 1-5).
 #pragma once
 
 #include "contensou/friction/contact_patch.hpp"

@@ -1,97 +1,15 @@
 // MuJoCo engine plugin "contensou.friction": coupled sliding-spinning friction over a circular
-// contact patch (theory.md sections 1-4) for the geom pairs named in the plugin's configuration.
-//
-// MJCF:
-//   <extension><plugin plugin="contensou.friction"><instance name="patch">
-//     <config key="pairs" value="disk floor"/>      tire geom, road geom [; tire road ...]
-//     <config key="profile" value="uniform"/>       uniform | hertz | seed-tire
-//     <config key="friction" value="0.5"/>          f, in [1e-6, 100]
-//     <config key="kappa" value="1"/>               lateral/longitudinal friction ratio, in
-//                                                   [1e-3, 1e3] (theory.md section 2; the
-//                                                   tire geom's x axis, projected on the
-//                                                   contact plane, is the longitudinal one)
-//     <config key="radius" value="0.05"/>           patch radius R [m], in [1e-15, the tire
-//                                                   geom's bounding radius], or instead:
-//     <config key="stiffness" value="1e7"/>         k [N/m^3]: R = (N / k)^(1/3) (Hertz-like),
-//                                                   kept in the same range; k is refused
-//                                                   where the patch under the weight of the
-//                                                   tire's mechanism would leave it
-//     (no load or pressure key: the normal load N is MuJoCo's, the contact force its
-//     constraint solver computes for the pair, below; p* follows from N, R and the profile)
-//     <config key="law" value="fractional"/>        fractional (default) | exact | set-valued
-//     <config key="surface" value="exact"/>         set-valued only: exact (default) | ellipsoid
-//     <config key="regularization" value="1e-4"/>   fractional only: eps [m/s] of the law,
-//                                                   in [1e-15, 1e10]
-//     <config key="tolerance" value="1e-8"/>        exact: the law's error bound (relative to
-//                                                   f N and f N R), in (1e-14, 1e-2); set-valued:
-//                                                   of the surface's integrals, [1e-14, 1e-6]
-//   </instance></plugin></extension>
-// A value outside its range is an error at init naming the key, the value and the range
-// (check_patch_size, require_within: why these ranges). MuJoCo compiles an empty value as an
-// absent key, which keeps its default: the plugin cannot tell them apart (contensou.mujoco's
-// model_from_xml refuses empty values before compiling).
-// The named geoms must have condim="1": MuJoCo keeps the normal force (its constraint solver)
-// and the plugin replaces MuJoCo's friction by the wrench (Fx, Fy, Mz) of the patch. A pair
-// whose friction would be applied twice or never is an error at init: a geom pair named twice
-// (in either order, or also by another instance of the plugin), a geom paired with itself or
-// with a geom MuJoCo never collides it with (one weld body, parent and child, contype and
-// conaffinity that do not match, unless a <contact><pair> names them), a plane or height field
-// as the tire (the patch centre is the tire's centre projected onto the contact plane).
-//
-// Per step: one pass over d->contact sorts the contacts to the pairs (a hash table keyed by the
-// unordered geom pair), so the cost per pair does not grow with the number of contacts. Per
-// pair: its contacts give the normal n (of the first contact, from road into tire, theory.md
-// section 1) and a point (their mean); the patch centre is the tire geom's centre projected
-// onto the contact plane. The sliding velocity (tire relative to road at that point) and the
-// spin (relative angular velocity about n) in the patch frame (x along the tire geom's x axis
-// projected onto the plane, z = n) enter the law; the wrench
-// on the tire (and its opposite on the road) goes to qfrc_passive by mj_applyFT.
-//
-// The normal force: passive forces are computed before MuJoCo's constraint solver, so the
-// contact solution of this step does not exist yet. The plugin uses the PREVIOUS step's
-// solution: in `advance` (after the solver) it stores N = sum over the pair's contacts of the
-// normal component of mj_contactForce, and the next step's friction uses it. A contact that is
-// new this step has N = 0 (no friction in its first step).
-//
-// law="exact": the exact law (exact_law.hpp) of the unit patch, built once at init to
-// `tolerance` (tables of six functions of t = (|v| - |omega| R) / (|v| + |omega| R)); a law
-// that does not reach the tolerance is an error at init.
-//
-// law="set-valued" (issue 15): the wrench is a point of the patch's limit surface C (the exact
-// one, or its fitted ellipsoid; limit_surface.hpp), found per pair by one local Moreau-Jean
-// projection before MuJoCo's solver (Moreau 1988; Leine & Glocker 2003), so that a contact
-// loaded inside the limit sticks with zero twist instead of creeping:
-//   J (3 x nv): the twist s = (vx, vy, omega) = J qvel of tire relative to road at the patch
-//     centre (rows ex.Jp, ey.Jp, n.Jr of mj_jac(tire) - mj_jac(road));
-//   A = h J M^-1 J^T, the Delassus matrix (twist change over a step h per unit wrench); M^-1 by
-//     mj_solveM with qLD, which mj_fwdPosition (mj_factorM) has made current before the
-//     passive stage. Its symmetric part is used; if its smallest eigenvalue is below 1e-12 of
-//     the largest (a pair that cannot slide or spin in some direction) 1e-12 of the largest is
-//     added to the diagonal; a pair with A = 0 gets no friction;
-//   s_free = s + h J a_other, the twist at the end of the step without this pair's friction:
-//     a_other = M^-1 f_app (f_app = qfrc_applied + xfrc_applied of this step, known now) + the
-//     rest (gravity and bias forces, other passive forces, actuators, MuJoCo's constraint
-//     forces, the other pairs' friction) taken from the PREVIOUS step: `advance` stores the
-//     patch acceleration (world frame, linear and angular)
-//       c = (J qvel+ - s) / h - J M^-1 (J^T w + f_app)      (qvel+: the velocity after the step)
-//     and the next step uses J a_other = (projection of c) + J M^-1 f_app. With no history (the
-//     first step of a contact) s_free = s;
-//   trial w_t = -A^-1 s_free; w = argmin over w in C(N, R) of (w - w_t)^T A (w - w_t); the
-//     twist at the end of the step is then s_free + A w: 0 when w_t is inside C (stick). In the
-//     scaled wrench u = (Fx, Fy, Mz / R) / N on the unit patch's surface C_1 (R = 1, N = 1; C
-//     scales as w = N S u, S = diag(1, 1, R)): metric G = S A S, u_t = -G^-1 S s_free / N.
-// At rest under a constant load the trial is the previous step's wrench (J qacc = 0 there), so
-// a load inside C is a fixed point: the same wrench, the same qacc, the twist stays 0.
-// What stays approximate (docs/mujoco.md, "Creep"): N and the non-friction forces lag one step; the
-// projection is per pair (the other pairs enter through the previous step); the estimate
-// assumes qvel+ = qvel + h qacc with the same M (Euler without implicit damping).
-//
-// State per pair (kStateSize numbers): [0] N stored for the next step, [1] N used this step,
-// [2] R, [3..5] vx vy omega, [6..8] Fx Fy Mz, [9] set-valued: 1 if the trial was inside C
-// (stick), [10] projection iterations, [11] 1 if the pair had contacts this step, [12..14]
-// patch centre (world), [15..20] relative velocity at the centre this step (world, linear and
-// angular), [21..26] force and torque on the tire (world), [27..32] c of `advance` (world,
-// linear and angular), [33] 1 if c is valid (the pair had contacts in the previous step).
+// contact patch (theory.md §1-4) for the geom pairs named in the plugin's configuration, which
+// must have condim="1": MuJoCo keeps the normal force, the plugin replaces MuJoCo's friction by
+// the patch's wrench (Fx, Fy, Mz), applied to qfrc_passive. Laws: fractional (default), exact
+// (exact_law.hpp, built at init), set-valued (a Moreau-Jean projection onto the limit surface,
+// limit_surface.hpp). The normal force is the previous step's contact solution, stored in
+// `advance`.
+// Contract: the configuration keys, their ranges and the errors at init (a value outside its
+// range, a pair named twice or never colliding, a plane as the tire, a tolerance the exact law
+// cannot reach) are documented in docs/mujoco.md, "The plugin"; the per-step algorithm, the
+// set-valued step and the state layout per pair (kStateSize numbers) in docs/mujoco.md,
+// "Inside the plugin". An exception of the library becomes mju_error naming the plugin (fail).
 #include <mujoco/mujoco.h>
 
 #include <Eigen/Cholesky>
@@ -117,6 +35,7 @@
 #include "contensou/friction/fractional_law.hpp"
 #include "contensou/friction/limit_surface.hpp"
 #include "contensou/friction/pressure_profile.hpp"
+#include "plugin_config.hpp"
 
 namespace contensou::mujoco_plugin {
 namespace {
@@ -125,7 +44,6 @@ namespace {
 constexpr int kN = 0, kNUsed = 1, kRadius = 2, kTwist = 3, kWrench = 6, kStick = 9, kIter = 10,
               kContact = 11, kCentre = 12, kVel = 15, kForce = 21, kOther = 27, kOtherValid = 33;
 constexpr int kStateSize = 34;
-constexpr const char* kName = "contensou.friction";
 constexpr std::array<const char*, 10> kAttributes = {
     "pairs",     "profile", "friction", "kappa",          "radius",
     "stiffness", "law",     "surface",  "regularization", "tolerance"};
@@ -152,174 +70,6 @@ struct PairContacts {
   mjtNum t1[3] = {0, 0, 0};      // the first contact's first tangent
   mjtNum point[3] = {0, 0, 0};   // sum of the contact points
 };
-
-enum class Law { fractional, exact, set_valued };
-
-struct Config {
-  std::vector<std::pair<std::string, std::string>> pair_names;
-  std::string profile = "uniform";
-  double friction = 0.0;
-  double kappa = 1.0;
-  double radius = 0.0;     // 0: from the stiffness
-  double stiffness = 0.0;  // N/m^3
-  Law law = Law::fractional;
-  bool ellipsoid = false;  // set-valued: the fitted ellipsoid instead of the exact surface
-  double regularization = 1e-4;
-  double tolerance = 1e-8;
-};
-
-[[noreturn]] void fail(const std::string& message) {
-  mju_error("%s", (std::string(kName) + ": " + message).c_str());
-  std::abort();  // mju_error does not return
-}
-
-std::string attribute(const mjModel* m, int instance, const char* key) {
-  const char* v = mj_getPluginConfig(m, instance, key);
-  return v ? std::string(v) : std::string();
-}
-
-// config `key` as a positive finite number, or `fallback` when the key is absent (MuJoCo
-// compiles an empty value as an absent key: the plugin cannot tell them apart, docs/mujoco.md).
-double number(const mjModel* m, int instance, const char* key, double fallback) {
-  const std::string s = attribute(m, instance, key);
-  if (s.empty()) return fallback;
-  char* end = nullptr;
-  const double x = std::strtod(s.c_str(), &end);
-  if (end == s.c_str() || *end != '\0' || !std::isfinite(x) || !(x > 0))
-    fail(std::string("config '") + key + "' = '" + s + "' is not a positive number");
-  return x;
-}
-
-std::string format(double x) {
-  char buf[32];
-  std::snprintf(buf, sizeof buf, "%.6g", x);
-  return buf;
-}
-
-// The valid ranges of the numeric keys (docs/mujoco.md, "Valid values"). MuJoCo holds no
-// position or speed beyond mjMAXVAL = 1e10 (it resets the simulation) and divides by nothing
-// below mjMINVAL = 1e-15, so lengths lie in [1e-15, 1e10] m, a patch no wider than its tire
-// geom (its bounding radius). With these, the law's numbers stay finite for any normal force
-// below 1e270 N: the exact law's v / R <= 1e25, the fractional law's largest slope
-// 16 max(F0, M0) max(1, R) / eps (fractional_law.hpp) <= 1.6e38 times N for f <= 100.
-constexpr double kShortest = mjMINVAL, kLongest = mjMAXVAL;  // [m]
-constexpr double kFrictionMin = 1e-6, kFrictionMax = 100.0;
-constexpr double kKappaMin = 1e-3, kKappaMax = 1e3;
-constexpr double kEpsMin = mjMINVAL, kEpsMax = mjMAXVAL;  // [m/s]
-
-// A value of config `key` (as given: `text`) outside its range [lo, hi] (unit; why: what the
-// range means) is an error naming all of them.
-void require_within(const char* key, const std::string& text, double x, double lo, double hi,
-                    const std::string& unit, const std::string& why) {
-  // The range as the message shows it (6 digits) is the range enforced: its end is a value the
-  // user may give.
-  if (x >= std::strtod(format(lo).c_str(), nullptr) &&
-      x <= std::strtod(format(hi).c_str(), nullptr))
-    return;
-  fail(std::string("config '") + key + "' = '" + text + "' is outside [" + format(lo) + ", " +
-       format(hi) + "]" + (unit.empty() ? "" : " " + unit) + ": " + why);
-}
-
-// config 'pairs': "tire road; tire road; ...".
-std::vector<std::pair<std::string, std::string>> read_pair_names(const mjModel* m, int instance) {
-  std::vector<std::pair<std::string, std::string>> names;
-  std::stringstream pairs(attribute(m, instance, "pairs"));
-  std::string item;
-  while (std::getline(pairs, item, ';')) {
-    std::stringstream words(item);
-    std::string a, b, extra;
-    if (!(words >> a)) continue;
-    if (!(words >> b) || (words >> extra))
-      fail("config 'pairs': '" + item + "' is not two geom names (tire road)");
-    names.emplace_back(a, b);
-  }
-  if (names.empty()) fail("config 'pairs' is empty: name the geom pairs (tire road; ...)");
-  return names;
-}
-
-// config 'tolerance': the exact law's requested error bound, in (1e-14, 1e-2) (make_exact_law);
-// the limit surface's integrals', in [1e-14, 1e-6] (make_limit_surface); no fractional key.
-double read_tolerance(const mjModel* m, int instance, Law law) {
-  const std::string s = attribute(m, instance, "tolerance");
-  if (s.empty()) return 1e-8;
-  if (law == Law::fractional)
-    fail("config 'tolerance' = '" + s +
-         "' applies to laws 'exact' and 'set-valued' only (law is 'fractional')");
-  const double t = number(m, instance, "tolerance", 1e-8);
-  const bool exact = law == Law::exact;
-  if (exact ? !(t > 1e-14 && t < 1e-2) : !(t >= 1e-14 && t <= 1e-6))
-    fail("config 'tolerance' = '" + s + "' is outside " +
-         (exact ? "(1e-14, 1e-2) for law 'exact'" : "[1e-14, 1e-6] for law 'set-valued'"));
-  return t;
-}
-
-// config 'law', 'surface' and 'regularization' into c (a key of another law is an error).
-void read_law(const mjModel* m, int instance, Config& c) {
-  const std::string law = attribute(m, instance, "law");
-  if (law.empty() || law == "fractional")
-    c.law = Law::fractional;
-  else if (law == "exact")
-    c.law = Law::exact;
-  else if (law == "set-valued")
-    c.law = Law::set_valued;
-  else
-    fail("config 'law' = '" + law + "': use fractional, exact or set-valued");
-  const std::string surface = attribute(m, instance, "surface");
-  if (!surface.empty() && c.law != Law::set_valued)
-    fail("config 'surface' = '" + surface + "' needs law 'set-valued' (law is '" +
-         (law.empty() ? std::string("fractional") : law) + "')");
-  if (!surface.empty() && surface != "exact" && surface != "ellipsoid")
-    fail("config 'surface' = '" + surface + "': use exact or ellipsoid");
-  c.ellipsoid = surface == "ellipsoid";
-  const std::string eps = attribute(m, instance, "regularization");
-  if (!eps.empty() && c.law != Law::fractional)
-    fail("config 'regularization' applies to law 'fractional' only (law is '" + law + "')");
-  c.regularization = number(m, instance, "regularization", 1e-4);
-  require_within("regularization", eps, c.regularization, kEpsMin, kEpsMax, "m/s",
-                 "the fractional law's eps, within MuJoCo's speeds (from mjMINVAL, its "
-                 "smallest divisor, to mjMAXVAL, its largest speed: a larger eps makes every "
-                 "speed viscous)");
-}
-
-Config read_config(const mjModel* m, int instance) {
-  Config c;
-  c.pair_names = read_pair_names(m, instance);
-  const std::string profile = attribute(m, instance, "profile");
-  if (!profile.empty()) c.profile = profile;
-  if (c.profile != "uniform" && c.profile != "hertz" && c.profile != "seed-tire")
-    fail("config 'profile' = '" + c.profile + "': use uniform, hertz or seed-tire");
-  const std::string friction = attribute(m, instance, "friction");
-  if (friction.empty()) fail("config 'friction' (f) is required");
-  c.friction = number(m, instance, "friction", 0.0);
-  require_within("friction", friction, c.friction, kFrictionMin, kFrictionMax, "",
-                 "the friction coefficient f (no dry pair has f > 10; for no friction, leave "
-                 "the pair out of 'pairs')");
-  c.radius = number(m, instance, "radius", 0.0);
-  c.stiffness = number(m, instance, "stiffness", 0.0);
-  if ((c.radius > 0) == (c.stiffness > 0))
-    fail("give exactly one of config 'radius' [m] and 'stiffness' [N/m^3]");
-  // The ranges without the model's geometry, when the model is compiled; those of the tire
-  // geom's size and the weight it carries when its data is made (check_patch_size).
-  if (c.radius > 0)
-    require_within("radius", attribute(m, instance, "radius"), c.radius, kShortest, kLongest, "m",
-                   "a length MuJoCo holds (mjMINVAL to mjMAXVAL), and at most the tire geom's "
-                   "bounding radius");
-  else
-    require_within("stiffness", attribute(m, instance, "stiffness"), c.stiffness,
-                   mjMINVAL / (kLongest * kLongest * kLongest),
-                   mjMAXVAL / (kShortest * kShortest * kShortest), "N/m^3",
-                   "the patch (N / k)^(1/3) must be a length MuJoCo holds (1e-15 to 1e10 m) for "
-                   "some force N it holds (1e-15 to 1e10 N), and at most the tire geom's "
-                   "bounding radius under the weight the tire carries");
-  read_law(m, instance, c);
-  c.kappa = number(m, instance, "kappa", 1.0);
-  require_within("kappa", attribute(m, instance, "kappa"), c.kappa, kKappaMin, kKappaMax, "",
-                 "the lateral/longitudinal friction ratio (beyond, one direction's friction "
-                 "vanishes next to the other's, and the exact law's tables cannot reach a "
-                 "tolerance relative to f N)");
-  c.tolerance = read_tolerance(m, instance, c.law);
-  return c;
-}
 
 // nv as the int that mju_* and mj_solveM take (mjtSize in MuJoCo 4).
 int dofs(const mjModel* m) {

@@ -402,7 +402,7 @@ void bind_laws(nb::module_& m) {
           nb::sig("def __init__(self, patch: ContactPatch, representation_tolerance: float = "
                   "1e-15) -> None"))
       .def_ro("radius", &ExactModel<double>::radius)
-      .def_ro("representation_error", &ExactModel<double>::representation_error)
+      .def_prop_ro("representation_error", &ExactModel<double>::representation_error)
       .def_ro("load_area", &ExactModel<double>::load_area);
 
   nb::class_<FractionalLaw<double>>(m, "FractionalLaw",

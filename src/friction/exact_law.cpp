@@ -298,7 +298,7 @@ void add_falling_table(const ExactModel<double>& model, const ExactLawOptions& o
   double err[kLawFunctions];
   std::fill(err, err + kLawFunctions, 1.0);
   const double per_function = options.tolerance / resultant_error_bound(err, model.kappa, k);
-  const double representation = model.representation_error * std::numbers::pi / law.load_area;
+  const double representation = model.representation_error() * std::numbers::pi / law.load_area;
   const double left =
       0.8 * options.tolerance * fs - f.kinetic_coefficient * law.achieved - fs * representation;
   const double budget =
@@ -371,7 +371,7 @@ ExactLaw make_exact_law(const ExactModel<double>& model, const ExactLawOptions& 
   law.reached = b.reached;
   law.samples = b.samples;
   if (model.slip_speed) add_falling_table(model, options, o, k, law);
-  law.achieved += model.representation_error * std::numbers::pi / law.load_area;
+  law.achieved += model.representation_error() * std::numbers::pi / law.load_area;
   law.reached = law.reached && law.achieved <= options.tolerance;
   return law;
 }

@@ -26,15 +26,16 @@ double power(double x, double d) {
 double profile_integral(const ExactModel<double>& m, const std::function<double(double)>& h,
                         double layer) {
   // Panels in x (x = rho, or theta with rho = sin(theta) for a Hertz edge), graded towards 0.
-  const double top = m.sqrt_edge ? 0.5 * kPi : 1.0;
+  const double top = m.sqrt_edge() ? 0.5 * kPi : 1.0;
   std::vector<double> cuts{0.0};
   for (double x = std::min(layer, top); x < top; x *= 2.0) cuts.push_back(x);
-  if (!m.piece.empty())
-    for (std::size_t k = 1; k + 1 < m.knot.size(); ++k) cuts.push_back(std::sqrt(m.knot[k]));
+  if (m.table())
+    for (std::size_t k = 1; k + 1 < m.table()->knot.size(); ++k)
+      cuts.push_back(std::sqrt(m.table()->knot[k]));
   cuts.push_back(top);
   std::sort(cuts.begin(), cuts.end());
   cuts.erase(std::unique(cuts.begin(), cuts.end()), cuts.end());
-  const int nodes = m.piece.empty() ? static_cast<int>(m.chebyshev.size()) + 16 : 8;
+  const int nodes = !m.table() ? static_cast<int>(m.chebyshev().size()) + 16 : 8;
   const GaussLegendreRule g = gauss_legendre(nodes);
   double sum = 0.0;
   for (std::size_t j = 0; j + 1 < cuts.size(); ++j) {
@@ -42,10 +43,10 @@ double profile_integral(const ExactModel<double>& m, const std::function<double(
     for (std::size_t i = 0; i < g.nodes.size(); ++i) {
       const double x = 0.5 * (a + b) + 0.5 * (b - a) * g.nodes[i];
       const double w = 0.5 * (b - a) * g.weights[i];
-      const double rho = m.sqrt_edge ? std::sin(x) : x;
-      const double jac = m.sqrt_edge ? std::cos(x) : 1.0;
+      const double rho = m.sqrt_edge() ? std::sin(x) : x;
+      const double jac = m.sqrt_edge() ? std::cos(x) : 1.0;
       double p = profile_at(m, rho * rho);
-      if (m.sqrt_edge) p *= std::sqrt(std::max(0.0, 1.0 - rho * rho));
+      if (m.sqrt_edge()) p *= std::sqrt(std::max(0.0, 1.0 - rho * rho));
       sum += w * jac * p * h(rho);
     }
   }
@@ -212,11 +213,11 @@ namespace {
 RingNode piece_ring_moments(const ExactModel<double>& unit, std::size_t k,
                             const GaussLegendreRule& g,
                             const std::vector<std::array<double, kRingTerms>>& T) {
-  RingNode node{std::sqrt(unit.knot[k]), std::sqrt(unit.knot[k + 1]), {}};
+  RingNode node{std::sqrt(unit.table()->knot[k]), std::sqrt(unit.table()->knot[k + 1]), {}};
   const double half = 0.5 * (node.b - node.a), mid = 0.5 * (node.a + node.b);
-  const std::array<double, 4>& c = unit.piece[k];
+  const std::array<double, 4>& c = unit.table()->piece[k];
   for (std::size_t i = 0; i < g.nodes.size(); ++i) {
-    const double rho = mid + half * g.nodes[i], s = rho * rho - unit.knot[k];
+    const double rho = mid + half * g.nodes[i], s = rho * rho - unit.table()->knot[k];
     const double w = half * g.weights[i] * rho * (c[0] + s * (c[1] + s * (c[2] + s * c[3])));
     for (int m = 0; m < kRingTerms; ++m) node.mu[m] += w * T[i][m];
   }
@@ -269,13 +270,13 @@ void add_ring_node(const RingTree& tree, const RingNode& node, int n, double e, 
 
 // Adds a piece's rings, split at the centre's ring if it crosses it (add_ring_interval).
 void add_piece_rings(const ExactModel<double>& unit, std::size_t k, double e, SlipMoments& out) {
-  const double a = std::sqrt(unit.knot[k]), b = std::sqrt(unit.knot[k + 1]);
+  const double a = std::sqrt(unit.table()->knot[k]), b = std::sqrt(unit.table()->knot[k + 1]);
   if (!(b > a)) return;
   if (e > a && e < b) {
-    add_ring_interval(unit.piece[k], unit.knot[k], a, e, e, out);
-    add_ring_interval(unit.piece[k], unit.knot[k], e, b, e, out);
+    add_ring_interval(unit.table()->piece[k], unit.table()->knot[k], a, e, e, out);
+    add_ring_interval(unit.table()->piece[k], unit.table()->knot[k], e, b, e, out);
   } else {
-    add_ring_interval(unit.piece[k], unit.knot[k], a, b, e, out);
+    add_ring_interval(unit.table()->piece[k], unit.table()->knot[k], a, b, e, out);
   }
 }
 
@@ -310,7 +311,7 @@ RingTree ring_tree(const ExactModel<double>& unit) {
     for (int m = 2; m < kRingTerms; ++m) T[i][m] = 2.0 * g.nodes[i] * T[i][m - 1] - T[i][m - 2];
   }
   tree.level.emplace_back();
-  for (std::size_t k = 0; k < unit.piece.size(); ++k)
+  for (std::size_t k = 0; k < unit.table()->piece.size(); ++k)
     tree.level[0].push_back(piece_ring_moments(unit, k, g, T));
   while (tree.level.back().size() > 1) {
     const std::vector<RingNode>& below = tree.level.back();
@@ -347,7 +348,7 @@ SlipMoments table_ring_moments(const RingTree& tree, const ExactModel<double>& u
 // At t = -1 the limits of exact_law.hpp (moments A^0, A^1, A^2 of the representation).
 ConstantSampler::ConstantSampler(const ExactModel<double>& model, double tolerance)
     : unit_(unit_model(model)),
-      rings_(unit_.piece.empty() ? RingTree{} : ring_tree(unit_)),
+      rings_(!unit_.table() ? RingTree{} : ring_tree(unit_)),
       tol_(tolerance) {
   const double A0 = profile_integral(unit_, [](double) { return 1.0; });
   const double A1 = profile_integral(unit_, [](double r) { return r; });
@@ -369,7 +370,7 @@ Resultants<double> ConstantSampler::probe(double kappa, double kx, double ky,
 void ConstantSampler::operator()(double t, double* g) const {
   const double sigma = 0.5 * (1.0 + t), eta = 0.5 * (1.0 - t), h = std::sqrt(0.5);
   // A table: its rings about O in closed form (away from the limits).
-  if (!unit_.piece.empty() && sigma > 0.0 && eta > 0.0) {
+  if (unit_.table() && sigma > 0.0 && eta > 0.0) {
     law_functions_from_moments(table_ring_moments(rings_, unit_, sigma / eta), sigma,
                                unit_.load_area, g);
     return;

@@ -28,8 +28,7 @@ void law_functions_from_moments(const SlipMoments& raw, double sigma, double loa
 //   mu_m = integral_a^b rho p(rho^2) T_m(u) d rho,  u = (2 rho - a - b) / (b - a),  m < 24,
 // built once a law in O(n) (exact_law_sampling.cpp): a sample's ring integrals (theory.md
 // section 2, the exact model in rings about O) then take O(log n) nodes of 8 to 24 ring
-// evaluations, instead of 6 to 16 on every piece (10^5 knots: 37 s for the law's 473 samples
-// piece by piece, 0.6 s on the tree).
+// evaluations, instead of 6 to 16 on every piece (docs/speed.md, "Dense tables").
 constexpr int kRingTerms = 24;
 struct RingNode {
   double a = 0.0, b = 0.0;              // its range of rho

@@ -8,6 +8,7 @@ set(contensou_friction_sources
   exact_law.cpp
   exact_law_jacobian.cpp
   exact_law_sampling.cpp
+  exact_model.cpp
   exact_resultants.cpp
   file_output.cpp
   fractional_law.cpp
@@ -17,4 +18,6 @@ set(contensou_friction_sources
   pressure_profile.cpp
   quadrature.cpp
   slip_speed_measure.cpp
+  slip_speed_rings.cpp
+  table_far_sums.cpp
   units.cpp)

@@ -1,4 +1,4 @@
-// One contact integrated by Moreau-Jean with the exact limit surface (issue 15, item 3):
+// One contact integrated by Moreau-Jean with the exact limit surface (limit_surface.hpp):
 // (a) stick without creep under a load inside the limit, beside the regularised law's creep
 // (oracle: its closed-form creep speed); (b) a load just outside starts the motion the
 // maximum-dissipation law gives (oracle: the implicit Euler equation with the exact resultants);

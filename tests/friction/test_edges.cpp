@@ -1,4 +1,4 @@
-// Issue 10, items 1 and 6: the rows a rig produces (pure spin, pure sliding, v = omega = 0,
+// The rows a rig produces (pure spin, pure sliding, v = omega = 0,
 // negative omega, any sliding direction) give finite values and finite, correct derivatives
 // through the exact integrals and the fractional law, for double and ceres::Jet (the fitted
 // model's paths: tests/identification/test_fit_edges.cpp). Derivatives are checked against central
@@ -146,10 +146,9 @@ TEST(ExactEdges, OmegaDerivativeAtPureSlideIsTheFirstOrder) {
   EXPECT_NEAR(rj.Fy.v[2], 0.14 / R * dmz, 1e-9 * std::abs(dmz) / R);
 }
 
-// Root cause: the first-order pure-slide form took over only at eps = |omega| R / |v| < 1e-3
-// tol; just above it the integrals about a centre 1/eps radii away lost their omega-derivatives
-// to cancellation (5 % off at eps = 2e-13, tolerance 1e-10), so a Jacobian jumped near pure
-// sliding. Now the switch is where the first order is within a tenth of the tolerance: the
+// The first-order pure-slide form takes over where the first order is within a tenth of the
+// tolerance (the integrals about a centre 1/eps radii away would lose their omega-derivatives
+// to cancellation, 5 % off at eps = 2e-13, tolerance 1e-10): the
 // Jacobian is continuous through it (the change over eps <= 1e-5 is O(eps) relative) and the
 // value stays within its error estimate on both sides; for the default and the associated
 // orthotropic law and a slip-speed law.

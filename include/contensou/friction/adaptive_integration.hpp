@@ -1,6 +1,7 @@
-// Global adaptive Gauss-Kronrod (G10K21) integration of a small vector of integrands over a
-// set of tagged intervals, with a fixed-capacity interval store on the stack (no heap
-// allocation; integrate_adaptive_batch_heap for a store too large for it).
+/// \file
+/// Global adaptive Gauss-Kronrod (G10K21) integration of a small vector of integrands over a
+/// set of tagged intervals, with a fixed-capacity interval store on the stack (no heap
+/// allocation; integrate_adaptive_batch_heap for a store too large for it).
 #pragma once
 
 #include <algorithm>
@@ -13,7 +14,7 @@
 
 namespace contensou::detail {
 
-// One sample of a vector integrand; inner_error carries the error of a nested integral.
+/// One sample of a vector integrand; inner_error carries the error of a nested integral.
 template <class T, int Dim>
 struct Sample {
   std::array<T, Dim> value{};
@@ -35,16 +36,16 @@ struct TaggedInterval {
   int tag;
 };
 
-// Largest number of nodes of a rule used here (G15K31).
+/// Largest number of nodes of a rule used here (G15K31).
 inline constexpr int kKronrodPoints = 31;
 
-// Where an interval is bisected: its midpoint (a table's outer rule splits at kinks instead).
+/// Where an interval is bisected: its midpoint (a table's outer rule splits at kinks instead).
 struct MidpointSplit {
   double operator()(double a, double b) const { return 0.5 * (a + b); }
 };
 
-// An interval of the adaptive rule with its estimate, and its place in the bisection order
-// (the largest error relative to the tolerance; a max-heap of these picks the next interval).
+/// An interval of the adaptive rule with its estimate, and its place in the bisection order
+/// (the largest error relative to the tolerance; a max-heap of these picks the next interval).
 template <class T, int Dim>
 struct AdaptivePiece {
   double a, b;
@@ -59,8 +60,8 @@ struct PieceRank {
   bool operator<(const PieceRank& o) const { return scaled < o.scaled; }
 };
 
-// The Kronrod rule on [a, b] with the error estimate of QUADPACK (kronrod_error), the nested
-// integrals' errors and a rounding term 4e-16 |value|.
+/// The Kronrod rule on [a, b] with the error estimate of QUADPACK (kronrod_error), the nested
+/// integrals' errors and a rounding term 4e-16 |value|.
 template <class T, int Dim, const auto& Rule, class F>
 AdaptivePiece<T, Dim> evaluate_piece(F& f, double a, double b, int tag, int& evaluations) {
   AdaptivePiece<T, Dim> p{a, b, tag, {}, {}};
@@ -111,7 +112,7 @@ AdaptivePiece<T, Dim> evaluate_piece(F& f, double a, double b, int tag, int& eva
   return p;
 }
 
-// Sums the pieces' values into out (in index order) and records their number.
+/// Sums the pieces' values into out (in index order) and records their number.
 template <class T, int Dim>
 AdaptiveResult<T, Dim> sum_pieces(AdaptiveResult<T, Dim>& out, const AdaptivePiece<T, Dim>* pieces,
                                   int n) {
@@ -122,10 +123,10 @@ AdaptiveResult<T, Dim> sum_pieces(AdaptiveResult<T, Dim>& out, const AdaptivePie
   return out;
 }
 
-// The adaptive loop over caller-provided storage for `capacity` pieces and ranks: bisects the
-// interval of largest scaled error (at split(a, b)) until every component's total error is
-// <= tolerance[c], the store is full, or an interval reaches machine resolution. The total is
-// kept by differences and summed afresh before it is trusted.
+/// The adaptive loop over caller-provided storage for `capacity` pieces and ranks: bisects the
+/// interval of largest scaled error (at split(a, b)) until every component's total error is
+/// <= tolerance[c], the store is full, or an interval reaches machine resolution. The total is
+/// kept by differences and summed afresh before it is trusted.
 template <class T, int Dim, const auto& Rule, class F, class Split>
 AdaptiveResult<T, Dim> adaptive_loop(F& f, const TaggedInterval* initial, int n_initial,
                                      const std::array<double, Dim>& tolerance, const Split& split,
@@ -180,11 +181,11 @@ AdaptiveResult<T, Dim> adaptive_loop(F& f, const TaggedInterval* initial, int n_
   return sum_pieces(out, pieces, n);
 }
 
-// Integrates a batch integrand f(const double* x, int n, int tag, Sample<T, Dim>* out), which
-// evaluates n <= 31 points at once, over the union of the given intervals until the estimated
-// absolute error of every component c is <= tolerance[c], bisecting the interval with the
-// largest scaled error at split(a, b) (the midpoint by default). Capacity bounds the number of
-// intervals kept (on the stack).
+/// Integrates a batch integrand f(const double* x, int n, int tag, Sample<T, Dim>* out), which
+/// evaluates n <= 31 points at once, over the union of the given intervals until the estimated
+/// absolute error of every component c is <= tolerance[c], bisecting the interval with the
+/// largest scaled error at split(a, b) (the midpoint by default). Capacity bounds the number of
+/// intervals kept (on the stack).
 template <class T, int Dim, int Capacity = 160, const auto& Rule = kGK21, class F,
           class Split = MidpointSplit>
 AdaptiveResult<T, Dim> integrate_adaptive_batch(F&& f, const TaggedInterval* initial, int n_initial,
@@ -196,8 +197,8 @@ AdaptiveResult<T, Dim> integrate_adaptive_batch(F&& f, const TaggedInterval* ini
                                      ranks.data(), Capacity);
 }
 
-// The same with the store on the heap, for `capacity` intervals: the one heap allocation of
-// the exact resultants, for a table whose kinks exhaust the stack store (exact_resultants.hpp).
+/// The same with the store on the heap, for `capacity` intervals: the one heap allocation of
+/// the exact resultants, for a table whose kinks exhaust the stack store (exact_resultants.hpp).
 template <class T, int Dim, const auto& Rule = kGK21, class F, class Split = MidpointSplit>
 AdaptiveResult<T, Dim> integrate_adaptive_batch_heap(F&& f, const TaggedInterval* initial,
                                                      int n_initial,
@@ -209,7 +210,7 @@ AdaptiveResult<T, Dim> integrate_adaptive_batch_heap(F&& f, const TaggedInterval
                                      ranks.get(), capacity);
 }
 
-// The same for a point integrand f(double x, int tag) -> Sample<T, Dim>.
+/// The same for a point integrand f(double x, int tag) -> Sample<T, Dim>.
 template <class T, int Dim, int Capacity = 160, const auto& Rule = kGK21, class F>
 AdaptiveResult<T, Dim> integrate_adaptive(F&& f, const TaggedInterval* initial, int n_initial,
                                           const std::array<double, Dim>& tolerance) {

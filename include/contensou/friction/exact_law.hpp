@@ -1,34 +1,9 @@
-// The exact law: the exact resultants of a patch (theory.md section 2) from tables built once
-// per pressure profile, at the cost of a closed-form law, with a certified error and the
-// Jacobian.
-//
-// Why tables suffice. The resultants are linear in the pressure, hence in (1, kx, ky), and the
-// default orthotropic law tau = -sigma f D vc/|vc|, D = diag(1, kappa), is D times the isotropic
-// one. In the frame of the sliding direction e = v/|v| (n = z x e, s = sign(omega)) the
-// isotropic integrals of an axisymmetric profile depend on eps = |v|/(|omega| R) only, and the
-// symmetries of theory.md section 2 (x -> -x with time reversal; y -> -y with omega -> -omega)
-// leave six functions of eps (R = 1, p* = 1, f = 1, u_hat = vc/|vc|, integrals over the disk):
-//   A = integral p u_x,  a = integral p x u_y,  b = integral p y u_x   (a, b odd in omega)
-//   alpha = integral p x^2 u_x,  c = integral p x y u_y,  d = integral p y^2 u_x.
-// Then, with N = 2 pi R^2 p* A^1 the load, k_par = k.e, k_perp = k.n (k = (kx, ky)):
-//   F  = -f N D [A e + s (a (z x k) + (a + b) k_perp e)] / L
-//   Mz = -f N R [s (a (1 + kappa) - (a + b) e'De) + (1 + kappa)/2 (c - d) k_perp
-//                + (kappa - 1) ((alpha - c) e_x e_y k_par + (c + d)/2 (e_x^2 - e_y^2) k_perp)] / L
-// with L = 2 pi A^1 (the same formulas as exact_resultants at eps -> 0 and eps -> infinity:
-// pure spin, Mz = -s M0 (1 + kappa)/2, F = s (M0/2R) D (z x k); pure sliding, F = -f N D e).
-// Every profile, shift and kappa therefore shares one table of six functions of one variable,
-//   t = (|v| - |omega| R) / (|v| + |omega| R) in [-1, 1]   (t = 0: the centre of sliding on the
-//   rim),
-// tabulated as A/sigma, a, (a + b)/sigma, (alpha - c)/sigma, (c - d)/sigma, (c + d)/sigma
-// (sigma = |v|/(|v| + |omega| R), all divided by L), which are bounded and make the law smooth in v
-// at v = 0. Their values at t = -1 (pure spin) are closed forms of the moments A^n (theory.md
-// section 4), from the first-order turn of the slip direction about a centre of sliding r_c near
-// O, u_hat = u_hat_0 + eps cos(theta) r_hat / rho: A/sigma -> A^0/(2 A^1), a -> A^2/(2 A^1),
-// (alpha - c)/sigma and (c + d)/sigma -> A^2/(4 A^1), (a + b)/sigma and (c - d)/sigma -> 0.
-// The table is piecewise Chebyshev (piecewise_chebyshev.hpp), graded towards t = 0 where the
-// functions have an x log|x| singularity, and checked between its nodes against the adaptive
-// integrator (exact_resultants.hpp): `achieved` is the largest error found, as a bound on the
-// resultants relative to f N and f N R for the model's own kappa and shift.
+/// \file
+/// The exact law: the exact resultants of a patch (theory.md §2) from tables of six functions of
+/// t = (|v| - |omega| R) / (|v| + |omega| R), built once per pressure profile (make_exact_law),
+/// evaluated at the cost of a closed-form law (exact_law_resultants) with the Jacobian and a
+/// certified error bound (`achieved`, relative to f N and f N R). The derivation of the six
+/// functions and of the resultants from them: docs/theory.md §7.4.
 #pragma once
 
 #include <Eigen/Core>
@@ -48,89 +23,96 @@
 
 namespace contensou {
 
+/// How make_exact_law builds the law.
 struct ExactLawOptions {
-  // Requested accuracy of the resultants, relative to f N (forces) and f N R (torque), for the
-  // model's own kappa and shift; in (1e-14, 1e-2).
+  /// Requested accuracy of the resultants, relative to f N (forces) and f N R (torque), for the
+  /// model's own kappa and shift; in (1e-14, 1e-2).
   double tolerance = 1e-8;
-  int degree = 12;         // of the Chebyshev pieces in t (8, 10, 12, 14 or 16)
-  int falling_degree = 8;  // the same for the falling part of a slip-speed law
-  unsigned threads = 0;    // of the build (0: one a core); the law is the same for any number
-  StopRequest stop{};      // polled before every sample: Interrupted when it returns true
+  int degree = 12;         ///< of the Chebyshev pieces in t (8, 10, 12, 14 or 16)
+  int falling_degree = 8;  ///< the same for the falling part of a slip-speed law
+  unsigned threads = 0;    ///< of the build (0: one a core); the law is the same for any number
+  StopRequest stop{};      ///< polled before every sample: Interrupted when it returns true
 };
 
-// The table functions (exact_law.hpp header), in this order.
+/// The table functions (exact_law.hpp header), in this order.
 enum ExactLawFunction : int {
-  kLawSlide,       // A / (sigma L)
-  kLawSpin,        // a / L
-  kLawSpinSum,     // (a + b) / (sigma L)
-  kLawShiftCross,  // (alpha - c) / (sigma L)
-  kLawShiftDiff,   // (c - d) / (sigma L)
-  kLawShiftSum,    // (c + d) / (sigma L)
-  kLawFunctions
+  kLawSlide,       ///< A / (sigma L)
+  kLawSpin,        ///< a / L
+  kLawSpinSum,     ///< (a + b) / (sigma L)
+  kLawShiftCross,  ///< (alpha - c) / (sigma L)
+  kLawShiftDiff,   ///< (c - d) / (sigma L)
+  kLawShiftSum,    ///< (c + d) / (sigma L)
+  kLawFunctions    ///< their number
 };
 
-// What the table leaves free: the patch's scale and the parameters that enter the resultants
-// algebraically. T = double, or an automatic-differentiation type (ceres::Jet).
+/// What the table leaves free: the patch's scale and the parameters that enter the resultants
+/// algebraically. T = double, or an automatic-differentiation type (ceres::Jet).
 template <class T = double>
 struct ExactLawParameters {
-  T pressure{0};   // p* [Pa]
-  T friction{0};   // f (unused if slip_speed is set)
-  T kappa{1};      // lateral / longitudinal friction ratio
-  T kx{0}, ky{0};  // pressure shift (relative to the law's radius)
-  // f(w) = f_k + (f_s - f_k) exp(-(w / w_s)^delta) inside the integrals; delta must be the
-  // exponent the law's table was built for.
+  T pressure{0};  ///< p* [Pa]
+  T friction{0};  ///< f (unused if slip_speed is set)
+  T kappa{1};     ///< lateral / longitudinal friction ratio
+  T kx{0};        ///< pressure shift along x (relative to the law's radius)
+  T ky{0};        ///< pressure shift along y (relative to the law's radius)
+  /// f(w) = f_k + (f_s - f_k) exp(-(w / w_s)^delta) inside the integrals; delta must be the
+  /// exponent the law's table was built for.
   std::optional<SlipSpeedFriction<T>> slip_speed;
 };
 
-// The falling part g(w) = exp(-(w / w_s)^delta) of a slip-speed law: the six functions of
-// (t, z), z = (q)^delta, q = (|v| + |omega| R) / w_s, the speed in units of w_s. One table in t per
-// octave of 1 + z (1 + z in [2^j, 2^(j+1))), Chebyshev of degree degree_z in x = 2 (1 + z) / 2^j -
-// 3 within it: the 6 (degree_z + 1) "functions" of octave j are the coefficients c[k][i] of T_k(x).
-// Beyond the last octave the functions are taken as 0 (tail bounds them there). All octaves
-// share the pieces in t (`pieces`: breaks, map, index, no coefficients); each (octave, piece)
-// has a block of 6 (degree_z + 1) (degree + 1) coefficients in `coefficients`, at offset
-// block[octave * pieces + piece]. Block 0 is all zeros: the (octave, piece) pairs whose functions
-// are below a small share of the tolerance there (large z far from t = 0, where exp(-z nu) is
-// negligible) share it (the bound of what they drop is in the build's `achieved`).
+/// The default degree in z of the falling part's table (SlipSpeedTable::degree_z).
 inline constexpr int kSlipDegreeZ = 8;
-inline constexpr int kSlipOctaves = 1;  // octaves of 1 + z a piece
+inline constexpr int kSlipOctaves = 1;  ///< octaves of 1 + z a piece
+/// The falling part g(w) = exp(-(w / w_s)^delta) of a slip-speed law: the six functions of
+/// (t, z), z = (q)^delta, q = (|v| + |omega| R) / w_s, the speed in units of w_s. One table in t
+/// per octave of 1 + z (1 + z in [2^j, 2^(j+1))), Chebyshev of degree degree_z in x = 2 (1 + z) /
+/// 2^j - 3 within it: the 6 (degree_z + 1) "functions" of octave j are the coefficients c[k][i] of
+/// T_k(x). Beyond the last octave the functions are taken as 0 (tail bounds them there). All
+/// octaves share the pieces in t (`pieces`: breaks, map, index, no coefficients); each (octave,
+/// piece) has a block of 6 (degree_z + 1) (degree + 1) coefficients in `coefficients`, at offset
+/// block[octave * pieces + piece]. Block 0 is all zeros: the (octave, piece) pairs whose functions
+/// are below a small share of the tolerance there (large z far from t = 0, where exp(-z nu) is
+/// negligible) share it (the bound of what they drop is in the build's `achieved`).
 struct SlipSpeedTable {
-  double exponent = 1.0;  // delta
-  int degree_z = kSlipDegreeZ;
-  double tail = 0.0;  // largest |function| found at the top of the last octave
-  int octaves = 0;
-  PiecewiseChebyshev pieces;  // the pieces in t (functions = 6 (degree_z + 1), no coefficients)
-  std::vector<std::uint32_t> block;  // [octave][piece]: offset in coefficients
-  std::vector<double> coefficients;  // the blocks, [k_t][k_z][function] within one
+  double exponent = 1.0;        ///< delta
+  int degree_z = kSlipDegreeZ;  ///< the Chebyshev degree in an octave's variable
+  double tail = 0.0;            ///< largest |function| found at the top of the last octave
+  int octaves = 0;              ///< octaves of 1 + z tabulated
+  PiecewiseChebyshev pieces;    ///< the pieces in t (functions = 6 (degree_z + 1), no coefficients)
+  std::vector<std::uint32_t> block;  ///< [octave][piece]: offset in coefficients
+  std::vector<double> coefficients;  ///< the blocks, [k_t][k_z][function] within one
+  /// The table's memory [bytes].
   std::size_t bytes() const {
     return pieces.bytes() + coefficients.size() * sizeof(double) +
            block.size() * sizeof(std::uint32_t);
   }
 };
 
+/// The exact law of a model: the tables of six functions of t (theory.md §2; docs/theory.md
+/// §7.4), built by make_exact_law, evaluated by exact_law_resultants.
 struct ExactLaw {
-  double radius = 0.0;                    // R [m] (the model's integration radius)
-  double load_area = 0.0;                 // L = N / (p* R^2) = 2 pi A^1
-  ExactLawParameters<double> parameters;  // those of the model it was built from
-  PiecewiseChebyshev table;               // the six functions of t, constant friction
-  std::optional<SlipSpeedTable> falling;  // the falling part of a slip-speed law
-  double tolerance = 0.0;                 // requested
-  double achieved = 0.0;  // bound on the error found between the nodes (relative, see above)
-  bool reached = true;    // achieved <= tolerance
-  int samples = 0;        // adaptive-integrator calls of the build (each five integrals)
+  double radius = 0.0;                    ///< R [m] (the model's integration radius)
+  double load_area = 0.0;                 ///< L = N / (p* R^2) = 2 pi A^1
+  ExactLawParameters<double> parameters;  ///< those of the model it was built from
+  PiecewiseChebyshev table;               ///< the six functions of t, constant friction
+  std::optional<SlipSpeedTable> falling;  ///< the falling part of a slip-speed law
+  double tolerance = 0.0;                 ///< requested
+  double achieved = 0.0;  ///< bound on the error found between the nodes (relative, see above)
+  bool reached = true;    ///< achieved <= tolerance
+  int samples = 0;        ///< adaptive-integrator calls of the build (each five integrals)
+  /// The law's memory [bytes].
   std::size_t bytes() const { return table.bytes() + (falling ? falling->bytes() : 0); }
 };
 
-// Builds the law of a model (the associated orthotropic law only for kappa = 1). A slip-speed
-// law adds the table of its falling part for its exponent delta. Throws InvalidArgument for a
-// tolerance outside (1e-14, 1e-2), a degree outside [4, 32], or a model the table cannot
-// represent.
+/// Builds the law of a model (the associated orthotropic law only for kappa = 1). A slip-speed
+/// law adds the table of its falling part for its exponent delta. Throws InvalidArgument for a
+/// tolerance outside (1e-14, 1e-2), a degree outside [4, 32], or a model the table cannot
+/// represent.
 ExactLaw make_exact_law(const ExactModel<double>& model, const ExactLawOptions& options = {});
 
 namespace detail {
 
-// Chain rule through a table: value v and slope dv/dt at value_of(t), as a T that carries t's
-// derivatives (for double, just v).
+/// Chain rule through a table: value v and slope dv/dt at value_of(t), as a T that carries t's
+/// derivatives (for double, just v).
 template <class T>
 T lift(double v, double slope, const T& t) {
   if constexpr (std::is_arithmetic_v<T>) {
@@ -142,7 +124,7 @@ T lift(double v, double slope, const T& t) {
   }
 }
 
-// The six table functions at t, lifted to T.
+/// The six table functions at t, lifted to T.
 template <class T>
 void law_functions(const PiecewiseChebyshev& table, const T& t, T* g) {
   if constexpr (std::is_arithmetic_v<T>) {
@@ -154,11 +136,11 @@ void law_functions(const PiecewiseChebyshev& table, const T& t, T* g) {
   }
 }
 
-// The piece j of a = 1 + z (a in [2^(jW), 2^((j+1)W)), W = kSlipOctaves, z >= 0) and its local
-// variable, the Moebius map x = (a - c) / (a + c) / x_max with c = 2^(jW + W/2) (the geometric
-// mean of the ends), which maps the half plane Re a > 0, where the functions are bounded, onto
-// a disk: the Chebyshev series converge like (x_max / (1 + sqrt(1 - x_max^2)))^n. From the bits
-// of the double; -1 beyond the table.
+/// The piece j of a = 1 + z (a in [2^(jW), 2^((j+1)W)), W = kSlipOctaves, z >= 0) and its local
+/// variable, the Moebius map x = (a - c) / (a + c) / x_max with c = 2^(jW + W/2) (the geometric
+/// mean of the ends), which maps the half plane Re a > 0, where the functions are bounded, onto
+/// a disk: the Chebyshev series converge like (x_max / (1 + sqrt(1 - x_max^2)))^n. From the bits
+/// of the double; -1 beyond the table.
 inline int octave_of(const SlipSpeedTable& s, double z, double& x, double& dxdz) {
   constexpr int W = kSlipOctaves;
   constexpr double r = W == 1 ? 1.4142135623730951 : (W == 2 ? 2.0 : 2.8284271247461903);
@@ -175,7 +157,7 @@ inline int octave_of(const SlipSpeedTable& s, double z, double& x, double& dxdz)
   return j;
 }
 
-// The points a = 1 + z of piece j at local variables x (the inverse of octave_of's map).
+/// The points a = 1 + z of piece j at local variables x (the inverse of octave_of's map).
 inline double octave_point(int j, double x) {
   constexpr int W = kSlipOctaves;
   constexpr double r = W == 1 ? 1.4142135623730951 : (W == 2 ? 2.0 : 2.8284271247461903);
@@ -184,22 +166,22 @@ inline double octave_point(int j, double x) {
   return c * (1.0 + u) / (1.0 - u);
 }
 
-// The falling part's six functions with their derivatives in t and z from the coefficients c of
-// a piece (t at x on it, x' = dx/dt; z at xz in its octave, xz' = dxz/dz), in one kernel where
-// the CPU's instruction set has one (AVX2 without AVX-512; chebyshev_kernels.cpp), else null.
+/// The falling part's six functions with their derivatives in t and z from the coefficients c of
+/// a piece (t at x on it, x' = dx/dt; z at xz in its octave, xz' = dxz/dz), in one kernel where
+/// the CPU's instruction set has one (AVX2 without AVX-512; chebyshev_kernels.cpp), else null.
 using SlipSpeedKernel = void (*)(const double* c, double x, double dxdt, double xz, double dxzdz,
                                  double* g, double* gt, double* gz);
 SlipSpeedKernel slip_speed_kernel(int degree);
 
-// The coefficients of the falling part's piece holding t in octave j, with the local variable
-// x of t on the piece and dx/dt.
+/// The coefficients of the falling part's piece holding t in octave j, with the local variable
+/// x of t on the piece and dx/dt.
 inline const double* falling_block(const SlipSpeedTable& s, int j, double t, double& x,
                                    double& dxdt) {
   const int k = locate_piece_index(s.pieces, t, x, dxdt);
   return s.coefficients.data() + s.block[static_cast<std::size_t>(j) * s.pieces.pieces() + k];
 }
 
-// The falling part's six functions at (t, z) and, if Slope, their derivatives in t and z.
+/// The falling part's six functions at (t, z) and, if Slope, their derivatives in t and z.
 template <bool Slope>
 void falling_values(const SlipSpeedTable& s, double t, double z, double* g, double* gt,
                     double* gz) {
@@ -233,8 +215,8 @@ void falling_values(const SlipSpeedTable& s, double t, double z, double* g, doub
     }
 }
 
-// G_i = f g_i (constant friction), or f_k g_i(t) + (f_s - f_k) h_i(t, z) with z = (S / w_s)^delta
-// (S = |v| + |omega| R [m/s]), as the product type R of the parameters P and kinematics K.
+/// G_i = f g_i (constant friction), or f_k g_i(t) + (f_s - f_k) h_i(t, z) with z = (S / w_s)^delta
+/// (S = |v| + |omega| R [m/s]), as the product type R of the parameters P and kinematics K.
 template <class R, class P, class K>
 void friction_functions(const ExactLaw& law, const ExactLawParameters<P>& p, const K& t,
                         const K& speed, R* G) {
@@ -271,12 +253,12 @@ void friction_functions(const ExactLaw& law, const ExactLawParameters<P>& p, con
 
 }  // namespace detail
 
-// Fx, Fy, Mz of the law at kinematics k with parameters p (exact_law.hpp header). Zero at
-// v = omega = 0 (Coulomb friction is set-valued there; 0 is in the set), and below 1e-290 m/s.
-// Throws InvalidArgument for non-finite kinematics. The parameters and the kinematics may have
-// different scalar types (double parameters with differentiated kinematics for a Jacobian;
-// differentiated parameters with measured kinematics in a fit); the result has the type of their
-// product.
+/// Fx, Fy, Mz of the law at kinematics k with parameters p (exact_law.hpp header). Zero at
+/// v = omega = 0 (Coulomb friction is set-valued there; 0 is in the set), and below 1e-290 m/s.
+/// Throws InvalidArgument for non-finite kinematics. The parameters and the kinematics may have
+/// different scalar types (double parameters with differentiated kinematics for a Jacobian;
+/// differentiated parameters with measured kinematics in a fit); the result has the type of their
+/// product.
 template <class P, class K>
 auto exact_law_resultants(const ExactLaw& law, const ExactLawParameters<P>& p,
                           const Kinematics<K>& k) {
@@ -326,8 +308,8 @@ auto exact_law_resultants(const ExactLaw& law, const ExactLawParameters<P>& p,
   //   Mz = -p* R^3 L [s (a (1 + kappa) - (a + b)/sigma xi'D e) + (1 + kappa)/2 (c - d)/sigma
   //        (ky xi_x - kx xi_y) + (kappa - 1)/2 ((alpha - c)/sigma (kx xi_y + ky xi_x)
   //        + ((c + d) - (alpha - c))/sigma (xi_x e_x - xi_y e_y) k_perp)]
-  // (the kappa - 1 terms of the header combined: e_x e_y k_par + (e_x^2 - e_y^2) k_perp / 2 =
-  // (kx e_y + ky e_x) / 2).
+  // (the kappa - 1 terms of docs/theory.md §7.4 combined: e_x e_y k_par + (e_x^2 - e_y^2) k_perp /
+  // 2 = (kx e_y + ky e_x) / 2).
   const R spin_torque =
       spin * (1.0 + p.kappa) - sgn * G[kLawSpinSum] * (xi_x * ex + p.kappa * (xi_y * ey));
   const R shift_torque =
@@ -339,20 +321,22 @@ auto exact_law_resultants(const ExactLaw& law, const ExactLawParameters<P>& p,
   return r;
 }
 
-// The law at the parameters of the model it was built from.
+/// The law at the parameters of the model it was built from.
 inline Resultants<double> exact_law_resultants(const ExactLaw& law, const Kinematics<double>& k) {
   return exact_law_resultants(law, law.parameters, k);
 }
 
-// The law and its Jacobian d(Fx, Fy, Mz)/d(vx, vy, omega), the exact derivative of the
-// interpolant (continuous, finite at every finite input; at v = 0 and omega = 0 the limits).
+/// The law and its Jacobian d(Fx, Fy, Mz)/d(vx, vy, omega), the exact derivative of the
+/// interpolant (continuous, finite at every finite input; at v = 0 and omega = 0 the limits).
 struct ExactLawWithJacobian {
-  Resultants<double> resultants;
-  Eigen::Matrix3d jacobian;  // rows Fx, Fy, Mz; columns vx, vy, omega
+  Resultants<double> resultants;  ///< Fx, Fy, Mz [N, N, N m]
+  Eigen::Matrix3d jacobian;       ///< rows Fx, Fy, Mz; columns vx, vy, omega
 };
+/// The law and its Jacobian at the parameters of the model it was built from. Throws
+/// InvalidArgument for non-finite velocities.
 ExactLawWithJacobian exact_law_resultants_with_jacobian(const ExactLaw& law,
                                                         const Kinematics<double>& k);
-// The same at other parameters (exact_law_resultants).
+/// The same at other parameters (exact_law_resultants).
 ExactLawWithJacobian exact_law_resultants_with_jacobian(const ExactLaw& law,
                                                         const ExactLawParameters<double>& p,
                                                         const Kinematics<double>& k);

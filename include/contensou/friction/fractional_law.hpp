@@ -1,26 +1,28 @@
-// Fractional (Pade-type) laws of coupled dry friction (seed eqs. 5-7, 13; theory.md section 4),
-// in vector form for any sliding direction, with analytic Jacobians.
-//
-// With u = omega R, v = |v|, eps the regularisation speed and k = (kx, ky):
-//   F  = -F0 (vx, kappa vy) / S_a                                   S_a = sqrt(v^2 + a u^2 + eps^2)
-//        -(M0 / 2R) [ g2 (z x k) + (g1 - g2) (k.v)(z x v) / v^2 ]
-//   Mz = -M0 (1 + kappa)/2 u / S_m + Mk (vx ky - kappa vy kx) v^2 / S_k^3
-//   g1 = u / sqrt(s0 + m v^2 / 4),  g2 = u s0 / (s0 + c v^2)^(3/2),  s0 = u^2 + eps^2,
-//   S_m = sqrt(u^2 + m v^2 + eps^2),  S_k = sqrt(v^2 + a_k u^2 + eps^2).
-// g1 = g2 at v = 0, so (g1 - g2)/v^2 is smooth there: it is evaluated without cancellation as
-//   (g1 - g2)/v^2 = u P / (S1 S2^3 (S2^3 + s0 S1)),  P = s0^2 (3c - m/4) + 3 s0 c^2 v^2 + c^3 v^4
-// (S1, S2 the two roots above), and the law is smooth through v = 0 for every direction of v.
-// For sliding along x with the shift along x this is the seed's law (5) exactly:
-//   F_par = F0 v / sqrt(v^2 + a u^2),  Fy = -kx M0 u / (2R sqrt(u^2 + m v^2/4)),
-//   Mz = -M0 u / sqrt(u^2 + m v^2).
-// The shift across the sliding direction (k_perp = k . (z x v)/v) adds two terms the seed does
-// not have: a force along v that is sign(omega) (M0/2R) k_perp at pure spin and decays like
-// (u/v)^3 (shape c), and the pure-sliding torque Mk k_perp, Mk = pi f R^3 p* A^3, which the
-// exact integrals show to vanish like (v/u)^3 at small sliding (shape a_k; 1 for uniform pressure).
-// Every term is bounded, and the law is smooth for eps > 0: no NaN or Inf for finite input.
-// Evaluation checks the law's fields and the velocities (InvalidArgument naming the first bad
-// one): a NaN velocity, kappa < 0 (friction that generates energy), a <= 0 or eps = 0 never
-// give a silent NaN.
+/// \file
+/// Fractional (Pade-type) laws of coupled dry friction (seed eqs. 5-7, 13; theory.md section 4),
+/// in vector form for any sliding direction, with analytic Jacobians.
+///
+/// With u = omega R, v = |v|, eps the regularisation speed and k = (kx, ky):
+///   F  = -F0 (vx, kappa vy) / S_a                                   S_a = sqrt(v^2 + a u^2 +
+///   eps^2)
+///        -(M0 / 2R) [ g2 (z x k) + (g1 - g2) (k.v)(z x v) / v^2 ]
+///   Mz = -M0 (1 + kappa)/2 u / S_m + Mk (vx ky - kappa vy kx) v^2 / S_k^3
+///   g1 = u / sqrt(s0 + m v^2 / 4),  g2 = u s0 / (s0 + c v^2)^(3/2),  s0 = u^2 + eps^2,
+///   S_m = sqrt(u^2 + m v^2 + eps^2),  S_k = sqrt(v^2 + a_k u^2 + eps^2).
+/// g1 = g2 at v = 0, so (g1 - g2)/v^2 is smooth there: it is evaluated without cancellation as
+///   (g1 - g2)/v^2 = u P / (S1 S2^3 (S2^3 + s0 S1)),  P = s0^2 (3c - m/4) + 3 s0 c^2 v^2 + c^3 v^4
+/// (S1, S2 the two roots above), and the law is smooth through v = 0 for every direction of v.
+/// For sliding along x with the shift along x this is the seed's law (5) exactly:
+///   F_par = F0 v / sqrt(v^2 + a u^2),  Fy = -kx M0 u / (2R sqrt(u^2 + m v^2/4)),
+///   Mz = -M0 u / sqrt(u^2 + m v^2).
+/// The shift across the sliding direction (k_perp = k . (z x v)/v) adds two terms the seed does
+/// not have: a force along v that is sign(omega) (M0/2R) k_perp at pure spin and decays like
+/// (u/v)^3 (shape c), and the pure-sliding torque Mk k_perp, Mk = pi f R^3 p* A^3, which the
+/// exact integrals show to vanish like (v/u)^3 at small sliding (shape a_k; 1 for uniform
+/// pressure). Every term is bounded, and the law is smooth for eps > 0: no NaN or Inf for finite
+/// input. Evaluation checks the law's fields and the velocities (InvalidArgument naming the first
+/// bad one): a NaN velocity, kappa < 0 (friction that generates energy), a <= 0 or eps = 0 never
+/// give a silent NaN.
 #pragma once
 
 #include <Eigen/Core>
@@ -35,37 +37,40 @@
 
 namespace contensou {
 
+/// The parameters of the fractional law (seed eqs. 5-7; theory.md §4), usually from a patch
+/// (fractional_law_from_patch). T = double, or ceres::Jet for fits.
 template <class T = double>
 struct FractionalLaw {
-  T F0{0};              // sliding force scale f N [N]
-  T M0{0};              // spin torque scale 2 pi f R^3 p* A^2 [N m]
-  T a{1};               // sliding shape (2 A^1/A^0)^2
-  T m{64.0 / 9.0};      // spin shape (2 A^2/A^3)^2
-  T kx{0}, ky{0};       // pressure shift (seed eq. 9)
-  T kappa{1};           // lateral / longitudinal friction ratio
-  T c{4};               // shape of the cross-shift force, (4 A^2/A^5)^(2/3)
-  T Mk{0};              // cross-shift sliding torque pi f R^3 p* A^3 [N m]
-  T a_k{1};             // shape of the cross-shift torque (exact small-sliding asymptote)
-  double radius = 0.1;  // R [m]
-  double regularization_speed = 1e-4;  // eps [m/s]
+  T F0{0};              ///< sliding force scale f N [N]
+  T M0{0};              ///< spin torque scale 2 pi f R^3 p* A^2 [N m]
+  T a{1};               ///< sliding shape (2 A^1/A^0)^2
+  T m{64.0 / 9.0};      ///< spin shape (2 A^2/A^3)^2
+  T kx{0};              ///< pressure shift along x (seed eq. 9)
+  T ky{0};              ///< pressure shift along y (seed eq. 9)
+  T kappa{1};           ///< lateral / longitudinal friction ratio
+  T c{4};               ///< shape of the cross-shift force, (4 A^2/A^5)^(2/3)
+  T Mk{0};              ///< cross-shift sliding torque pi f R^3 p* A^3 [N m]
+  T a_k{1};             ///< shape of the cross-shift torque (exact small-sliding asymptote)
+  double radius = 0.1;  ///< R [m]
+  double regularization_speed = 1e-4;  ///< eps [m/s]
 };
 
-// Asymptote-matched coefficients from a patch (theory.md section 4): a, m, c from the
-// moments A^n; a_k from the exact integrals' small-sliding asymptote.
+/// Asymptote-matched coefficients from a patch (theory.md section 4): a, m, c from the
+/// moments A^n; a_k from the exact integrals' small-sliding asymptote.
 FractionalLaw<double> fractional_law_from_patch(const ContactPatch& patch);
 
-// a and m (and c, a_k when the patch has a shift) fitted by least squares to the exact
-// integrals over psi = v/u in [psi_min, psi_max] (log-spaced, n points), sliding along x.
+/// a and m (and c, a_k when the patch has a shift) fitted by least squares to the exact
+/// integrals over psi = v/u in [psi_min, psi_max] (log-spaced, n points), sliding along x.
 FractionalLaw<double> fractional_law_fitted(const ContactPatch& patch, double psi_min = 1e-2,
                                             double psi_max = 1e2, int n = 41);
 
-// Throws InvalidArgument naming the first bad parameter; also a pressure shift |(kx, ky)| >= 1,
-// under which the pressure would be negative on part of the patch (evaluation itself, used
-// inside fits, checks the rest only).
+/// Throws InvalidArgument naming the first bad parameter; also a pressure shift |(kx, ky)| >= 1,
+/// under which the pressure would be negative on part of the patch (evaluation itself, used
+/// inside fits, checks the rest only).
 void validate(const FractionalLaw<double>& law);
 
 namespace detail {
-// The checks of validate(), on the values of any scalar (double or ceres::Jet).
+/// The checks of validate(), on the values of any scalar (double or ceres::Jet).
 template <class T>
 void check_law(const FractionalLaw<T>& p) {
   require_non_negative("F0", value_of(p.F0));
@@ -100,8 +105,8 @@ void check_law(const FractionalLaw<T>& p) {
                           "radius, or use larger units (kN, kN m)");
 }
 
-// The kinematics finite, and the rim speed omega R a double (omega = 1e300 on R = 1e10 is
-// refused, not NaN).
+/// The kinematics finite, and the rim speed omega R a double (omega = 1e300 on R = 1e10 is
+/// refused, not NaN).
 inline void check_kinematics(double vx, double vy, double omega, double radius) {
   require_finite("vx", vx);
   require_finite("vy", vy);
@@ -113,8 +118,8 @@ inline void check_kinematics(double vx, double vy, double omega, double radius) 
 }
 }  // namespace detail
 
-// Every term is homogeneous of degree 0 in (v, u, eps): the law is evaluated on velocities
-// divided by s = max(|vx|, |vy|, |u|, eps), which keeps squares finite for any finite input.
+/// Every term is homogeneous of degree 0 in (v, u, eps): the law is evaluated on velocities
+/// divided by s = max(|vx|, |vy|, |u|, eps), which keeps squares finite for any finite input.
 template <class T>
 Resultants<T> fractional_resultants(const FractionalLaw<T>& p, const Kinematics<T>& k0) {
   using std::sqrt;
@@ -150,11 +155,12 @@ Resultants<T> fractional_resultants(const FractionalLaw<T>& p, const Kinematics<
   return r;
 }
 
-// The law and its Jacobian d(Fx, Fy, Mz)/d(vx, vy, omega), analytic.
+/// The law and its Jacobian d(Fx, Fy, Mz)/d(vx, vy, omega), analytic.
 struct FractionalWithJacobian {
-  Resultants<double> resultants;
-  Eigen::Matrix3d jacobian;  // rows Fx, Fy, Mz; columns vx, vy, omega
+  Resultants<double> resultants;  ///< Fx, Fy, Mz [N, N, N m]
+  Eigen::Matrix3d jacobian;       ///< rows Fx, Fy, Mz; columns vx, vy, omega
 };
+/// The fractional law and its analytic Jacobian at k (fractional_resultants' contract).
 FractionalWithJacobian fractional_resultants_with_jacobian(const FractionalLaw<double>& p,
                                                            const Kinematics<double>& k);
 

@@ -1,4 +1,5 @@
-// Quadrature rules: Gauss-Legendre nodes of any order and the Gauss-Kronrod G10K21 pair.
+/// \file
+/// Quadrature rules: Gauss-Legendre nodes of any order and the Gauss-Kronrod G10K21 pair.
 #pragma once
 
 #include <algorithm>
@@ -9,26 +10,27 @@
 
 namespace contensou {
 
-// A Gauss-Legendre rule on [-1, 1].
+/// A Gauss-Legendre rule on [-1, 1].
 struct GaussLegendreRule {
-  std::vector<double> nodes;
-  std::vector<double> weights;
+  std::vector<double> nodes;    ///< in [-1, 1], ascending
+  std::vector<double> weights;  ///< summing to 2
 };
 
-// n-point Gauss-Legendre rule (exact for polynomials of degree 2n-1), computed by Newton's
-// method on the three-term recurrence of P_n; accurate to a few ulp for n <= 1000.
+/// n-point Gauss-Legendre rule (exact for polynomials of degree 2n-1), computed by Newton's
+/// method on the three-term recurrence of P_n; accurate to a few ulp for n <= 1000. Throws
+/// InvalidArgument for n outside [1, 1000].
 GaussLegendreRule gauss_legendre(int n);
 
 namespace detail {
 
 struct KronrodNode {
-  double x;        // node in [0, 1]
-  double kronrod;  // weight in the 21-point Kronrod rule
-  double gauss;    // weight in the embedded 10-point Gauss rule (0 if Kronrod-only)
+  double x;        ///< node in [0, 1]
+  double kronrod;  ///< weight in the 21-point Kronrod rule
+  double gauss;    ///< weight in the embedded 10-point Gauss rule (0 if Kronrod-only)
 };
 
-// Gauss-Kronrod G7K15 on [-1, 1]; the symmetric half (same generator): the rule of the many
-// short intervals between a table's knot crossings (exact_resultants.hpp).
+/// Gauss-Kronrod G7K15 on [-1, 1]; the symmetric half (same generator): the rule of the many
+/// short intervals between a table's knot crossings (exact_resultants.hpp).
 inline constexpr KronrodNode kGK15[8] = {
     {9.9145537112081263921e-1, 0.022935322010529224964, 0.0},
     {9.4910791234275852453e-1, 0.063092092629978553291, 0.12948496616886969327},
@@ -40,8 +42,8 @@ inline constexpr KronrodNode kGK15[8] = {
     {0.0, 0.20948214108472782801, 0.41795918367346938776},
 };
 
-// Gauss-Kronrod G10K21 on [-1, 1]; the symmetric half. Generated to 20 digits by
-// scripts/gen_kronrod.py (zeros of the Stieltjes polynomial E_11).
+/// Gauss-Kronrod G10K21 on [-1, 1]; the symmetric half. Generated to 20 digits by
+/// scripts/gen_kronrod.py (zeros of the Stieltjes polynomial E_11).
 inline constexpr KronrodNode kGK21[11] = {
     {9.9565716302580808074e-1, 0.011694638867371874278, 0.0},
     {9.7390652851717172008e-1, 0.032558162307964727479, 0.066671344308688137594},
@@ -56,7 +58,7 @@ inline constexpr KronrodNode kGK21[11] = {
     {0.0, 0.14944555400291690566, 0.0},
 };
 
-// Gauss-Kronrod G15K31 on [-1, 1]; the symmetric half (same generator).
+/// Gauss-Kronrod G15K31 on [-1, 1]; the symmetric half (same generator).
 inline constexpr KronrodNode kGK31[16] = {
     {9.9800229869339706029e-1, 0.0053774798729233489878, 0.0},
     {9.8799251802048542849e-1, 0.015007947329316122538, 0.030753241996117268355},
@@ -76,13 +78,13 @@ inline constexpr KronrodNode kGK31[16] = {
     {0.0, 0.10133000701479154902, 0.20257824192556127288},
 };
 
-// Number of points of a Kronrod rule given its symmetric half (node 0 last).
+/// Number of points of a Kronrod rule given its symmetric half (node 0 last).
 template <std::size_t Half>
 constexpr int kronrod_points(const KronrodNode (&)[Half]) {
   return 2 * static_cast<int>(Half) - 1;
 }
 
-// QUADPACK's error heuristic: scale |K - G| by the integrand's variation (Piessens et al. 1983).
+/// QUADPACK's error heuristic: scale |K - G| by the integrand's variation (Piessens et al. 1983).
 inline double kronrod_error(double kronrod_minus_gauss, double abs_dev) {
   double err = std::abs(kronrod_minus_gauss);
   if (abs_dev != 0.0 && err != 0.0) {

@@ -1,12 +1,13 @@
-// Helpers that let the templated formulas accept double and ceres::Jet alike.
+/// \file
+/// Helpers that let the templated formulas accept double and ceres::Jet alike.
 #pragma once
 
 #include <type_traits>
 
 namespace contensou {
 
-// The plain value of a scalar: the double itself, or the real part of an automatic-
-// differentiation type that exposes a member `a` (ceres::Jet).
+/// The plain value of a scalar: the double itself, or the real part of an automatic-
+/// differentiation type that exposes a member `a` (ceres::Jet).
 template <class T>
 double value_of(const T& x) {
   if constexpr (std::is_arithmetic_v<T>) {
@@ -16,7 +17,7 @@ double value_of(const T& x) {
   }
 }
 
-// Whether a scalar carries a non-zero derivative (always false for a plain double).
+/// Whether a scalar carries a non-zero derivative (always false for a plain double).
 template <class T>
 bool has_derivative(const T& x) {
   if constexpr (std::is_arithmetic_v<T>) {

@@ -33,21 +33,19 @@ struct Chord {
   T t_foot;  // |foot|^2 / R^2
 };
 
-}  // namespace detail
-
 // Recomputes the chord transforms Q0, Q2 of the model's profile polynomial:
 //   integral_{-h}^{h} p(t_f + w^2) {1, w^2} dw = {h^(1+e) Q0(t_f), h^(3+e) Q2(t_f)},
 // h = (1 - t_f)^(1/2), e = 1 with a Hertz edge (p = sqrt(1 - t) P(t)), else 0. Q0 and Q2 are
 // polynomials of the same degree as P; they are stored as Chebyshev series in t_f. Call after
-// changing `chebyshev` (make_exact_model does).
+// changing the series (ExactModel::set_series does).
 template <class T>
 void update_chord_transforms(ExactModel<T>& m) {
-  const std::size_t deg = m.chebyshev.size() - 1, n = deg + 1;
+  const std::size_t deg = m.chebyshev().size() - 1, n = deg + 1;
   // Rule in u on [-1, 1] exact for degree 2 deg + 2: Gauss-Legendre, or Gauss-Chebyshev of
   // the second kind (weight sqrt(1 - u^2)) for a Hertz edge.
   std::vector<double> un, uw;
   const std::size_t nq = deg + 2;
-  if (m.sqrt_edge) {
+  if (m.sqrt_edge()) {
     for (std::size_t i = 1; i <= nq; ++i) {
       const double a = std::numbers::pi * static_cast<double>(i) / static_cast<double>(nq + 1);
       un.push_back(std::cos(a));
@@ -66,7 +64,7 @@ void update_chord_transforms(ExactModel<T>& m) {
     const double tf = 0.5 * (1.0 + zj), h2 = 1.0 - tf;
     T s0(0.0), s2(0.0);
     for (std::size_t i = 0; i < un.size(); ++i) {
-      const T p = detail::chebyshev_sum(m.chebyshev, tf + h2 * un[i] * un[i]);
+      const T p = detail::chebyshev_sum(m.chebyshev(), tf + h2 * un[i] * un[i]);
       s0 += uw[i] * p;
       s2 += (uw[i] * un[i] * un[i]) * p;
     }
@@ -78,14 +76,12 @@ void update_chord_transforms(ExactModel<T>& m) {
       q2[k] += ck * s2;
     }
   }
-  m.chord_tail.assign(n + 1, 0.0);
+  m.chord_tail_.assign(n + 1, 0.0);
   for (std::size_t k = n; k-- > 0;)
-    m.chord_tail[k] = m.chord_tail[k + 1] + std::abs(value_of(q0[k])) + std::abs(value_of(q2[k]));
-  m.chord_q0 = std::move(q0);
-  m.chord_q2 = std::move(q2);
+    m.chord_tail_[k] = m.chord_tail_[k + 1] + std::abs(value_of(q0[k])) + std::abs(value_of(q2[k]));
+  m.chord_q0_ = std::move(q0);
+  m.chord_q2_ = std::move(q2);
 }
-
-namespace detail {
 
 // The chord's moments {integral sigma (tau - tau_c) {1, x, y} dtau} / p* from
 // M0 = integral p dw and M2 = integral p w^2 dw over the chord (w = tau / R):
@@ -111,7 +107,7 @@ void chord_moments_closed_form(const ExactModel<T>& m, std::size_t terms, const 
                                std::array<T, 3>* I) {
   constexpr int kMax = kKronrodPoints;
   const double R = m.radius;
-  if (!m.piece.empty()) {
+  if (m.table()) {
     for (int i = 0; i < n; ++i) {
       T M0, M2;
       piecewise_chord_moments(m, c[i].t_foot, M0, M2);
@@ -124,8 +120,8 @@ void chord_moments_closed_form(const ExactModel<T>& m, std::size_t terms, const 
     z[i] = 2.0 * c[i].t_foot - 1.0;
     a1[i] = a2[i] = b1[i] = b2[i] = T(0.0);
   }
-  const T* q0 = m.chord_q0.data();
-  const T* q2 = m.chord_q2.data();
+  const T* q0 = m.chord_q0().data();
+  const T* q2 = m.chord_q2().data();
   for (std::size_t k = terms - 1; k >= 1; --k) {
     for (int i = 0; i < n; ++i) {
       const T a0 = q0[k] + 2.0 * z[i] * a1[i] - a2[i];
@@ -141,7 +137,7 @@ void chord_moments_closed_form(const ExactModel<T>& m, std::size_t terms, const 
     const T hp = ch.h / R;
     T M0 = hp * (q0[0] + z[i] * a1[i] - a2[i]);
     T M2 = hp * hp * hp * (q2[0] + z[i] * b1[i] - b2[i]);
-    if (m.sqrt_edge) {
+    if (m.sqrt_edge()) {
       M0 *= hp;
       M2 *= hp;
     }

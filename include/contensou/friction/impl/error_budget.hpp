@@ -50,7 +50,7 @@ template <class T>
 ResultantErrors representation_error_bound(const ExactModel<T>& m) {
   const double R = m.radius;
   const double repr =
-      m.representation_error * value_of(m.pressure) * m.friction_scale * std::numbers::pi * R * R;
+      m.representation_error() * value_of(m.pressure) * m.friction_scale * std::numbers::pi * R * R;
   return {repr, repr, repr * R};
 }
 
@@ -79,8 +79,8 @@ T falling_coefficient(const ExactModel<T>& m) {
 // tail, over at most pi of beta (tail_scale = 2 pi R^2 (1 + |k|)).
 template <class T>
 std::size_t chord_transform_terms(const ExactModel<T>& m, double unit, double tail_scale) {
-  std::size_t terms = m.chord_q0.size();
-  while (terms > 1 && m.chord_tail[terms - 1] * tail_scale <= 1e-3 * unit) --terms;
+  std::size_t terms = m.chord_q0().size();
+  while (terms > 1 && m.chord_tail()[terms - 1] * tail_scale <= 1e-3 * unit) --terms;
   return terms;
 }
 
@@ -92,11 +92,11 @@ std::size_t falling_profile_terms(const ExactModel<T>& m, double fall, double un
                                   double& dropped) {
   const double R = m.radius;
   const double area = std::numbers::pi * R * R * (1.0 + std::hypot(value_of(m.kx), value_of(m.ky)));
-  std::size_t terms = m.chebyshev.size();
+  std::size_t terms = m.chebyshev().size();
   double tail = 0.0;
   while (terms > 1 &&
-         (tail + std::abs(value_of(m.chebyshev[terms - 1]))) * fall * area <= 1e-3 * unit) {
-    tail += std::abs(value_of(m.chebyshev[terms - 1]));
+         (tail + std::abs(value_of(m.chebyshev()[terms - 1]))) * fall * area <= 1e-3 * unit) {
+    tail += std::abs(value_of(m.chebyshev()[terms - 1]));
     --terms;
   }
   dropped = fall * value_of(m.pressure) * tail * area;
@@ -131,9 +131,9 @@ struct SpinBudget {
 // beta, so they get 1/(20 pi) of it. Floor of the estimate: min(1e-11, tol / 10) of f N (f N
 // R): on 10^4 random kinematics per profile kind the Kronrod heuristic's estimate fell below
 // the achieved error only at rounding level, at most 6.6e-12 of f N (uniform pressure,
-// tolerance 1e-8, a first partition that over-delivers); test_exact checks the bound. A table's
-// chords are broken at knot crossings only for tol >= kBreakChordsTolerance: below, the pieces
-// between every m-th knot still hold kinks, G7K15 runs out of its 32 intervals and the
+// tolerance 1e-8, a first partition that over-delivers); test_exact_resultants checks the bound. A
+// table's chords are broken at knot crossings only for tol >= kBreakChordsTolerance: below, the
+// pieces between every m-th knot still hold kinks, G7K15 runs out of its 32 intervals and the
 // unconverged inner estimates can keep the outer rule bisecting to capacity; the unbroken
 // panels converge down to ~3e-9 (101-point table), and below that still report a 100x smaller
 // estimate.
@@ -148,16 +148,16 @@ SpinBudget spin_budget(const ExactModel<T>& m, const ToleranceScale& s, Resultan
   const double tail_scale = 2.0 * std::numbers::pi * R * R * shift;
   b.terms = chord_transform_terms(m, unit, tail_scale);
   const double fall = std::abs(value_of(falling_coefficient(m)));
-  if (m.piece.empty())
+  if (!m.table())
     add_dropped(e,
                 std::abs(value_of(constant_coefficient(m)) * value_of(m.pressure)) *
-                    m.chord_tail[b.terms] * tail_scale,
+                    m.chord_tail()[b.terms] * tail_scale,
                 R);
-  b.profile_terms = m.chebyshev.size();
+  b.profile_terms = m.chebyshev().size();
   b.break_at_knots = tol >= kBreakChordsTolerance;
   if (m.slip_speed && fall > 0.0) {
     for (double& t : b.tol_fall) t /= fall;
-    if (m.piece.empty()) {
+    if (!m.table()) {
       double dropped = 0.0;
       b.profile_terms = falling_profile_terms(m, fall, unit, dropped);
       add_dropped(e, dropped, R);

@@ -188,8 +188,7 @@ inline std::size_t max_table_breaks(double tol) {
 template <class T, class F>
 AdaptiveResult<T, 3> integrate_chords(F& f, const ExactModel<T>& m, const OuterRange& r, double tol,
                                       const std::array<double, 3>& tol_out) {
-  if (!m.piece.empty())
-    return integrate_table(f, m, r.s_max, r.mirror, max_table_breaks(tol), tol_out);
+  if (m.table()) return integrate_table(f, m, r.s_max, r.mirror, max_table_breaks(tol), tol_out);
   if (tol < 1e-8) return integrate_adaptive_batch<T, 3, 160, kGK31>(f, r.quarters, 4, tol_out);
   return integrate_adaptive_batch<T, 3, 160, kGK31>(f, r.halves, 2, tol_out);
 }

@@ -49,7 +49,7 @@ struct FallingIntegrand {
 
   void operator()(const double* x, int n, int, Sample<T, 3>* out) const {
     const double R = m.radius;
-    const bool angle = m.sqrt_edge;
+    const bool angle = m.sqrt_edge();
     std::array<T, kKronrodPoints> tau, jac, p;
     // {}: GCC 12 at -O1 with sanitizers reports a false maybe-uninitialized (-Werror).
     std::array<T, kKronrodPoints> t{};
@@ -86,7 +86,7 @@ struct ChordRange {
 
 template <class T>
 ChordRange falling_range(const ExactModel<T>& m, const Chord<T>& c) {
-  if (m.sqrt_edge) {
+  if (m.sqrt_edge()) {
     const double ratio = std::clamp(value_of(c.tau_c) / std::max(value_of(c.h), 1e-300), -1.0, 1.0);
     return {-0.5 * std::numbers::pi, 0.5 * std::numbers::pi, std::asin(ratio)};
   }
@@ -118,13 +118,13 @@ int knot_crossing_parts(const ExactModel<T>& m, const Chord<T>& c, const ChordRa
   const double R = m.radius, lo = r.lo, hi = r.hi, mid = r.mid;
   std::array<double, kChordBreaks> cross;
   const double tf = value_of(c.t_foot);
-  const std::size_t first_knot =
-      std::upper_bound(m.knot.begin(), m.knot.end(), tf) - m.knot.begin();
-  const std::size_t inside = first_knot + 1 < m.knot.size() ? m.knot.size() - 1 - first_knot : 0;
+  const std::vector<double>& knot = m.table()->knot;
+  const std::size_t first_knot = std::upper_bound(knot.begin(), knot.end(), tf) - knot.begin();
+  const std::size_t inside = first_knot + 1 < knot.size() ? knot.size() - 1 - first_knot : 0;
   const std::size_t stride = std::max<std::size_t>(1, (inside + kChordBreaks - 1) / kChordBreaks);
   std::size_t nc = 0;
-  for (std::size_t k = first_knot; k + 1 < m.knot.size() && nc < kChordBreaks; k += stride)
-    cross[nc++] = R * std::sqrt(m.knot[k] - tf);
+  for (std::size_t k = first_knot; k + 1 < knot.size() && nc < kChordBreaks; k += stride)
+    cross[nc++] = R * std::sqrt(knot[k] - tf);
   std::array<double, 2 * kChordBreaks + 3> pts;
   std::size_t np = 0;
   pts[np++] = lo;
@@ -165,7 +165,7 @@ std::array<T, 3> chord_moments_falling(const ExactModel<T>& m, const Chord<T>& c
   const TaggedInterval halves[2] = {{range.lo, range.mid, 0}, {range.mid, range.hi, 1}};
   const int first = range.mid > range.lo ? 0 : 1;
   const int sides = (range.mid < range.hi ? 2 : 1) - first;
-  if (m.piece.empty() || !break_at_knots) {
+  if (!m.table() || !break_at_knots) {
     const auto r = integrate_adaptive_batch<T, 3, 48, kGK31>(f, halves + first, sides, tol);
     inner_error = r.error;
     return r.value;

@@ -95,16 +95,16 @@ struct KnotCrossingSplit {
 template <class T, class F>
 AdaptiveResult<T, 3> integrate_table(F& f, const ExactModel<T>& m, double s_max, double mirror,
                                      std::size_t max_breaks, const std::array<double, 3>& tol) {
-  const KnotCrossingSplit split{&m.knot, s_max, mirror};
+  const KnotCrossingSplit split{&m.table()->knot, s_max, mirror};
   std::array<TaggedInterval, 2 * kMaxCrossings + 2> breaks;
-  const int nb =
-      crossing_intervals(m.knot, s_max, std::min(max_breaks, kMaxCrossings), mirror, breaks.data());
+  const int nb = crossing_intervals(m.table()->knot, s_max, std::min(max_breaks, kMaxCrossings),
+                                    mirror, breaks.data());
   auto r =
       integrate_adaptive_batch<T, 3, kPiecewiseCapacity, kGK15>(f, breaks.data(), nb, tol, split);
   if (r.converged || m.slip_speed) return r;
-  const std::size_t inside = knots_inside(m.knot, s_max);
+  const std::size_t inside = knots_inside(m.table()->knot, s_max);
   std::vector<TaggedInterval> all(2 * inside + 2);
-  const int na = crossing_intervals(m.knot, s_max, inside, mirror, all.data());
+  const int na = crossing_intervals(m.table()->knot, s_max, inside, mirror, all.data());
   const int spent = r.evaluations;
   r = integrate_adaptive_batch_heap<T, 3, kGK15>(
       f, all.data(), na, tol, kCrossingCapacity * na + kPiecewiseCapacity, split);

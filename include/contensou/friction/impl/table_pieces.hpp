@@ -29,10 +29,11 @@ namespace contensou::detail {
 // difference of two knot terms ~ |c_3| delta^(7/2); so they serve only the near knots, and only
 // where no near piece is narrower than 1/8 of the distance (update_far_sums); elsewhere the
 // pieces are integrated (cubic_moments).
-inline void update_knot_terms(std::vector<double> const& knot,
-                              std::vector<std::array<double, 4>> const& piece,
-                              std::vector<std::array<double, 4>>& m0,
-                              std::vector<std::array<double, 4>>& m2) {
+inline void update_knot_terms(TablePieces& table) {
+  const std::vector<double>& knot = table.knot;
+  const std::vector<std::array<double, 4>>& piece = table.piece;
+  std::vector<std::array<double, 4>>& m0 = table.knot_m0;
+  std::vector<std::array<double, 4>>& m2 = table.knot_m2;
   std::array<double, 4> kappa{}, lambda{};
   for (int j = 0; j < 4; ++j) {
     double binom = 1.0;
@@ -114,23 +115,21 @@ void cubic_moments(const std::array<double, 4>& c, double t0, double lo, double 
 // holds the antiderivative of the piece below knot far_from[k] (which they leave out), so that
 // its (knot - t_f)^(1/2) singularity cancels. A chord thus costs a few knot terms or pieces and
 // two short series, whatever the number of knots. The series are fitted top-down on a binary
-// tree of the pieces (exact_resultants.cpp): a node's (or interval's) far sums are its
+// tree of the pieces (table_far_sums.cpp): a node's (or interval's) far sums are its
 // parent's series plus the few pieces between the two, summed from the pieces' moments, so
-// that every fit sums a bounded number of terms: O(n) in the number of knots (0.3 s for 10^4
-// knots, 3 s for 10^5). Returns the largest deviation of the series from those sums at test
+// that every fit sums a bounded number of terms: O(n) in the number of knots (docs/speed.md,
+// "Dense tables"). Returns the largest deviation of the series from those sums at test
 // points (M0 and M2), the deviations of its ancestors' series added.
 inline constexpr std::size_t kMaxNear = 512;
-double update_far_sums(const std::vector<double>& knot,
-                       const std::vector<std::array<double, 4>>& piece, std::vector<double>& far0,
-                       std::vector<double>& far2, std::vector<std::size_t>& far_from,
-                       std::vector<unsigned char>& near_integrated);
+double update_far_sums(TablePieces& table);
 
 // M0 and M2 of a piecewise profile at t_f: the near knot terms or pieces above t_f, the far
 // pieces from the series of t_f's interval.
 template <class T>
 void piecewise_chord_moments(const ExactModel<T>& m, const T& t_f, T& M0, T& M2) {
   using std::sqrt;
-  const std::vector<double>& knot = m.knot;
+  const TablePieces& tp = *m.table();
+  const std::vector<double>& knot = tp.knot;
   const double tv = value_of(t_f);
   M0 = T(0.0);
   M2 = T(0.0);
@@ -138,27 +137,27 @@ void piecewise_chord_moments(const ExactModel<T>& m, const T& t_f, T& M0, T& M2)
   const std::size_t n = knot.size() - 1;
   std::size_t k = std::upper_bound(knot.begin(), knot.end(), tv) - knot.begin();
   k = std::min(std::max<std::size_t>(k, 1), n) - 1;  // t_f in [knot[k], knot[k+1])
-  if (m.near_integrated[k]) {
-    for (std::size_t j = k; j < std::min(m.far_from[k], n); ++j) {
+  if (tp.near_integrated[k]) {
+    for (std::size_t j = k; j < std::min(tp.far_from[k], n); ++j) {
       T a0, a2;
-      cubic_moments(m.piece[j], knot[j], knot[j], knot[j + 1], t_f, j == k, a0, a2);
+      cubic_moments(tp.piece[j], knot[j], knot[j], knot[j + 1], t_f, j == k, a0, a2);
       M0 += a0;
       M2 += a2;
     }
   } else {
-    for (std::size_t j = k + 1; j < m.far_from[k]; ++j) {
+    for (std::size_t j = k + 1; j < tp.far_from[k]; ++j) {
       const T d = knot[j] - t_f;
       const T r = sqrt(d);
-      const auto& a = m.knot_m0[j];
-      const auto& b = m.knot_m2[j];
+      const auto& a = tp.knot_m0[j];
+      const auto& b = tp.knot_m2[j];
       M0 += r * (a[0] + d * (a[1] + d * (a[2] + d * a[3])));
       M2 += r * d * (b[0] + d * (b[1] + d * (b[2] + d * b[3])));
     }
   }
   const double lo = knot[k], hi = knot[k + 1];
   const T z = (2.0 * t_f - lo - hi) / (hi - lo);
-  const double* c0 = m.far_m0.data() + k * kFarTerms;
-  const double* c2 = m.far_m2.data() + k * kFarTerms;
+  const double* c0 = tp.far_m0.data() + k * kFarTerms;
+  const double* c2 = tp.far_m2.data() + k * kFarTerms;
   T p1(0.0), p2(0.0), q1(0.0), q2(0.0);
   for (int i = kFarTerms - 1; i >= 1; --i) {
     const T p0 = c0[i] + 2.0 * z * p1 - p2;

@@ -7,7 +7,7 @@
 #include <array>
 #include <cmath>
 
-namespace contensou {
+namespace contensou::detail {
 
 template <int N>
 struct ForwardDerivative {
@@ -16,7 +16,7 @@ struct ForwardDerivative {
 
   ForwardDerivative() = default;
   explicit ForwardDerivative(double value) : a(value) {}
-  ForwardDerivative(double value, int i) : a(value) { v[i] = 1.0; }  // the i-th variable
+  ForwardDerivative(double value, int i) : a(value) { v[i] = 1.0; }  ///< the i-th variable
 
   ForwardDerivative& operator+=(const ForwardDerivative& y) {
     a += y.a;
@@ -126,4 +126,4 @@ ForwardDerivative<N> pow(const ForwardDerivative<N>& x, double e) {
   return out;
 }
 
-}  // namespace contensou
+}  // namespace contensou::detail

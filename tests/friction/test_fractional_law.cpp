@@ -176,18 +176,6 @@ TEST(FractionalLaw, FiniteForEveryFiniteInputAndDissipative) {
   }
 }
 
-TEST(FractionalLaw, RotationCovarianceWithoutShift) {
-  FractionalLaw<double> law = fractional_law_from_patch(seed_patch());
-  const auto ref = fractional_resultants(law, Kinematics<double>{1.3, 0.0, 20.0});
-  for (double alpha : {0.4, 2.0, -1.1}) {
-    const double c = std::cos(alpha), s = std::sin(alpha);
-    const auto r = fractional_resultants(law, Kinematics<double>{1.3 * c, 1.3 * s, 20.0});
-    EXPECT_NEAR(r.Fx, c * ref.Fx - s * ref.Fy, 1e-10 * law.F0);
-    EXPECT_NEAR(r.Fy, s * ref.Fx + c * ref.Fy, 1e-10 * law.F0);
-    EXPECT_NEAR(r.Mz, ref.Mz, 1e-10 * law.M0);
-  }
-}
-
 TEST(FractionalLaw, RegularisationIsSmoothThroughRest) {
   FractionalLaw<double> law = fractional_law_from_patch(seed_patch(0.1, 0.05));
   const auto zero = fractional_resultants(law, Kinematics<double>{0.0, 0.0, 0.0});

@@ -364,8 +364,8 @@ TEST(Profiles, ChebyshevShapeMomentsAndExactModel) {
   ContactPatch patch = seed_tire_patch();
   patch.profile = p;
   const ExactModel<double> m = make_exact_model(patch);
-  EXPECT_EQ(m.chebyshev.size(), 3u);
-  EXPECT_EQ(m.representation_error, 0.0);
+  EXPECT_EQ(m.chebyshev().size(), 3u);
+  EXPECT_EQ(m.representation_error(), 0.0);
   EXPECT_NE(describe(p).find("Chebyshev series in rho^2 (3 terms)"), std::string::npos);
 }
 

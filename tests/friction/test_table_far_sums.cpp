@@ -1,7 +1,7 @@
-// Dense tabulated profiles (issue 22): the far-knot series of a table, fitted top-down on a tree
-// of its pieces in O(n) (update_far_sums), against the quadratic sums they replace; a 10^5-point
-// table (its model and its exact law) against a 10^4-point one of the same function; the limit
-// on the number of points.
+// Dense tabulated profiles (table_far_sums.cpp): the far-knot series of a table, fitted top-down on
+// a tree of its pieces in O(n) (update_far_sums), against the quadratic sums they replace; a
+// 10^5-point table (its model and its exact law) against a 10^4-point one of the same function; the
+// limit on the number of points.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -58,12 +58,13 @@ ContactPatch patch_of(PressureProfile profile) {
 // one by one (the piece under the foot from the foot): no series, no knot terms.
 void brute_force_chord_moments(const ExactModel<double>& m, double t_f, double& M0, double& M2) {
   M0 = M2 = 0.0;
-  for (std::size_t j = 0; j < m.piece.size(); ++j) {
-    if (m.knot[j + 1] <= t_f) continue;
-    const bool foot = m.knot[j] <= t_f;
+  const TablePieces& tp = *m.table();
+  for (std::size_t j = 0; j < tp.piece.size(); ++j) {
+    if (tp.knot[j + 1] <= t_f) continue;
+    const bool foot = tp.knot[j] <= t_f;
     double a0, a2;
-    detail::cubic_moments(m.piece[j], m.knot[j], foot ? t_f : m.knot[j], m.knot[j + 1], t_f, foot,
-                          a0, a2);
+    detail::cubic_moments(tp.piece[j], tp.knot[j], foot ? t_f : tp.knot[j], tp.knot[j + 1], t_f,
+                          foot, a0, a2);
     M0 += a0;
     M2 += a2;
   }
@@ -77,25 +78,27 @@ void quadratic_far_series(const ExactModel<double>& m, std::vector<double>& far0
                           std::vector<double>& far2) {
   constexpr int N = detail::kFarTerms;
   const double pi = std::numbers::pi;
-  const std::size_t n = m.piece.size();
+  const TablePieces& tp = *m.table();
+  const std::size_t n = tp.piece.size();
   far0.assign(n * N, 0.0);
   far2.assign(n * N, 0.0);
   for (std::size_t k = 0; k < n; ++k) {
-    const double a = m.knot[k], b = m.knot[k + 1];
-    const std::size_t first = m.far_from[k];
+    const double a = tp.knot[k], b = tp.knot[k + 1];
+    const std::size_t first = tp.far_from[k];
     double v0[N], v2[N];
     for (int j = 0; j < N; ++j) {
       const double t = 0.5 * (a + b) + 0.5 * (b - a) * std::cos(pi * (j + 0.5) / N);
       v0[j] = v2[j] = 0.0;
       double a0, a2;
-      if (!m.near_integrated[k] && first <= n) {
-        detail::cubic_moments(m.piece[first - 1], m.knot[first - 1], t, m.knot[first], t, true, a0,
-                              a2);
+      if (!tp.near_integrated[k] && first <= n) {
+        detail::cubic_moments(tp.piece[first - 1], tp.knot[first - 1], t, tp.knot[first], t, true,
+                              a0, a2);
         v0[j] += a0;
         v2[j] += a2;
       }
       for (std::size_t p = first; p < n; ++p) {
-        detail::cubic_moments(m.piece[p], m.knot[p], m.knot[p], m.knot[p + 1], t, false, a0, a2);
+        detail::cubic_moments(tp.piece[p], tp.knot[p], tp.knot[p], tp.knot[p + 1], t, false, a0,
+                              a2);
         v0[j] += a0;
         v2[j] += a2;
       }
@@ -121,15 +124,14 @@ Kinematics<double> kinematics(double ratio, double angle, double R) {
 
 // On 200-point tables (even knots with a kink; random knots with noise) the O(n) fits give the
 // chord integrals of the quadratic sums: against the brute-force sum over every piece at 4,000
-// feet within 1e-14 of their largest value (3e-15 on both; the far sums on the tree before,
-// fitted at feet rounded to doubles, were 1.3e-14 off on the random table), and the resultants
+// feet within 1e-14 of their largest value (3e-15 on both), and the resultants
 // of the model equal, to 1e-13 of f N (f N R), those of the same model with its far series
 // refitted from the quadratic sums.
 TEST(DenseProfile, FarSeriesMatchTheQuadraticSums) {
   for (const PressureProfile& profile : {kinked_profile(200), random_knot_profile()}) {
     const ContactPatch patch = patch_of(profile);
     const ExactModel<double> m = make_exact_model(patch);
-    EXPECT_LT(m.representation_error, 1e-13) << describe(profile);
+    EXPECT_LT(m.representation_error(), 1e-13) << describe(profile);
     double scale0 = 0.0, scale2 = 0.0, worst0 = 0.0, worst2 = 0.0;
     for (int i = 0; i < 4000; ++i) {
       const double t = (i + 0.5) / 4000.0;
@@ -144,8 +146,10 @@ TEST(DenseProfile, FarSeriesMatchTheQuadraticSums) {
     EXPECT_LT(worst0, 1e-14 * scale0) << describe(profile);
     EXPECT_LT(worst2, 1e-14 * scale2) << describe(profile);
 
+    TablePieces pieces = *m.table();
+    quadratic_far_series(m, pieces.far_m0, pieces.far_m2);
     ExactModel<double> reference = m;
-    quadratic_far_series(m, reference.far_m0, reference.far_m2);
+    reference.set_table(std::move(pieces), m.representation_error());
     const double fN = m.friction_scale * normal_load(patch), R = patch.radius_m;
     for (double ratio : {0.3, 0.999, 1.001, 2.0, 50.0}) {
       for (double angle : {0.0, 0.61, 2.0}) {
@@ -161,20 +165,20 @@ TEST(DenseProfile, FarSeriesMatchTheQuadraticSums) {
   }
 }
 
-// A 10^5-point table builds (2-3 s on one core, where the far sums on the tree took 13 s, and
-// the knot terms before them minutes) and agrees with the 10^4-point table of the same function
+// A 10^5-point table builds (docs/speed.md, "Dense tables") and agrees with the 10^4-point
+// table of the same function
 // to the interpolation error of the coarser one: their loads differ by 2.4e-10, their
 // resultants by 2e-10 of f N (f N R) at most; checked to 2e-9. Their exact laws (rings summed
-// on a tree of the pieces' moments: 0.6 s for 10^5 knots, 37 s piece by piece before) agree
+// on a tree of the pieces' moments) agree
 // with the integrator within their certified bounds on 40 kinematics (every regime and
 // direction; the 10^4-point law), and with each other within the two bounds and 2e-9.
 TEST(DenseProfile, TenToTheFiveKnotsAgreeWithTenToTheFour) {
   ContactPatch coarse = patch_of(kinked_profile(10'000)), fine = patch_of(kinked_profile(100'000));
   coarse.kappa = fine.kappa = 0.8;
   const ExactModel<double> mc = make_exact_model(coarse), mf = make_exact_model(fine);
-  EXPECT_EQ(mf.piece.size(), 99'999u);
-  EXPECT_LT(mc.representation_error, 1e-13);
-  EXPECT_LT(mf.representation_error, 1e-13);
+  EXPECT_EQ(mf.table()->piece.size(), 99'999u);
+  EXPECT_LT(mc.representation_error(), 1e-13);
+  EXPECT_LT(mf.representation_error(), 1e-13);
   const double fN = mc.friction_scale * normal_load(coarse), R = coarse.radius_m;
   EXPECT_NEAR(normal_load(fine), normal_load(coarse), 2e-9 * normal_load(coarse));
   for (double ratio : {0.3, 1.0, 2.0, 50.0}) {
