@@ -8,6 +8,7 @@
 #include "contensou/friction/exact_resultants.hpp"
 #include "contensou/identification/closed_loop.hpp"
 #include "contensou/identification/fit.hpp"
+#include "contensou/identification/identify.hpp"
 #include "contensou/identification/simulation.hpp"
 
 using namespace contensou;
@@ -117,23 +118,41 @@ void BM_ClosedLoopTableWithSpeedLaw(benchmark::State& state, bool speed_inside) 
   }
 }
 
-// The closed loop on large data (issue 22): what `contensou-identify simulate --points N` writes
-// (the seed tire from the exact integrals, kx = 0.14, 1 % additive noise, psi = 0.01 ... 100),
-// fitted as `contensou-identify DATA --radius 0.087` does (no profile: the parametric profile
-// is identified with the shape). Counters: rows, fits run, effects accepted. Timed once.
-void BM_ClosedLoopRows(benchmark::State& state) {
+// identify() on a rig's file as contensou-identify runs it: the seed tire from the exact
+// integrals (kx = 0.14) at three loads (3, 4.5, 6 kN, pressure in proportion) in two sliding
+// directions, 1 % additive noise, psi = 0.01 ... 100. Arguments: rows, the profile given (1) or
+// identified (0), the selection sample (IdentifyOptions::selection_rows; 0: every row, the
+// baseline the sample is compared with). Counters: rows, effects accepted, rows selected on.
+// Timed once.
+void BM_IdentifyRows(benchmark::State& state) {
   DiagramSpec s;
   s.radius_m = 0.087;
-  s.points = static_cast<int>(state.range(0));
+  s.points = static_cast<int>(state.range(0) / 6);
   s.noise_level = 0.01;
-  const MeasuredData d = simulate_diagrams(make_exact_model(rolling_seed_tire()), s);
-  IdentificationOptions o;
-  o.radius_m = 0.087;
-  ClosedLoopReport r;
-  for (auto _ : state) r = close_the_loop(d, o);
+  MeasuredData d;
+  for (double load : {3000.0, 4500.0, 6000.0})
+    for (double direction : {0.0, 1.5707963267948966}) {
+      ContactPatch patch = rolling_seed_tire();
+      patch.reference_pressure_pa *= load / 4535.02;
+      s.direction_rad = direction;
+      s.seed = static_cast<std::uint64_t>(load + 10.0 * direction);
+      for (MeasuredPoint p : simulate_diagrams(make_exact_model(patch), s).points) {
+        p.normal_load = load;
+        p.line = static_cast<int>(d.points.size()) + 2;
+        d.points.push_back(p);
+      }
+    }
+  IdentifyOptions o;
+  o.fit.radius_m = 0.087;
+  if (state.range(1) != 0) o.fit.profile = seed_tire_profile();
+  o.loop = ClosedLoopOptions{};
+  o.selection_rows = static_cast<std::size_t>(state.range(2));
+  Identification r;
+  for (auto _ : state) r = identify(d, o);
   state.counters["rows"] = static_cast<double>(d.points.size());
-  state.counters["fits"] = static_cast<double>(r.steps.size() + 1);
-  state.counters["effects"] = static_cast<double>(r.accepted_effects.size());
+  state.counters["effects"] = static_cast<double>(r.loop->accepted_effects.size());
+  state.counters["selected_on"] =
+      static_cast<double>(r.loop->selection_rows ? r.loop->selection_rows : d.points.size());
 }
 
 BENCHMARK_CAPTURE(BM_Fit, estimated_noise_scales, false)->Unit(benchmark::kMillisecond);
@@ -145,5 +164,12 @@ BENCHMARK_CAPTURE(BM_ClosedLoopTableWithSpeedLaw, effective_speed, false)
     ->Unit(benchmark::kSecond)
     ->Iterations(1);
 BENCHMARK_CAPTURE(BM_Fit, given_noise_scales_baseline, true)->Unit(benchmark::kMillisecond);
-BENCHMARK(BM_ClosedLoopRows)->Arg(1000)->Arg(10000)->Unit(benchmark::kSecond)->Iterations(1);
+BENCHMARK(BM_IdentifyRows)
+    ->Args({10000, 1, 0})  // the baseline: every row through the loop
+    ->Args({10000, 1, 4000})
+    ->Args({100000, 1, 4000})
+    ->Args({10000, 0, 4000})
+    ->Args({100000, 0, 4000})
+    ->Unit(benchmark::kSecond)
+    ->Iterations(1);
 BENCHMARK_MAIN();

@@ -71,6 +71,14 @@ cmd="contensou-shimmy --scenario braked-slide --set structure.fore_aft_stiffness
   --set structure.fore_aft_stiffness_n_per_m=2e6 > /dev/null
 copy_picture shimmy_fore_aft_gear_walk.png "$tmp/fore_aft/braked-slide/fore_aft.png" "$cmd"
 
+# A rig's file: three loads, two sliding directions, 10^4 rows; the fit drawn per sweep.
+rig=(--radius 0.087 --profile seed-tire --pressure 2.1e5 --kx 0.14 --points 1667
+  --directions 0,1.5708 --normal-load 3000,4500,6000 --noise additive-gaussian --noise-level 0.01)
+"$identify" simulate --out "$tmp/rig.csv" "${rig[@]}" > /dev/null
+"$identify" "$tmp/rig.csv" --radius 0.087 --profile seed-tire --plots "$tmp/rig" > /dev/null
+cmd="contensou-identify <simulate ${rig[*]}> --radius 0.087 --profile seed-tire --plots"
+copy_picture fit_rig_Mz_Nm.png "$tmp/rig/fit_Mz_Nm.png" "$cmd"
+
 # The seed tire's identified law as the tire: probability of shimmy over the offset map.
 "$identify" data/seed_tire_diagrams.csv --radius 0.087 --normal-load 4480 --no-loop \
   --json "$tmp/report.json" > /dev/null

@@ -152,13 +152,13 @@ std::string fit_csv_row(const PlotInput& in, const FitReport& fit, std::size_t i
       residual = cell(fit.residual[k][c]);
     }
     row += "," + cell(p.force[c]) + "," + model + "," + residual + "," +
-           cell(left_out ? p.force[c] : std::nullopt);
+           (left_out ? cell(p.force[c]) : std::string("NaN"));
     if (!has_file_unit(in.data, c)) continue;
     const auto& units = in.data.channel_units[std::min<std::size_t>(
         static_cast<std::size_t>(p.source), in.data.channel_units.size() - 1)][c];
-    const std::optional<double> own =
-        p.force[c] ? std::optional<double>(*p.force[c] / units.to_si) : std::nullopt;
-    row += "," + cell(own) + "," +
+    // The value in the file's own unit (GCC's -O3 flow analysis misreads a local optional here).
+    const std::string own = p.force[c] ? fmt("%.10g", *p.force[c] / units.to_si) : "NaN";
+    row += "," + own + "," +
            (units.unit.empty() ? std::string(c == 2 ? "N m" : "N") : units.unit);
   }
   return row + "\n";

@@ -767,8 +767,7 @@ ClosedLoopReport close_the_loop(const MeasuredData& data, const IdentificationOp
   return report;
 }
 
-ClosedLoopReport close_the_loop_on_sample(const MeasuredData& data,
-                                          const std::vector<char>& sample,
+ClosedLoopReport close_the_loop_on_sample(const MeasuredData& data, const std::vector<char>& sample,
                                           const IdentificationOptions& options,
                                           const ClosedLoopOptions& loop) {
   MeasuredData part = data;

@@ -77,8 +77,7 @@ Identification identify(const MeasuredData& data, const IdentifyOptions& options
     // them; a glitch hidden by glitched neighbours shows once they are out.
     const IdentificationOptions judge = robust(options.fit);
     const double R = options.fit.radius_m;
-    FitReport current =
-        judge_fit(data, judge, stratified_sample(data, R, options.selection_rows));
+    FitReport current = judge_fit(data, judge, stratified_sample(data, R, options.selection_rows));
     for (int round = 0; round < 10; ++round) {
       const std::vector<Outlier> found = find_outliers(r.fitted, current.prediction);
       if (found.empty()) break;
@@ -87,8 +86,7 @@ Identification identify(const MeasuredData& data, const IdentifyOptions& options
         r.outliers.push_back(o);
       }
       r.fitted = clean_rows(data, r.outliers, r.origin);
-      current =
-          judge_fit(r.fitted, judge, stratified_sample(r.fitted, R, options.selection_rows));
+      current = judge_fit(r.fitted, judge, stratified_sample(r.fitted, R, options.selection_rows));
     }
     std::sort(r.outliers.begin(), r.outliers.end(), [](const Outlier& a, const Outlier& b) {
       return std::abs(a.residual_sigma) > std::abs(b.residual_sigma);

@@ -152,8 +152,7 @@ void keep_extremes(const MeasuredData& data, Value x, std::vector<char>& keep) {
 
 }  // namespace
 
-std::vector<char> stratified_sample(const MeasuredData& data, double radius_m,
-                                    std::size_t target) {
+std::vector<char> stratified_sample(const MeasuredData& data, double radius_m, std::size_t target) {
   const std::size_t n = data.points.size();
   std::vector<char> keep(n, 1);
   if (n <= target || target == 0) return keep;
@@ -161,12 +160,15 @@ std::vector<char> stratified_sample(const MeasuredData& data, double radius_m,
   const double step = static_cast<double>(n) / static_cast<double>(target);
   for (const Sweep& s : sweeps_of(data, radius_m)) {
     const std::size_t m = s.points.size();
-    for (double k = 0.0; k < static_cast<double>(m); k += step) keep[s.points[static_cast<std::size_t>(k)]] = 1;
+    for (double k = 0.0; k < static_cast<double>(m); k += step)
+      keep[s.points[static_cast<std::size_t>(k)]] = 1;
     keep[s.points.back()] = 1;
   }
   const double nan = std::nan("");
-  keep_extremes(data, [&](const MeasuredPoint& p) { return p.normal_load.value_or(nan); }, keep);
-  keep_extremes(data, [&](const MeasuredPoint& p) { return p.time.value_or(nan); }, keep);
+  keep_extremes(
+      data, [&](const MeasuredPoint& p) { return p.normal_load.value_or(nan); }, keep);
+  keep_extremes(
+      data, [&](const MeasuredPoint& p) { return p.time.value_or(nan); }, keep);
   keep_extremes(
       data, [](const MeasuredPoint& p) { return p.source * 4294967296.0 + p.line; }, keep);
   for (std::size_t r = 0; r < data.recorded.size(); ++r)

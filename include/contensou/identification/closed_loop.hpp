@@ -122,8 +122,7 @@ ClosedLoopReport close_the_loop(const MeasuredData& data, const IdentificationOp
 // base law and the selected model fitted on every row (from the sample's estimates), their
 // residual traced over every row. For large files: the steps' tests need far fewer rows than
 // a day of rig data holds, and each costs a fit per candidate. Throws as close_the_loop.
-ClosedLoopReport close_the_loop_on_sample(const MeasuredData& data,
-                                          const std::vector<char>& sample,
+ClosedLoopReport close_the_loop_on_sample(const MeasuredData& data, const std::vector<char>& sample,
                                           const IdentificationOptions& options,
                                           const ClosedLoopOptions& loop = {});
 

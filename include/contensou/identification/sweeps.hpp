@@ -32,7 +32,6 @@ std::vector<Sweep> sweeps_of(const MeasuredData& data, double radius_m);
 // each sweep in psi order (its first and last always), and the rows at the smallest and largest
 // load, time, row (per file) and value of each recorded column, so that every variable keeps
 // its range. One entry a row, 1 where sampled; every row when the data have at most `target`.
-std::vector<char> stratified_sample(const MeasuredData& data, double radius_m,
-                                    std::size_t target);
+std::vector<char> stratified_sample(const MeasuredData& data, double radius_m, std::size_t target);
 
 }  // namespace contensou
