@@ -158,8 +158,7 @@ std::string fit_csv_row(const PlotInput& in, const FitReport& fit, std::size_t i
         static_cast<std::size_t>(p.source), in.data.channel_units.size() - 1)][c];
     // The value in the file's own unit (GCC's -O3 flow analysis misreads a local optional here).
     const std::string own = p.force[c] ? fmt("%.10g", *p.force[c] / units.to_si) : "NaN";
-    row += "," + own + "," +
-           (units.unit.empty() ? std::string(c == 2 ? "N m" : "N") : units.unit);
+    row += "," + own + "," + (units.unit.empty() ? std::string(c == 2 ? "N m" : "N") : units.unit);
   }
   return row + "\n";
 }
