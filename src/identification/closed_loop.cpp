@@ -91,7 +91,7 @@ std::vector<Candidate> catalogue(const MeasuredData& data, const ModelSpec& s,
                                     : "exact integrals, profile identified",
                     {kShapeBlend},
                     kShapeBlend};
-    if (!s.profile_model) shape.parameters = {kShapeBlend, kProfileB1, kProfileB2};
+    if (!s.profile_model) shape.parameters = {kShapeBlend, kProfileMid, kProfileRim};
     out.push_back(shape);
   }
   if (!s.free[kKappa]) out.push_back({Effect::anisotropy, "", {kKappa}, kKappa});

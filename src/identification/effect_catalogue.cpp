@@ -12,8 +12,9 @@ using E = Effect;
 constexpr std::array<EffectDescriptor, kEffects> kCatalogue = {{
     {E::shape, "shape",
      "the law's own approximation error: the exact integrals over `--profile` replace the law "
-     "(without a profile, a two-coefficient radial profile p = 1 + b1 T1(2rho^2-1) + b2 "
-     "T2(2rho^2-1) is identified with them)",
+     "(without a profile, a quadratic profile in s = rho^2, p = (1-s)^2 + 2 w_mid s(1-s) + "
+     "w_rim s^2 with w_mid, w_rim >= 0 (never negative; uniform at 1, 1), is identified with "
+     "them)",
      "blend lambda = 0",
      "the pressure profile's shape matters (the exact integrals fit better than the fractional "
      "law)",

@@ -45,7 +45,7 @@ IdentificationOptions robust(const IdentificationOptions& o) {
 }
 
 // The robust fit on `data`: the exact integrals over the profile (the given one, else the
-// two-coefficient profile identified with them, as the loop's shape step), since the law's own
+// quadratic profile identified with them, as the loop's shape step), since the law's own
 // misfit, several noise scales at a sweep's knee, would otherwise show between neighbouring
 // rows; the fractional law if that fit fails.
 FitReport judge_fit(const MeasuredData& data, const IdentificationOptions& judge,
@@ -55,7 +55,7 @@ FitReport judge_fit(const MeasuredData& data, const IdentificationOptions& judge
   spec.exact_only = true;
   for (int p : {kA, kM0, kMShape, kShapeBlend}) spec.free[p] = false;
   spec.value[kShapeBlend] = 1.0;
-  if (!spec.profile_model) spec.free[kProfileB1] = spec.free[kProfileB2] = true;
+  if (!spec.profile_model) spec.free[kProfileMid] = spec.free[kProfileRim] = true;
   try {
     return fit_model(data, spec, noise_settings_for(judge), nullptr, use);
   } catch (const Interrupted&) {

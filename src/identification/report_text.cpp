@@ -227,7 +227,7 @@ std::string trace_text(const FitReport& fit) {
 }
 
 // With the profile identified (no --profile) and a residual that still follows the kinematics,
-// the two-coefficient profile misses the tire's shape, and what was accepted besides the shape
+// the quadratic profile misses the tire's shape, and what was accepted besides the shape
 // may stand in for that misfit (offsets, crosstalk): said, with the measurement that decides.
 std::string identified_profile_caveat(const ClosedLoopReport& loop, std::size_t accepted) {
   if (loop.final_spec.profile_model || !loop.final_spec.uses_exact() || accepted < 2) return "";
@@ -237,7 +237,7 @@ std::string identified_profile_caveat(const ClosedLoopReport& loop, std::size_t 
       kinematic += (kinematic.empty() ? "" : ", ") + t.variable;
   if (kinematic.empty()) return "";
   return " Caution: the residual still follows the kinematics (" + kinematic +
-         "): the two-coefficient profile identified without --profile does not capture this "
+         "): the quadratic profile identified without --profile does not capture this "
          "tire's shape, and the effects accepted after the shape may stand in for that misfit; a "
          "measured profile (--profile) decides them.";
 }

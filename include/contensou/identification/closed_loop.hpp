@@ -1,10 +1,10 @@
 // The closed loop: find structure in the residual, trace it to a missing effect from a
-// catalogue, add it, refit, and report the error before and after (issue "Close the loop").
+// catalogue, add it, refit, and report the error before and after.
 //
 // Catalogue (each a nested extension: a parameter whose null value removes it):
 //   shape               the law's own approximation error: blend toward the exact integrals
 //                       over the profile (lambda, null 0), then switch to them if BIC prefers;
-//                       without a profile, the profile p = 1 + b1 T1 + b2 T2 is identified too
+//                       without a profile, a quadratic profile in rho^2 is identified too
 //   anisotropy          kappa != 1 (null 1)
 //   pressure_shift_y    ky (null 0)
 //   speed_dependence    f(w) = f (1 - beta (1 - exp(-w / w_s))) (null beta = 0; w_s is scanned)

@@ -18,7 +18,8 @@
 // spinning uniform patch), or, with speed_in_exact, at the local slip speed w inside the
 // exact integrals.
 // exact(.) has the force scale F0 = f p* 2 pi R^2 A^1; with no profile given, its profile is
-// p = 1 + b1 T1(2 rho^2 - 1) + b2 T2(2 rho^2 - 1) with b1, b2 identified.
+// the quadratic in s = rho^2 p = (1 - s)^2 + 2 w_mid s (1 - s) + w_rim s^2 (Bernstein weights
+// w_mid, w_rim >= 0 identified: centre 1, rim w_rim, never negative; uniform at w = 1).
 #pragma once
 
 #include <array>
@@ -54,8 +55,8 @@ enum ModelParameter : int {
   kXMzFx,
   kXMzFy,  // crosstalk g_{c<-d}
   kShapeBlend,
-  kProfileB1,
-  kProfileB2,  // shape
+  kProfileMid,
+  kProfileRim,  // shape
   kSlipAngleOffset,
   kSpinOffset,     // the rig's kinematics
   kPatchGrowth,    // q of R = R0 (N / N0)^q

@@ -26,6 +26,20 @@ T speed_factor(const T& beta, const T& w_ref, const T& w) {
   return 1.0 - beta * (1.0 - exp(-w / w_ref));
 }
 
+// The parametric profile (no --profile) as a quadratic Bernstein polynomial in x = 2 rho^2 - 1,
+// s = (x + 1) / 2 = rho^2: p = (1 - s)^2 + 2 w_mid s (1 - s) + w_rim s^2 (centre 1, rim w_rim),
+// never negative for w_mid, w_rim >= 0. In Chebyshev terms p = c0 + c1 T1(x) + c2 T2(x) with
+// c0 = 3 (1 + w_rim) / 8 + w_mid / 4, c1 = (w_rim - 1) / 2, c2 = (1 + w_rim) / 8 - w_mid / 4;
+// returned as the coefficients of the basis laws 1, 1 + T1, 1 + T2 (exact_law_cache.hpp):
+// (c0 - c1 - c2, c1, c2). w_mid = w_rim = 1 is the uniform profile.
+template <class T>
+std::array<T, 3> parametric_profile_coefficients(const T& w_mid, const T& w_rim) {
+  const T c0 = 0.375 * (1.0 + w_rim) + 0.25 * w_mid;
+  const T c1 = 0.5 * (w_rim - 1.0);
+  const T c2 = 0.125 * (1.0 + w_rim) - 0.25 * w_mid;
+  return {c0 - c1 - c2, c1, c2};
+}
+
 }  // namespace detail
 
 template <class T>
@@ -93,12 +107,12 @@ Resultants<T> friction_part(const ModelSpec& s, const T* th, const Kinematics<K>
   }
   if (s.uses_exact()) {
     // The exact law of the profile (exact_law_cache.hpp): one law, or the parametric profile's
-    // three basis laws with coefficients (1 - b1 - b2, b1, b2). F0 = f p* R^2 L with f folded in.
+    // three basis laws (parametric_profile_coefficients). F0 = f p* R^2 L with f folded in.
     if (!s.exact_laws) throw std::logic_error("ModelSpec without exact laws (use base_model_spec)");
     const std::vector<ExactLaw>& laws = s.exact_laws->laws(s.speed_in_exact);
     std::array<T, 3> coef{T(1.0), T(0.0), T(0.0)};
     if (laws.size() == 3)
-      coef = {1.0 - th[kProfileB1] - th[kProfileB2], th[kProfileB1], th[kProfileB2]};
+      coef = detail::parametric_profile_coefficients(th[kProfileMid], th[kProfileRim]);
     T load(0.0);
     for (std::size_t i = 0; i < laws.size(); ++i) load += coef[i] * laws[i].load_area;
     const double Rl = laws.front().radius;

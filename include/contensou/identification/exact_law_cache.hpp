@@ -1,9 +1,11 @@
 // The exact laws of an identification model's profile (exact_law.hpp), built on first use and
 // shared by every spec copied from one base spec.
 //
-// A given profile has one law. The parametric profile p = 1 + b1 T1(2 t - 1) + b2 T2(2 t - 1)
-// (t = rho^2) is linear in (b1, b2), and so are the resultants: it has the laws of the basis
-// shapes phi0 = 1, phi1 = 1 + T1, phi2 = 1 + T2, with p = (1 - b1 - b2) phi0 + b1 phi1 + b2 phi2.
+// A given profile has one law. The parametric profile, a quadratic p = c0 + c1 T1(2 t - 1) +
+// c2 T2(2 t - 1) in t = rho^2 (its coefficients from non-negative Bernstein weights:
+// detail::parametric_profile_coefficients), is linear in (c0, c1, c2), and so are the
+// resultants: it has the laws of the basis shapes phi0 = 1, phi1 = 1 + T1, phi2 = 1 + T2, with
+// p = (c0 - c1 - c2) phi0 + c1 phi1 + c2 phi2.
 // The laws for f(w) = 1 - beta (1 - exp(-w / w_s)) inside the integrals (exponent 1) carry the
 // table of its falling part, so that f(w) costs what constant friction does; they are built
 // only when asked for (a second, slower build).
@@ -26,7 +28,7 @@ class ExactLawCache {
   // table, each built on the first call that asks for it (thread-safe). A build stopped by
   // `stop` (Interrupted) leaves nothing behind: the next call builds again.
   const std::vector<ExactLaw>& laws(bool slip_speed, const StopRequest& stop = {}) const;
-  // The basis coefficients of the profile at (b1, b2): {1} or {1 - b1 - b2, b1, b2}.
+  // Whether the profile is the parametric one (three basis laws).
   bool parametric() const { return !profile_; }
 
  private:
