@@ -252,8 +252,9 @@ TEST(Interrupt, AStoppedExactLawBuildLeavesNothingAndBuildsAgain) {
 // The seed tire (kx = 0.14) fitted with the parametric profile (three basis shapes): the
 // quadratic cannot follow its published series, and one Bernstein weight goes to its bound 0.
 // The bounded fit must end at the optimum, whose oracle is the same fit with that weight fixed
-// on the bound (an unconstrained problem): the same cost, the same parameters. Ceres' trust region alone crawled along the bound (its radius shrinking at every
-// clipped step) and stopped short: on 1,000 points 12 units of -2 log L above the optimum.
+// on the bound (an unconstrained problem): the same cost, the same parameters. Ceres' trust region
+// alone crawled along the bound (its radius shrinking at every clipped step) and stopped short: on
+// 1,000 points 12 units of -2 log L above the optimum.
 namespace {
 
 // The seed tire rolling (kx = 0.14): its diagrams at `points` points, 1 % noise, from the exact
