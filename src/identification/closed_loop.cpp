@@ -91,7 +91,7 @@ void set_speed_inside(ModelSpec& s, const ClosedLoopOptions& loop) {
 // slip-speed table).
 void build_laws(const ModelSpec& s, const StopRequest& stop) {
   throw_if_stopped(stop);
-  if (s.uses_exact() && s.exact_laws) s.exact_laws->laws(s.speed_in_exact, stop);
+  if (s.uses_exact() && s.exact_laws) s.exact_laws->laws(s.speed_in_exact, stop, s.profile_degree);
 }
 
 LoopState fit_state(const MeasuredData& data, ModelSpec spec, const NoiseSettings& noise) {
@@ -239,7 +239,9 @@ void prune(const MeasuredData& data, const NoiseSettings& noise, const ClosedLoo
     const double threshold = loop.alpha / static_cast<double>(report.accepted_effects.size());
     for (std::size_t k = 0; k < report.steps.size() && !removed; ++k) {
       LoopStep& acc = report.steps[k];
-      if (!acc.accepted || acc.kind == Effect::shape || acc.removed) continue;
+      if (!acc.accepted || acc.kind == Effect::shape || acc.kind == Effect::profile_detail ||
+          acc.removed)
+        continue;
       ModelSpec without = st.spec;
       for (const ParameterEstimate& e : acc.parameters) {
         const int i = parameter_index_by_name(e.name);
@@ -482,6 +484,53 @@ Trial* choose_among(std::vector<Trial>& trials, const std::vector<Candidate>& ca
   return best;
 }
 
+// The quadratic's Bernstein weights (1, w1, w2) raised to degree 4 (the same polynomial): two
+// elevations n -> n + 1, w'_k = (k / (n + 1)) w_(k-1) + (1 - k / (n + 1)) w_k.
+std::array<double, 5> raised_to_quartic(double w1, double w2) {
+  std::array<double, 5> w{1.0, w1, w2, 0.0, 0.0};
+  for (int n = 2; n < 4; ++n) {
+    std::array<double, 5> e{};
+    for (int k = 0; k <= n + 1; ++k) {
+      const double t = static_cast<double>(k) / (n + 1);
+      e[k] = (k > 0 ? t * w[k - 1] : 0.0) + (k <= n ? (1.0 - t) * w[k] : 0.0);
+    }
+    w = e;
+  }
+  return w;
+}
+
+// Right after the shape is accepted with the identified profile: the quartic profile, started
+// at the quadratic raised to degree 4 (the same profile: the fit starts at the quadratic's
+// optimum and can only improve), tested against it by the loop's rules (LR on 2 degrees of
+// freedom at alpha over the step's candidates, BIC, CV). A rig file of a tire whose profile is
+// not quadratic in rho^2 otherwise leaves a misfit that later steps fill with stand-ins.
+// True when the quartic is accepted (st is then its state).
+bool test_profile_detail(const MeasuredData& data, const NoiseSettings& noise,
+                         const ClosedLoopOptions& loop, int step, double threshold, LoopState& st,
+                         ClosedLoopReport& report) {
+  if (st.spec.profile_model || !st.spec.uses_exact() || st.spec.profile_degree != 2) return false;
+  ModelSpec quartic = st.spec;
+  quartic.profile_degree = 4;
+  const std::array<double, 5> w = raised_to_quartic(st.theta[kProfileW1], st.theta[kProfileW2]);
+  const int slots[4] = {kProfileW1, kProfileW2, kProfileW3, kProfileW4};
+  for (int k = 0; k < 4; ++k) {
+    quartic.value[slots[k]] = w[static_cast<std::size_t>(k + 1)];
+    quartic.free[slots[k]] = true;
+  }
+  const Candidate c{Effect::profile_detail, "quartic", {kProfileW3, kProfileW4}, -1};
+  const int values = data.count(0) + data.count(1) + data.count(2);
+  if (values < measured_values_needed(data, quartic, noise)) return false;
+  say(loop, step_label(step) + "fitting " + label(c));
+  StepFit fitted = fit_step(data, st, quartic, c, threshold, noise, loop);
+  say(loop, step_label(step) + label(c) + (fitted.step.accepted ? " accepted" : " rejected") +
+                " (" + fitted.step.verdict + ")");
+  report.steps.push_back(fitted.step);
+  if (!fitted.step.accepted) return false;
+  report.accepted_effects.push_back(describe(Effect::profile_detail).name);
+  st = std::move(fitted.ext);
+  return true;
+}
+
 ClosedLoopReport close_the_loop(const MeasuredData& data, const IdentificationOptions& options,
                                 const ClosedLoopOptions& loop) {
   ClosedLoopReport report;
@@ -543,6 +592,11 @@ ClosedLoopReport close_the_loop(const MeasuredData& data, const IdentificationOp
           .steps[report.steps.size() - trials.size() +
                  static_cast<std::size_t>(best - trials.data())]
           .fit_after.trace = st.fit.trace;
+      if (cands[best->candidate].effect == Effect::shape &&
+          test_profile_detail(data, noise, loop, step, threshold, st, report)) {
+        st.fit.trace = trace_residual(data, st.fit, st.spec.radius_m, covariates);
+        report.steps.back().fit_after.trace = st.fit.trace;
+      }
     }
     if (!accepted_any) break;
   }

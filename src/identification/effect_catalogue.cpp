@@ -12,13 +12,19 @@ using E = Effect;
 constexpr std::array<EffectDescriptor, kEffects> kCatalogue = {{
     {E::shape, "shape",
      "the law's own approximation error: the exact integrals over `--profile` replace the law "
-     "(without a profile, a quadratic profile in s = rho^2, p = (1-s)^2 + 2 w_mid s(1-s) + "
-     "w_rim s^2 with w_mid, w_rim >= 0 (never negative; uniform at 1, 1), is identified with "
-     "them)",
+     "(without a profile, a quadratic profile in s = rho^2, p = (1-s)^2 + 2 w1 s(1-s) + w2 s^2 "
+     "with w1, w2 >= 0 (never negative; uniform at 1, 1), is identified with them)",
      "blend lambda = 0",
      "the pressure profile's shape matters (the exact integrals fit better than the fractional "
      "law)",
      "more points with psi between 0.1 and 10, where the law's own error is largest"},
+    {E::profile_detail, "profile_detail",
+     "the identified profile (no `--profile`) one degree richer: its quadratic in rho^2 becomes "
+     "a quartic (Bernstein weights w1..w4 >= 0, started at the quadratic raised to degree 4), "
+     "tested right after the shape is accepted",
+     "the quartic equal to the quadratic",
+     "the pressure profile has more structure than a quadratic in rho^2 describes",
+     "a measured pressure profile (`--profile`), or more points with psi between 0.1 and 10"},
     {E::anisotropy, "anisotropy", "lateral friction kappa f != f", "kappa = 1",
      "friction differs along and across the patch", "a lateral sweep (sliding along y)"},
     {E::pressure_shift_y, "pressure_shift_y", "lateral pressure shift ky (camber, asymmetric load)",

@@ -28,8 +28,10 @@ constexpr ParameterInfo kInfo[kModelParameters] = {{"F0_N", "N", 0.0},
                                                    {"crosstalk_Mz_from_Fx", "m", 0.0},
                                                    {"crosstalk_Mz_from_Fy", "m", 0.0},
                                                    {"shape_blend", "1", 0.0},
-                                                   {"profile_w_mid", "1", 1.0},
-                                                   {"profile_w_rim", "1", 1.0},
+                                                   {"profile_w1", "1", 1.0},
+                                                   {"profile_w2", "1", 1.0},
+                                                   {"profile_w3", "1", 1.0},
+                                                   {"profile_w4", "1", 1.0},
                                                    {"slip_angle_offset_rad", "rad", 0.0},
                                                    {"spin_offset_radps", "rad/s", 0.0},
                                                    {"patch_growth_q", "1", 0.0},
@@ -68,8 +70,10 @@ ParameterBounds parameter_bounds(int index) {
       return {1e-3, inf};
     case kSpeedDrop:
       return {-0.9, 0.95};
-    case kProfileMid:
-    case kProfileRim:
+    case kProfileW1:
+    case kProfileW2:
+    case kProfileW3:
+    case kProfileW4:
       return {0.0, 20.0};  // Bernstein weights >= 0: the profile is never negative
     case kKx:
     case kKy:

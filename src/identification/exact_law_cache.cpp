@@ -6,12 +6,15 @@ ExactLawCache::ExactLawCache(double radius_m, std::optional<ExactModel<double>> 
                              double tolerance)
     : radius_m_(radius_m), tolerance_(tolerance), profile_(std::move(profile)) {}
 
-const std::vector<ExactLaw>& ExactLawCache::laws(bool slip_speed, const StopRequest& stop) const {
-  const int which = slip_speed ? 1 : 0;
-  std::call_once(once_[which], [this, which, &stop] {
+const std::vector<ExactLaw>& ExactLawCache::laws(bool slip_speed, const StopRequest& stop,
+                                                 int degree) const {
+  // The given profile's one law ignores the degree; the parametric profile's degree 4 reuses
+  // the three laws of degree 2 and adds 1 + T3, 1 + T4.
+  const int which = (slip_speed ? 1 : 0) + (!profile_ && degree == 4 ? 2 : 0);
+  std::call_once(once_[which], [this, which, slip_speed, &stop] {
     // Any f_s != f_k builds the falling table; the fit sets f_s = 1, f_k = 1 - beta, w_s.
     std::optional<SlipSpeedFriction<double>> slip;
-    if (which == 1) slip = SlipSpeedFriction<double>{1.0, 0.5, 1.0, 1.0};
+    if (slip_speed) slip = SlipSpeedFriction<double>{1.0, 0.5, 1.0, 1.0};
     ExactLawOptions options{tolerance_};
     options.stop = stop;
     std::vector<ExactLaw> laws;  // moved in when complete: an interrupted build leaves none
@@ -24,13 +27,20 @@ const std::vector<ExactLaw>& ExactLawCache::laws(bool slip_speed, const StopRequ
       laws_[which] = std::move(laws);
       return;
     }
-    for (const std::vector<double>& c : {std::vector<double>{1.0}, std::vector<double>{1.0, 1.0},
-                                         std::vector<double>{1.0, 0.0, 1.0}}) {
+    std::size_t first = 0;
+    if (which >= 2) {
+      laws = this->laws(slip_speed, stop, 2);
+      first = laws.size();
+    }
+    const std::vector<std::vector<double>> basis = {
+        {1.0}, {1.0, 1.0}, {1.0, 0.0, 1.0}, {1.0, 0.0, 0.0, 1.0}, {1.0, 0.0, 0.0, 0.0, 1.0}};
+    const std::size_t count = which >= 2 ? 5 : 3;
+    for (std::size_t b = first; b < count; ++b) {
       ContactPatch patch;
       patch.radius_m = radius_m_;
       patch.reference_pressure_pa = 1.0;
       patch.friction = 1.0;
-      patch.profile.shape = ChebyshevShape{c};
+      patch.profile.shape = ChebyshevShape{basis[b]};
       patch.slip_speed_friction = slip;
       laws.push_back(make_exact_law(make_exact_model(patch), options));
     }

@@ -24,7 +24,9 @@ constexpr int K = kModelParameters;
 // Whether a parameter belongs in the report of a model.
 bool reported(const ModelSpec& s, int i) {
   if (s.exact_only && (i == kA || i == kM0 || i == kMShape || i == kShapeBlend)) return false;
-  if ((i == kProfileMid || i == kProfileRim) && (s.profile_model || !s.uses_exact())) return false;
+  const bool parametric = !s.profile_model && s.uses_exact();
+  if ((i == kProfileW1 || i == kProfileW2) && !parametric) return false;
+  if (i == kProfileW3 || i == kProfileW4) return parametric && s.profile_degree == 4;
   if (i == kSpeedRef) return s.free[kSpeedDrop] || s.value[kSpeedDrop] != 0.0;
   return s.free[i] || i <= kKx || s.value[i] != parameter_info(i).null_value;
 }

@@ -55,7 +55,7 @@ FitReport judge_fit(const MeasuredData& data, const IdentificationOptions& judge
   spec.exact_only = true;
   for (int p : {kA, kM0, kMShape, kShapeBlend}) spec.free[p] = false;
   spec.value[kShapeBlend] = 1.0;
-  if (!spec.profile_model) spec.free[kProfileMid] = spec.free[kProfileRim] = true;
+  if (!spec.profile_model) spec.free[kProfileW1] = spec.free[kProfileW2] = true;
   try {
     return fit_model(data, spec, noise_settings_for(judge), nullptr, use);
   } catch (const Interrupted&) {

@@ -74,7 +74,7 @@ std::vector<Candidate> catalogue(const MeasuredData& data, const ModelSpec& s,
                                     : "exact integrals, profile identified",
                     {kShapeBlend},
                     kShapeBlend};
-    if (!s.profile_model) shape.parameters = {kShapeBlend, kProfileMid, kProfileRim};
+    if (!s.profile_model) shape.parameters = {kShapeBlend, kProfileW1, kProfileW2};
     out.push_back(shape);
   }
   if (!s.free[kKappa]) out.push_back({Effect::anisotropy, "", {kKappa}, kKappa});

@@ -328,7 +328,8 @@ TEST(LandingGear, StructuredJacobianMatchesDifferencesOfTheRightHandSide) {
             const GearMode mode{true, rolling, brake};
             GearState x;
             x << 1e-3, 0.02, 4e-3, 0.3, V * (rolling ? 0.97 : 0.6) / r, 2e-3, -4e-3, 0.05,
-                V * (rolling ? 0.96 : 0.62) / r, 0.0, 0.0;  // carcass states: inert here
+                V * (rolling ? 0.96 : 0.62) / r, 0.0, 0.0,  // carcass states: inert here
+                1.5e-3, -1e-3;  // each wheel's longitudinal tire deflection u, u2
             const double t = c.scenario.touchdown_time_s + 0.6 * c.scenario.load_ramp_s;
             const GearJacobian J = gear_jacobian(m, mode, t, x);
             for (int j = 0; j < kStateSize; ++j) {

@@ -11,6 +11,7 @@
 #include <atomic>
 #include <cmath>
 #include <memory>
+#include <random>
 #include <string>
 
 #include "contensou/identification.hpp"
@@ -47,8 +48,8 @@ std::array<double, K> edge_theta() {
   for (int c = 0; c < 3; ++c) t[offset_parameter(c)] = 3.0;
   for (int i = kXFxFy; i <= kXMzFy; ++i) t[i] = 0.01;
   t[kShapeBlend] = 0.4;
-  t[kProfileMid] = 0.1;
-  t[kProfileRim] = -0.05;
+  t[kProfileW1] = 0.1;
+  t[kProfileW2] = -0.05;
   return t;
 }
 
@@ -62,7 +63,7 @@ std::vector<Path> every_path() {
   ModelSpec law = base_model_spec(R, std::nullopt);
   law.exact_tolerance = 1e-12;
   ModelSpec blend = law;  // law + exact integrals over the parametric profile
-  blend.free[kShapeBlend] = blend.free[kProfileMid] = blend.free[kProfileRim] = true;
+  blend.free[kShapeBlend] = blend.free[kProfileW1] = blend.free[kProfileW2] = true;
   ModelSpec exact = law;  // exact integrals over the seed profile only
   ContactPatch patch = seed_tire_patch();
   patch.friction = 1.0;
@@ -247,6 +248,78 @@ TEST(Interrupt, AStoppedExactLawBuildLeavesNothingAndBuildsAgain) {
   EXPECT_EQ(cache.laws(false).size(), 3u);
 }
 
+// --- The parametric profile: Bernstein weights in Chebyshev terms ----------------------------
+
+namespace {
+
+// p(rho) from the basis-law coefficients (1, 1 + T1, ..., 1 + T4), x = 2 rho^2 - 1.
+double profile_from_basis(const std::array<double, 5>& b, double rho) {
+  const double x = 2.0 * rho * rho - 1.0;
+  double p = b[0];
+  for (int j = 1; j < 5; ++j)
+    p += b[static_cast<std::size_t>(j)] * (1.0 + std::cos(j * std::acos(x)));
+  return p;
+}
+
+// p(rho) straight from the Bernstein form, sum_k w_k C(n,k) s^k (1-s)^(n-k), s = rho^2.
+double bernstein(const std::vector<double>& w, double rho) {
+  const double s = rho * rho;
+  const int n = static_cast<int>(w.size()) - 1;
+  double p = 0.0;
+  for (int k = 0; k <= n; ++k)
+    p += w[static_cast<std::size_t>(k)] * std::tgamma(n + 1.0) /
+         (std::tgamma(k + 1.0) * std::tgamma(n - k + 1.0)) * std::pow(s, k) *
+         std::pow(1.0 - s, n - k);
+  return p;
+}
+
+}  // namespace
+
+// The coefficient matrices against the Bernstein form itself, at degree 2 and 4; the quadratic
+// raised to degree 4 by hand (two elevations) is the same profile; non-negative weights give a
+// non-negative profile.
+TEST(ParametricProfile, BernsteinWeightsGiveTheirPolynomialAndStayNonNegative) {
+  std::array<double, K> th{};
+  th[kProfileW1] = 0.7;
+  th[kProfileW2] = 0.2;
+  th[kProfileW3] = 1.9;
+  th[kProfileW4] = 0.05;
+  const auto b2 = detail::parametric_profile_coefficients(th.data(), 2);
+  const auto b4 = detail::parametric_profile_coefficients(th.data(), 4);
+  // Degree 2 -> 3 -> 4 by the elevation rule w'_k = k/(n+1) w_(k-1) + (1 - k/(n+1)) w_k.
+  const std::vector<double> q{1.0, 0.7, 0.2};
+  const std::vector<double> c{1.0, (1.0 + 2.0 * 0.7) / 3.0, (2.0 * 0.7 + 0.2) / 3.0, 0.2};
+  const std::vector<double> e{1.0, 0.25 + 0.75 * c[1], 0.5 * (c[1] + c[2]),
+                              0.75 * c[2] + 0.25 * c[3], c[3]};
+  std::array<double, K> raised{};
+  for (int k = 0; k < 4; ++k) raised[kProfileW1 + k] = e[static_cast<std::size_t>(k + 1)];
+  const auto b_raised = detail::parametric_profile_coefficients(raised.data(), 4);
+  for (double rho = 0.0; rho <= 1.0; rho += 0.05) {
+    EXPECT_NEAR(profile_from_basis(b2, rho), bernstein(q, rho), 1e-14) << rho;
+    EXPECT_NEAR(profile_from_basis(b4, rho), bernstein({1.0, 0.7, 0.2, 1.9, 0.05}, rho), 1e-14)
+        << rho;
+    EXPECT_NEAR(profile_from_basis(b_raised, rho), bernstein(q, rho), 1e-14) << rho;
+  }
+  std::mt19937 rng(3);
+  std::uniform_real_distribution<double> weight(0.0, 20.0);
+  for (int trial = 0; trial < 200; ++trial) {
+    for (int k = 0; k < 4; ++k) th[kProfileW1 + k] = trial % 7 == 0 ? 0.0 : weight(rng);
+    for (int degree : {2, 4}) {
+      const auto b = detail::parametric_profile_coefficients(th.data(), degree);
+      for (double rho = 0.0; rho <= 1.0; rho += 0.01)
+        EXPECT_GE(profile_from_basis(b, rho), -1e-12) << "degree " << degree << " rho " << rho;
+    }
+  }
+  th.fill(0.0);
+  th[kProfileW1] = th[kProfileW2] = th[kProfileW3] = th[kProfileW4] = 1.0;
+  for (int degree : {2, 4})
+    for (double rho = 0.0; rho <= 1.0; rho += 0.1)
+      EXPECT_NEAR(
+          profile_from_basis(detail::parametric_profile_coefficients(th.data(), degree), rho), 1.0,
+          1e-14)
+          << "uniform at unit weights, degree " << degree;
+}
+
 // --- Bounds: a parameter the data press against its bound ---------------------------------
 
 // The seed tire (kx = 0.14) fitted with the parametric profile (three basis shapes): the
@@ -280,13 +353,13 @@ TEST(FitBounds, ReachesTheOptimumWithAParameterOnItsBound) {
   spec.exact_only = true;
   spec.free[kA] = spec.free[kM0] = spec.free[kMShape] = spec.free[kShapeBlend] = false;
   spec.value[kShapeBlend] = 1.0;
-  spec.free[kProfileMid] = spec.free[kProfileRim] = true;
+  spec.free[kProfileW1] = spec.free[kProfileW2] = true;
   NoiseSettings noise = noise_settings_for(o);
   noise.given = std::array<double, 3>{15.0, 1.0, 1.0};  // one weighting for both fits
   const FitReport bounded = fit_model(data, spec, noise);
   ASSERT_TRUE(bounded.converged) << bounded.solver_summary;
   int pinned = -1, other = -1;
-  for (int i : {kProfileMid, kProfileRim}) {
+  for (int i : {kProfileW1, kProfileW2}) {
     const ParameterEstimate* e = bounded.parameter(parameter_info(i).name);
     ASSERT_NE(e, nullptr) << parameter_info(i).name << " not reported";
     (e->value == parameter_bounds(i).lower ? pinned : other) = i;

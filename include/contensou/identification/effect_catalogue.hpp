@@ -11,6 +11,7 @@ namespace contensou {
 
 enum class Effect {
   shape,
+  profile_detail,
   anisotropy,
   pressure_shift_y,
   speed_dependence,
@@ -23,7 +24,7 @@ enum class Effect {
   friction_dependence_curve,
   noise_growth,
 };
-inline constexpr int kEffects = 12;
+inline constexpr int kEffects = 13;
 
 struct EffectDescriptor {
   Effect effect;

@@ -18,8 +18,9 @@
 // spinning uniform patch), or, with speed_in_exact, at the local slip speed w inside the
 // exact integrals.
 // exact(.) has the force scale F0 = f p* 2 pi R^2 A^1; with no profile given, its profile is
-// the quadratic in s = rho^2 p = (1 - s)^2 + 2 w_mid s (1 - s) + w_rim s^2 (Bernstein weights
-// w_mid, w_rim >= 0 identified: centre 1, rim w_rim, never negative; uniform at w = 1).
+// a Bernstein polynomial in s = rho^2 of degree n = 2 (or 4), p = sum_k w_k C(n,k) s^k (1-s)^(n-k)
+// with w_0 = 1 and the weights w_1..w_n >= 0 identified: never negative, centre 1, rim w_n,
+// uniform at w = 1.
 #pragma once
 
 #include <array>
@@ -55,8 +56,10 @@ enum ModelParameter : int {
   kXMzFx,
   kXMzFy,  // crosstalk g_{c<-d}
   kShapeBlend,
-  kProfileMid,
-  kProfileRim,  // shape
+  kProfileW1,
+  kProfileW2,
+  kProfileW3,
+  kProfileW4,  // shape: the parametric profile's Bernstein weights (w3, w4: degree 4)
   kSlipAngleOffset,
   kSpinOffset,     // the rig's kinematics
   kPatchGrowth,    // q of R = R0 (N / N0)^q
@@ -120,6 +123,9 @@ struct ModelSpec {
   double c = 4.0, a_k = 1.0, mk_ratio = 0.375;
   // The exact integrals over the given profile (unset: the parametric profile).
   std::optional<ExactModel<double>> profile_model;
+  // The parametric profile's Bernstein degree: 2 (weights w1, w2) or 4 (w1 to w4, the loop's
+  // profile_detail step).
+  int profile_degree = 2;
   // The exact law of the profile (set with the profile by base_spec_for, or on first use).
   std::shared_ptr<ExactLawCache> exact_laws;
   // The profile's asymptote-matched law constants (reported with the exact model): a, m, M0/(F0 R).

@@ -26,18 +26,33 @@ T speed_factor(const T& beta, const T& w_ref, const T& w) {
   return 1.0 - beta * (1.0 - exp(-w / w_ref));
 }
 
-// The parametric profile (no --profile) as a quadratic Bernstein polynomial in x = 2 rho^2 - 1,
-// s = (x + 1) / 2 = rho^2: p = (1 - s)^2 + 2 w_mid s (1 - s) + w_rim s^2 (centre 1, rim w_rim),
-// never negative for w_mid, w_rim >= 0. In Chebyshev terms p = c0 + c1 T1(x) + c2 T2(x) with
-// c0 = 3 (1 + w_rim) / 8 + w_mid / 4, c1 = (w_rim - 1) / 2, c2 = (1 + w_rim) / 8 - w_mid / 4;
-// returned as the coefficients of the basis laws 1, 1 + T1, 1 + T2 (exact_law_cache.hpp):
-// (c0 - c1 - c2, c1, c2). w_mid = w_rim = 1 is the uniform profile.
+// The parametric profile (no --profile) as a Bernstein polynomial in s = rho^2 (x = 2 s - 1):
+// p = sum_k w_k B_{k,n}(s), w_0 = 1, B_{k,n} = C(n,k) s^k (1 - s)^(n-k), never negative for
+// w_k >= 0 (centre w_0, rim w_n). In Chebyshev terms p = sum_j c_j T_j(x), c = M_n w with
+// (rows j, columns k; B_{k,n} expanded in T_j(2 s - 1))
+//   n = 2: [3/8 1/4 3/8; -1/2 0 1/2; 1/8 -1/4 1/8]
+//   n = 4: [35/128 5/32 9/64 5/32 35/128; -7/16 -1/8 0 1/8 7/16; 7/32 -1/8 -3/16 -1/8 7/32;
+//           -1/16 1/8 0 -1/8 1/16; 1/128 -1/32 3/64 -1/32 1/128].
+// Returned as the coefficients of the basis laws 1, 1 + T1, ..., 1 + Tn (exact_law_cache.hpp):
+// (c0 - c1 - ... - cn, c1, ..., cn); entries past n are zero.
 template <class T>
-std::array<T, 3> parametric_profile_coefficients(const T& w_mid, const T& w_rim) {
-  const T c0 = 0.375 * (1.0 + w_rim) + 0.25 * w_mid;
-  const T c1 = 0.5 * (w_rim - 1.0);
-  const T c2 = 0.125 * (1.0 + w_rim) - 0.25 * w_mid;
-  return {c0 - c1 - c2, c1, c2};
+std::array<T, 5> parametric_profile_coefficients(const T* th, int degree) {
+  static constexpr double kM2[3][3] = {
+      {3.0 / 8, 1.0 / 4, 3.0 / 8}, {-1.0 / 2, 0.0, 1.0 / 2}, {1.0 / 8, -1.0 / 4, 1.0 / 8}};
+  static constexpr double kM4[5][5] = {{35.0 / 128, 5.0 / 32, 9.0 / 64, 5.0 / 32, 35.0 / 128},
+                                       {-7.0 / 16, -1.0 / 8, 0.0, 1.0 / 8, 7.0 / 16},
+                                       {7.0 / 32, -1.0 / 8, -3.0 / 16, -1.0 / 8, 7.0 / 32},
+                                       {-1.0 / 16, 1.0 / 8, 0.0, -1.0 / 8, 1.0 / 16},
+                                       {1.0 / 128, -1.0 / 32, 3.0 / 64, -1.0 / 32, 1.0 / 128}};
+  const int n = degree == 4 ? 4 : 2;
+  const T w[5] = {T(1.0), th[kProfileW1], th[kProfileW2], th[kProfileW3], th[kProfileW4]};
+  std::array<T, 5> c{T(0.0), T(0.0), T(0.0), T(0.0), T(0.0)};
+  for (int j = 0; j <= n; ++j)
+    for (int k = 0; k <= n; ++k) c[j] += (n == 4 ? kM4[j][k] : kM2[j][k]) * w[k];
+  T first = c[0];
+  for (int j = 1; j <= n; ++j) first -= c[j];
+  c[0] = first;
+  return c;
 }
 
 }  // namespace detail
@@ -109,10 +124,9 @@ Resultants<T> friction_part(const ModelSpec& s, const T* th, const Kinematics<K>
     // The exact law of the profile (exact_law_cache.hpp): one law, or the parametric profile's
     // three basis laws (parametric_profile_coefficients). F0 = f p* R^2 L with f folded in.
     if (!s.exact_laws) throw std::logic_error("ModelSpec without exact laws (use base_model_spec)");
-    const std::vector<ExactLaw>& laws = s.exact_laws->laws(s.speed_in_exact);
-    std::array<T, 3> coef{T(1.0), T(0.0), T(0.0)};
-    if (laws.size() == 3)
-      coef = detail::parametric_profile_coefficients(th[kProfileMid], th[kProfileRim]);
+    const std::vector<ExactLaw>& laws = s.exact_laws->laws(s.speed_in_exact, {}, s.profile_degree);
+    std::array<T, 5> coef{T(1.0), T(0.0), T(0.0), T(0.0), T(0.0)};
+    if (laws.size() > 1) coef = detail::parametric_profile_coefficients(th, s.profile_degree);
     T load(0.0);
     for (std::size_t i = 0; i < laws.size(); ++i) load += coef[i] * laws[i].load_area;
     const double Rl = laws.front().radius;
