@@ -228,6 +228,13 @@ LoopStep test_extension(const MeasuredData& data, const LoopState& cur, const Lo
   return trial;
 }
 
+// An accepted step the backward pass may take out: not the shape nor the profile's degree (the
+// model's form, not an effect with a null), and not taken out already.
+bool prunable(const LoopStep& acc) {
+  return acc.accepted && !acc.removed && acc.kind != Effect::shape &&
+         acc.kind != Effect::profile_detail;
+}
+
 // Backward pass: an effect accepted early may stand in for ones found later. Refit without
 // each accepted effect (shape excepted) and remove it if it is no longer significant at
 // alpha / (number accepted) or BIC prefers the model without it; repeat until none goes.
@@ -239,9 +246,7 @@ void prune(const MeasuredData& data, const NoiseSettings& noise, const ClosedLoo
     const double threshold = loop.alpha / static_cast<double>(report.accepted_effects.size());
     for (std::size_t k = 0; k < report.steps.size() && !removed; ++k) {
       LoopStep& acc = report.steps[k];
-      if (!acc.accepted || acc.kind == Effect::shape || acc.kind == Effect::profile_detail ||
-          acc.removed)
-        continue;
+      if (!prunable(acc)) continue;
       ModelSpec without = st.spec;
       for (const ParameterEstimate& e : acc.parameters) {
         const int i = parameter_index_by_name(e.name);
