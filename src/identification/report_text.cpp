@@ -227,17 +227,22 @@ std::string trace_text(const FitReport& fit) {
 }
 
 // With the profile identified (no --profile) and a residual that still follows the kinematics,
-// the quadratic profile misses the tire's shape, and what was accepted besides the shape
+// the identified profile misses the tire's shape, and what was accepted besides the shape
 // may stand in for that misfit (offsets, crosstalk): said, with the measurement that decides.
-std::string identified_profile_caveat(const ClosedLoopReport& loop, std::size_t accepted) {
-  if (loop.final_spec.profile_model || !loop.final_spec.uses_exact() || accepted < 2) return "";
+std::string identified_profile_caveat(const ClosedLoopReport& loop) {
+  const bool stand_in = std::any_of(loop.steps.begin(), loop.steps.end(), [](const LoopStep& st) {
+    return st.accepted && !st.removed && st.kind != Effect::shape &&
+           st.kind != Effect::profile_detail;
+  });
+  if (loop.final_spec.profile_model || !loop.final_spec.uses_exact() || !stand_in) return "";
   std::string kinematic;
   for (const TracedVariable& t : loop.final_fit.trace.followed)
     if (t.kinematic && kinematic.find(t.variable) == std::string::npos)
       kinematic += (kinematic.empty() ? "" : ", ") + t.variable;
   if (kinematic.empty()) return "";
-  return " Caution: the residual still follows the kinematics (" + kinematic +
-         "): the quadratic profile identified without --profile does not capture this "
+  return " Caution: the residual still follows the kinematics (" + kinematic + "): the " +
+         (loop.final_spec.profile_degree == 4 ? "quartic" : "quadratic") +
+         " profile identified without --profile does not capture this "
          "tire's shape, and the effects accepted after the shape may stand in for that misfit; a "
          "measured profile (--profile) decides them.";
 }
@@ -277,7 +282,7 @@ std::string loop_summary(const ClosedLoopReport& loop) {
   if (!not_needed.empty()) s += ". Tried and not needed: " + join(not_needed, ", ", ", ");
   if (!failed.empty()) s += ". Not decided (the fit failed): " + join(failed, ", ", ", ");
   s += ". The fit is limited by " + limit_text(loop.final_fit, loop.structure_remains);
-  return s + "." + identified_profile_caveat(loop, shown.size());
+  return s + "." + identified_profile_caveat(loop);
 }
 
 // The radius against the data: the pure-spin torque over the sliding force and the radius,
