@@ -254,12 +254,16 @@ std::string loop_summary(const ClosedLoopReport& loop) {
                ? st.effect
                : st.effect + " (" + st.detail + ")";
   };
+  // A candidate's last trial decides whether it is "not needed" or "not decided": a rejection
+  // after a failed fit, or a failed fit after a rejection, is tested against another model.
+  std::map<std::string, bool> last_failed;
+  for (const LoopStep& st : loop.steps) last_failed[step_name(st)] = step_fit_failed(st);
   for (const LoopStep& st : loop.steps) {
     const std::string name = step_name(st);
-    if (step_fit_failed(st))
-      failed.push_back(name);
-    else if (st.accepted && !st.removed)
+    if (st.accepted && !st.removed)
       shown.push_back(effect_in_words(st.kind, variable_in_words(st.detail)));
+    else if (last_failed[name])
+      failed.push_back(name);
     else
       not_needed.push_back(name);
   }

@@ -99,6 +99,32 @@ TEST(ReportText, AFailedStepIsFlaggedNotRejected) {
   EXPECT_EQ(k["steps"][1]["retries"].get<int>(), 1);
 }
 
+// A candidate tried twice is said once, by its last trial: rejected, then failed against the
+// extended model, it is "not decided"; failed, then rejected, it is "not needed".
+TEST(ReportText, ACandidateTriedTwiceIsSaidByItsLastTrial) {
+  ClosedLoopReport loop;
+  loop.base = fit_of(40);
+  loop.final_fit = loop.base;
+  LoopStep rejected;
+  rejected.effect = "shape";
+  rejected.error_before = 0.0366;
+  rejected.error_after = 0.0291;
+  rejected.verdict = "LR significant, BIC improves, cross-validated error improves";
+  LoopStep failed = rejected;
+  failed.error_before = 0.0220;
+  failed.error_after = 0.2270;  // ten times worse than the model it extends
+  ASSERT_FALSE(step_fit_failed(rejected));
+  ASSERT_TRUE(step_fit_failed(failed));
+  loop.steps = {rejected, failed};
+  const std::string late_failure = loop_summary(loop);
+  EXPECT_TRUE(contains(late_failure, "Not decided (the fit failed): shape")) << late_failure;
+  EXPECT_FALSE(contains(late_failure, "Tried and not needed")) << late_failure;
+  loop.steps = {failed, rejected};
+  const std::string late_rejection = loop_summary(loop);
+  EXPECT_TRUE(contains(late_rejection, "Tried and not needed: shape")) << late_rejection;
+  EXPECT_FALSE(contains(late_rejection, "Not decided")) << late_rejection;
+}
+
 // A radius that does not fit the data's torque (a radius in mm, or a torque column in N mm
 // read as N m) is warned about: M0 / (F0 R) = A^2 / A^1 lies in (0, 1] for any patch.
 TEST(ReportText, ARadiusTheTorqueCannotHaveIsWarnedAbout) {
