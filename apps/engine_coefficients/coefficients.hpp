@@ -1,4 +1,4 @@
-// Coefficients for other engines' spin friction from a contact patch (issue 14), each matched
+// Coefficients for other engines' spin friction from a contact patch, each matched
 // at one point and measured against the exact resultants over psi = v / (omega R) in
 // [1e-3, 1e3]. Errors are relative to F0 = f N (forces) and M0 = f N R A^2/A^1 (torque), the
 // exact pure-spin torque (theory.md section 4: M0 = 2 pi f R^3 p* A^2, N = 2 pi R^2 p* A^1).

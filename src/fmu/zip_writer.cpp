@@ -41,7 +41,7 @@ std::uint32_t size32(std::size_t n, const std::string& what) {
 }
 
 constexpr std::uint32_t kDosTime = 0;                            // 00:00:00
-constexpr std::uint32_t kDosDate = (1u << 5) | 1u | (40u << 9);  // 2020-01-01
+constexpr std::uint32_t kDosDate = (1u << 5) | 1u | (40u << 9);  // 1 January 2020
 
 // The fields the local header and the central directory share.
 void common(std::string& out, const ZipEntry& e, std::uint32_t crc) {

@@ -64,32 +64,32 @@ struct GearStructure {
   double offset_m = 0.25;            // l, patch centre left of the strut axis
   double wheel_radius_m = 0.57;      // r, rolling radius
   double wheel_inertia_kgm2 = 10.0;  // I_w
-  // Gyroscopic coupling of the wheel spin with lateral bending and torsion (issue 12, item 3):
+  // Gyroscopic coupling of the wheel spin with lateral bending and torsion:
   // the strut bends as a pendulum of length L about the aircraft's X axis, so the wheel rolls by
   // phi = y / L; its angular momentum I_w Omega along the axle then gives the strut the torque
   // -I_w Omega y' / L about its axis and the lateral force I_w Omega psi' / L at the wheel
   // (d/dt of the tilting momentum; they do no work together). 0 switches it off (the default).
   double gyroscopic_length_m = 0.0;  // L
-  // Torque-link freeplay (issue 12, item 7): the torsional spring acts on psi beyond a dead band
+  // Torque-link freeplay: the torsional spring acts on psi beyond a dead band
   // of half-width delta, k_psi d(psi) with the smooth dead zone
   //   d(psi) = ((psi - delta) + sqrt((psi - delta)^2 + s^2)) / 2
   //          + ((psi + delta) - sqrt((psi + delta)^2 + s^2)) / 2,   s = delta / 20
   // (d = psi - delta beyond, 0 inside, to O(s); slope 1 - delta / sqrt(delta^2 + s^2) = 1/800
   // at psi = 0); the damping acts throughout. 0: no freeplay.
   double freeplay_rad = 0.0;  // delta
-  // Twin-wheel gear (issue 12, item 7): two wheels on the axle at l + b/2 and l - b/2, each with
+  // Twin-wheel gear: two wheels on the axle at l + b/2 and l - b/2, each with
   // half the load, its own spin, anti-skid and patch, and the string's lateral deflection shared
   // (their lateral kinematics are the same). The drag difference of the two wheels acts on the
   // torsion through the lever b/2. 0: one wheel at the offset l.
   double wheel_spacing_m = 0.0;  // b
-  // Fore-aft bending of the strut (issue 12, item 3): the wheel moves along X by x against
+  // Fore-aft bending of the strut: the wheel moves along X by x against
   // k_x, c_x with modal mass m_x, loaded by the drag (the spin-up drag bends it back, its release
   // at the end of spin-up springs it forward). 0 stiffness: rigid fore-aft (the default).
   double fore_aft_mass_kg = 300.0;            // m_x
   double fore_aft_stiffness_n_per_m = 0.0;    // k_x (0: off)
   double fore_aft_damping_ns_per_m = 1000.0;  // c_x
-  // Lateral and torsional carcass compliance of the sliding tire (issue 12, item 3;
-  // docs/shimmy.md, "Carcass compliance"): the patch, massless, moves relative to the rim by
+  // Lateral and torsional carcass compliance of the sliding tire
+  // (docs/shimmy.md, "Carcass compliance"): the patch, massless, moves relative to the rim by
   // e_y (lateral, wheel frame) and e_psi (yaw); the carcass carries
   //   k_cy e_y + c_cy e_y' = Fy(patch),   k_cpsi e_psi + c_cpsi e_psi' = Mz(patch),
   // with the friction law evaluated at the patch's own motion (Pacejka 2012, ch. 5 and 7;
@@ -185,7 +185,7 @@ struct GearConfig {
 void validate(const GearConfig& config);
 
 // Named gears (docs/shimmy.md, "Parameters"): "default" (GearConfig{}: classically stable with a
-// margin of 1.4 over 30-90 m/s) and "legacy" (the gear of issue 5, torsional damping
+// margin of 1.4 over 30-90 m/s) and "legacy" (the first demo gear, torsional damping
 // 100 N m s/rad, classically unstable). Throws InvalidArgument for another name.
 GearConfig gear_config_by_name(const std::string& name);
 GearConfig legacy_gear_config();

@@ -1,4 +1,4 @@
-// From the tire test to the gear (issue 12, item 5; docs/shimmy.md, "Tire uncertainty"): the
+// From the tire test to the gear (docs/shimmy.md, "Tire uncertainty"): the
 // coupled law's dimensionless coefficients identified from measured diagrams
 // (contensou-identify's report: F0, a, M0, m, kx with their covariance) carried to the gear,
 // and a Monte Carlo over that covariance of the gear's eigenvalue growth rate.

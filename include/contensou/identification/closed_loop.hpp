@@ -103,7 +103,7 @@ struct ClosedLoopReport {
   NoiseModel noise_model = NoiseModel::additive;  // of the final fit (affine: noise step accepted)
   bool structure_remains = false;                 // the final residual is still not white
   // Model selection on a sample (close_the_loop_on_sample): the rows the steps were decided on
-  // and the rows of the data (both 0 when every row took part). base and final_fit are then
+  // and the rows of the data (both 0 when every row was used). base and final_fit are then
   // fitted on every row; the steps' statistics are the sample's.
   std::size_t selection_rows = 0, rows = 0;
 };
