@@ -632,12 +632,19 @@ ClosedLoopReport close_the_loop_on_sample(const MeasuredData& data, const std::v
   NoiseSettings noise = noise_settings_for(options);
   const std::vector<Covariate> covariates = covariates_of(data);
   say(loop, "fitting the base law on all " + std::to_string(data.points.size()) + " rows");
+  // Each fit on every row starts from the sample's: its parameters and its noise scales.
   ModelSpec base = base_spec_for(data, options);
+  for (const ParameterEstimate& e : report.base.parameters) {
+    const int i = parameter_index_by_name(e.name);
+    if (i >= 0 && base.free[i]) base.value[i] = e.value;
+  }
+  noise.start = report.base.noise_scales();
   LoopState st = fit_state(data, base, noise);
   st.fit.trace = trace_residual(data, st.fit, st.spec.radius_m, covariates);
   report.base = st.fit;
   say(loop, "fitting the chosen model on all " + std::to_string(data.points.size()) + " rows");
   noise.model = report.noise_model;
+  noise.start = report.final_fit.noise_scales();
   st = fit_state(data, report.final_spec, noise);
   st.fit.trace = trace_residual(data, st.fit, st.spec.radius_m, covariates);
   report.final_fit = st.fit;

@@ -431,6 +431,9 @@ Solution solve(const FitSetup& s) {
   Solution sol;
   sol.theta = s.spec.value;
   sol.scale = initial_noise_scales(s);
+  if (!s.noise.given && s.noise.start && s.noise.start->model == NoiseModel::affine &&
+      s.noise.model == NoiseModel::affine)
+    sol.slope = s.noise.start->slope;
   sol.packed.resize(s.active.size());
   for (std::size_t j = 0; j < s.active.size(); ++j) sol.packed[j] = sol.theta[s.active[j]];
   // The model at the start values, outside Ceres: a parameter outside its domain (a fixed

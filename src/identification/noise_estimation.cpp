@@ -69,9 +69,12 @@ namespace detail {
 // noise; affine noise starts as additive, b_c = 0).
 std::array<double, kChannels> initial_noise_scales(const FitSetup& s) {
   std::array<double, kChannels> scale{};
+  const bool started = !s.noise.given && s.noise.start && s.noise.start->model == s.noise.model;
   for (int c = 0; c < kChannels; ++c)
     scale[c] = s.noise.given ? (*s.noise.given)[c]
-                             : (s.noise.model == NoiseModel::relative ? 0.05 : s.floor_rel[c]);
+               : started && s.noise.start->scale[c] > 0.0
+                   ? s.noise.start->scale[c]
+                   : (s.noise.model == NoiseModel::relative ? 0.05 : s.floor_rel[c]);
   if (s.noise.given)
     for (int c = 0; c < kChannels; ++c)
       if (s.counts[c] > 0) require_positive("noise scale", scale[c]);

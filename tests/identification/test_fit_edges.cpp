@@ -426,3 +426,30 @@ TEST(FitForceScale, SameFitInAnyUnitInsideTheRangeAndARefusalOutside) {
     EXPECT_NE(std::string(e.what()).find("no friction to fit"), std::string::npos) << e.what();
   }
 }
+
+// --- Noise scales started from an earlier fit ---------------------------------------------
+
+// A fit whose noise scales start from an earlier fit's (close_the_loop_on_sample starts the fits
+// on every row from the sample's) ends where the default start ends: the same parameters and
+// scales to the rounds' tolerance, for the constant and the affine noise.
+TEST(FitNoiseStart, AStartFromAnEarlierFitEndsWhereTheDefaultStartEnds) {
+  const MeasuredData data = rolling_seed_tire_diagrams(200, false);
+  IdentificationOptions o;
+  o.radius_m = 0.087;
+  const ModelSpec spec = base_spec_for(data, o);
+  for (NoiseModel model : {NoiseModel::additive, NoiseModel::affine}) {
+    NoiseSettings noise = noise_settings_for(o);
+    noise.model = model;
+    const FitReport plain = fit_model(data, spec, noise);
+    noise.start = plain.noise_scales();
+    for (double& s : noise.start->scale) s *= 1.3;  // a sample's estimate, a little off
+    const FitReport started = fit_model(data, spec, noise);
+    for (const char* name : {"F0_N", "a", "M0_Nm", "m", "kx"})
+      EXPECT_NEAR(started.parameter(name)->value, plain.parameter(name)->value,
+                  1e-3 * plain.parameter(name)->std_error)
+          << name << " " << noise_model_name(model);
+    for (int c = 0; c < kChannels; ++c)
+      EXPECT_NEAR(started.noise_scale[c], plain.noise_scale[c], 2e-3 * plain.noise_scale[c])
+          << c << " " << noise_model_name(model);
+  }
+}

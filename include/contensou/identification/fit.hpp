@@ -147,6 +147,9 @@ FitReport fit_fractional_law(const MeasuredData& data, const IdentificationOptio
 struct NoiseSettings {
   NoiseModel model = NoiseModel::additive;
   std::optional<std::array<double, kChannels>> given;  // fixed scales (else estimated)
+  // Where the estimated scales start (a fit of a sample of the same rows, say), when its model
+  // is this one; else 5 % of each channel's peak. The rounds then settle sooner.
+  std::optional<NoiseScales> start;
   RobustLoss loss = RobustLoss::none;
   double loss_scale = 2.0;
   int iterations = 6;
