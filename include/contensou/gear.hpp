@@ -1,7 +1,8 @@
-// The gear module (target contensou::gear, SUNDIALS CVODE): the one-wheel main landing gear
-// with its contact models, the landing simulation, oscillation analysis, stability by eigenvalues,
-// stability maps, limit cycles and their bifurcation sweeps, and the tire-uncertainty Monte Carlo
-// (docs/shimmy.md). Includes the friction module.
+/// \file
+/// The gear module (target contensou::gear, SUNDIALS CVODE): the one-wheel main landing gear
+/// with its contact models, the landing simulation, oscillation analysis, stability by eigenvalues,
+/// stability maps, limit cycles and their bifurcation sweeps, and the tire-uncertainty Monte Carlo
+/// (docs/shimmy.md). Includes the friction module.
 #pragma once
 
 #include "contensou/friction.hpp"

@@ -1,6 +1,7 @@
-// The identification module (target contensou::identification, Ceres): measured diagrams and
-// their CSV, the diagram simulator, the weighted fit with confidence intervals, the effect
-// catalogue and the closed loop (seed section 5). Includes the friction module.
+/// \file
+/// The identification module (target contensou::identification, Ceres): measured diagrams and
+/// their CSV, the diagram simulator, the weighted fit with confidence intervals, the effect
+/// catalogue and the closed loop (seed section 5). Includes the friction module.
 #pragma once
 
 #include "contensou/friction.hpp"

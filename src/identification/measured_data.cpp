@@ -151,7 +151,12 @@ MeasuredData combine_measured(std::vector<MeasuredData> files, const std::vector
         "normal load", std::to_string(loads.size()) + " values",
         "give one load for every file or one a file (" + std::to_string(files.size()) + " files)");
   for (double n : loads) require_positive("normal load", n);
-  if (files.size() == 1 && loads.size() <= 1) return std::move(files.front());
+  if (files.size() == 1 && loads.empty()) return std::move(files.front());
+  if (files.size() == 1) {  // one file and one load: its rows without Fz take that load
+    for (MeasuredPoint& p : files.front().points)
+      if (!p.normal_load) p.normal_load = loads.front();
+    return std::move(files.front());
+  }
   MeasuredData all;
   for (std::size_t f = 0; f < files.size(); ++f) {
     MeasuredData& d = files[f];

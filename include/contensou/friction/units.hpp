@@ -43,13 +43,14 @@ const char* dimension_name(Dimension d);
 /// The units of a dimension this table knows, for messages ("m/s, km/h, mm/s").
 std::string units_of(Dimension d);
 
-// A column header split into its name and its unit: "pressure [kPa]", "Mz (N m)" (bracketed,
-// at the end), or "pressure_kPa" (after the last '_' when that is a unit of this table); the
-// unit "" when there is none. Spaces around either part are trimmed.
+/// A column header split into its name and its unit (split_name_and_unit).
 struct NameAndUnit {
-  std::string name;
-  std::string unit;
+  std::string name;  ///< the header without its unit, trimmed ("pressure")
+  std::string unit;  ///< the unit as written ("kPa"); "" when the header has none
 };
+/// Splits a column header into its name and its unit: "pressure [kPa]", "Mz (N m)" (bracketed,
+/// at the end), or "pressure_kPa" (after the last '_' when that is a unit of this table); the
+/// unit "" when there is none. Spaces around either part are trimmed.
 NameAndUnit split_name_and_unit(const std::string& header);
 
 }  // namespace contensou

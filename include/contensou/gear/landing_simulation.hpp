@@ -1,7 +1,8 @@
-// Integration of the landing-gear model with SUNDIALS CVODE (Adams-Moulton or BDF with Newton
-// iterations on a dense direct solver) and
-// root-finding for the events: load onset, full load, end of spin-up (sliding -> rolling),
-// renewed sliding (rolling -> sliding), brake on, brake off (docs/shimmy.md).
+/// \file
+/// Integration of the landing-gear model with SUNDIALS CVODE (Adams-Moulton or BDF with Newton
+/// iterations on a dense direct solver) and
+/// root-finding for the events: load onset, full load, end of spin-up (sliding to rolling),
+/// renewed sliding (rolling to sliding), brake on, brake off (docs/shimmy.md).
 #pragma once
 
 #include <memory>
@@ -15,118 +16,133 @@
 
 namespace contensou {
 
-// CVODE's linear multistep family. Adams-Moulton (orders 1-12) takes fewer steps than BDF
-// (orders 1-5) on the landing's lightly damped 16-32 Hz modes at a given tolerance and is more
-// accurate there (docs/shimmy.md, "Numerics"); its Newton iterations use the same Jacobian. BDF
-// is for configurations much stiffer than the default gear (stiff struts, dampers of
-// 1e4 1/s and more), where Adams' bounded stability region would force tiny steps.
-enum class Integrator { adams, bdf };
-
-// The absolute tolerance of each state is relative_tolerance times a scale: 1 mm, 0.1 m/s,
-// 1 mrad, 0.1 rad/s, 100 rad/s, 1 mm, 1 mm, 0.1 m/s, 100 rad/s (y, y', psi, psi', Omega,
-// lambda, x, x', Omega2).
+/// CVODE's linear multistep family. Adams-Moulton (orders 1-12) takes fewer steps than BDF
+/// (orders 1-5) on the landing's lightly damped 16-32 Hz modes at a given tolerance and is more
+/// accurate there (docs/shimmy.md, "Numerics"); its Newton iterations use the same Jacobian. BDF
+/// is for configurations much stiffer than the default gear (stiff struts, dampers of
+/// 1e4 1/s and more), where Adams' bounded stability region would force tiny steps.
+enum class Integrator {
+  adams,  ///< Adams-Moulton, orders 1-12 (the default)
+  bdf     ///< backward differentiation formulas, orders 1-5
+};
+/// How a landing is integrated and sampled. The absolute tolerance of each state is
+/// relative_tolerance times its scale in kStateScale; only the states the configuration switches
+/// on are integrated.
 struct SolverOptions {
-  double relative_tolerance = 1e-7;
-  double output_interval_s = 5e-4;  // samples for the time history and the shimmy analysis
-  bool record = true;               // keep the samples (the analysis runs either way)
-  long max_steps = 1000000;         // steps between two outputs
-  // CVODE's Newton matrix from gear_jacobian (structured, analytic where the law allows), or
-  // from CVODE's own difference quotients (one right-hand side per state) when false.
+  double relative_tolerance = 1e-7;  ///< CVODE's relative tolerance (> 0)
+  double output_interval_s = 5e-4;   ///< [s] samples for the time history and the shimmy analysis
+  bool record = true;                ///< keep the samples (the analysis runs either way)
+  long max_steps = 1000000;          ///< steps between two outputs (at least 1)
+  /// CVODE's Newton matrix from gear_jacobian (structured, analytic where the law allows), or
+  /// from CVODE's own difference quotients (one right-hand side per state) when false.
   bool analytic_jacobian = true;
-  Integrator method = Integrator::adams;
-  // Polled before every integrator step: the landing (and a map of them) throws Interrupted
-  // once it returns true (error.hpp).
+  Integrator method = Integrator::adams;  ///< Adams-Moulton or BDF
+  /// Polled before every integrator step: the landing (and a map of them) throws Interrupted
+  /// once it returns true (error.hpp).
   StopRequest stop{};
 };
 
+/// One output sample of a landing.
 struct LandingSample {
-  double t = 0.0;
-  GearState x = GearState::Zero();
-  ContactState contact;
-  bool rolling = false;
+  double t = 0.0;                   ///< time [s]
+  GearState x = GearState::Zero();  ///< the state (StateIndex; inactive states zero)
+  ContactState contact;             ///< the contact at (t, x) in the sample's mode
+  bool rolling = false;             ///< the mode's rolling tire (GearMode::rolling)
 };
 
+/// An event of a landing, at the instant it happened.
 struct LandingEvent {
-  double t = 0.0;
-  std::string what;  // "load onset", "full load", "spin-up", "sliding", "brake on", "brake off"
+  double t = 0.0;  ///< [s]
+  /// "load onset", "full load", "spin-up", "sliding", "brake on", "brake off".
+  std::string what;
 };
 
-// docs/shimmy.md, "What counts as shimmy": on the analysis window, the torsional oscillation
-// grows or holds (fitted growth rate above sustained_growth_rate_per_s, which admits a
-// saturated limit cycle) and ends above amplitude_threshold_rad.
+/// The descriptive shimmy flag of a simulated landing (docs/shimmy.md, section 4, "Simulated
+/// landings"): on the analysis window, the torsional oscillation grows or holds (fitted growth
+/// rate above sustained_growth_rate_per_s, which admits a saturated limit cycle) and ends above
+/// amplitude_threshold_rad.
 struct ShimmyCriterion {
-  double amplitude_threshold_rad = 1e-3;
-  double sustained_growth_rate_per_s = -0.1;
+  double amplitude_threshold_rad = 1e-3;      ///< the torsion's last amplitude above it [rad]
+  double sustained_growth_rate_per_s = -0.1;  ///< the torsion's growth rate above it [1/s]
 };
 
+/// The torsion of a landing judged on its analysis window.
 struct ShimmyMetrics {
+  /// The criterion met: a valid torsion estimate above both of ShimmyCriterion's limits.
   bool shimmy = false;
-  OscillationEstimate torsion;    // on the window
-  double peak_torsion_rad = 0.0;  // max |psi| after touchdown
-  double peak_lateral_m = 0.0;    // max |y| after touchdown
+  OscillationEstimate torsion;    ///< psi (position) and psi' (rate) on the window
+  double peak_torsion_rad = 0.0;  ///< max abs(psi) after touchdown [rad]
+  double peak_lateral_m = 0.0;    ///< max abs(y) after touchdown [m]
 };
 
+/// A simulated landing: its samples, events, shimmy metrics and the integrator's counters.
 struct LandingRun {
-  ContactModel contact = ContactModel::coupled;
-  std::vector<LandingSample> samples;  // empty unless options.record
-  std::vector<LandingEvent> events;
-  std::optional<double>
-      spin_up_s;  // touchdown to the end of spin-up (slip ratio below rolling_slip)
-  double window_start_s = 0.0, window_end_s = 0.0;
-  ShimmyMetrics metrics;
-  long steps = 0;
-  long rhs_evaluations = 0;       // by the integrator, including those of difference quotients
-  long jacobian_evaluations = 0;  // Jacobians formed (analytic or by difference quotients)
-  long linear_setups = 0;         // LU factorisations of the Newton matrix I - gamma J
-  long newton_iterations = 0;
-  long error_test_failures = 0;
-  long convergence_failures = 0;  // of the Newton iteration
-  double wall_s = 0.0;
+  ContactModel contact = ContactModel::coupled;  ///< the model that ran
+  std::vector<LandingSample> samples;  ///< every output_interval_s; empty unless options.record
+  std::vector<LandingEvent> events;    ///< in the order they happened
+  /// Touchdown to the end of spin-up (slip ratio below rolling_slip) [s]; empty if it never
+  /// ended.
+  std::optional<double> spin_up_s;
+  /// The analysis window's start [s] (analysis_window()).
+  double window_start_s = 0.0, window_end_s = 0.0;  ///< the analysis window's end [s]
+  ShimmyMetrics metrics;                            ///< the torsion on the analysis window
+  long steps = 0;                                   ///< integrator steps
+  long rhs_evaluations = 0;       ///< by the integrator, including those of difference quotients
+  long jacobian_evaluations = 0;  ///< Jacobians formed (analytic or by difference quotients)
+  long linear_setups = 0;         ///< LU factorisations of the Newton matrix I - gamma J
+  long newton_iterations = 0;     ///< Newton iterations of the integrator
+  long error_test_failures = 0;   ///< steps rejected by the local error test
+  long convergence_failures = 0;  ///< of the Newton iteration
+  double wall_s = 0.0;            ///< wall-clock time of simulate_landing [s]
 };
 
-// The analysis window of a scenario: the braked sliding phase [brake on + 0.1 s, brake off]
-// when braking, else [full load, end]; explicit window_start_s / window_end_s override.
+/// The analysis window [s] of a scenario: from full load to the end, when braking from the later
+/// of full load and brake on + 0.1 s to the earlier of brake off and the end; explicit
+/// window_start_s / window_end_s override; the whole run if the window would be empty.
 std::pair<double, double> analysis_window(const LandingScenario& scenario);
 
-// Integrates from t = 0 to scenario.end_time_s. Throws InvalidArgument for a bad
-// configuration or solver option, std::runtime_error naming the CVODE failure (flag, time) if
-// the integrator gives up.
+/// Integrates from t = 0 to scenario.end_time_s. Throws InvalidArgument for a bad
+/// configuration or solver option (more than 1e6 samples included), std::runtime_error naming
+/// the CVODE failure (flag, time) if the integrator gives up, Interrupted when options.stop asks.
 LandingRun simulate_landing(const GearModel& model, const SolverOptions& options = {},
                             const ShimmyCriterion& criterion = {});
 
-// The inputs of a landing driven step by step (LandingStepper): the forward speed V [m/s] and
-// the brake torque command [N m], the anti-skid's T_max (landing_gear.hpp, LandingScenario).
+/// The inputs of a landing driven step by step (LandingStepper): the forward speed V [m/s] and
+/// the brake torque command [N m], the anti-skid's T_max (landing_gear.hpp, LandingScenario).
 struct LandingInputs {
-  double forward_speed_mps = 70.0;
-  double brake_torque_nm = 0.0;  // 0: brake off
+  double forward_speed_mps = 70.0;  ///< V [m/s]
+  double brake_torque_nm = 0.0;     ///< T_max [N m]; 0: brake off
 };
 
-// A landing integrated piecewise by a host that drives it (the gear's Co-Simulation FMU): the
-// same CVODE set-up, events, mode switches and interpolated outputs as simulate_landing, with the
-// forward speed and the brake command as inputs held over each step instead of the scenario's
-// constant speed and brake events (scenario.braking, brake_on_s, brake_off_s and
-// brake_max_torque_nm are not used; the brake acts while the command is > 0, through the
-// scenario's anti-skid). A change of the inputs restarts the integrator where it stands.
+/// A landing integrated piecewise by a host that drives it (the gear's Co-Simulation FMU): the
+/// same CVODE set-up, events, mode switches and interpolated outputs as simulate_landing, with the
+/// forward speed and the brake command as inputs held over each step instead of the scenario's
+/// constant speed and brake events (scenario.braking, brake_on_s, brake_off_s and
+/// brake_max_torque_nm are not used; the brake acts while the command is > 0, through the
+/// scenario's anti-skid). A change of the inputs restarts the integrator where it stands.
 class LandingStepper {
  public:
-  // Throws InvalidArgument for a bad configuration, solver option or input.
+  /// Starts at t = 0 in the model's initial state. Throws InvalidArgument for a bad
+  /// configuration, solver option (relative_tolerance, max_steps) or input.
   LandingStepper(const GearModel& model, const SolverOptions& options, const LandingInputs& inputs);
-  ~LandingStepper();
-  LandingStepper(const LandingStepper&) = delete;
-  LandingStepper& operator=(const LandingStepper&) = delete;
+  ~LandingStepper();                                          ///< frees the integrator
+  LandingStepper(const LandingStepper&) = delete;             ///< not copyable
+  LandingStepper& operator=(const LandingStepper&) = delete;  ///< not copyable
 
-  // Throws InvalidArgument for a speed outside scenario.forward_speed_mps's range or a negative
-  // or non-finite torque.
+  /// Throws InvalidArgument for a speed outside scenario.forward_speed_mps's range or a negative
+  /// or non-finite torque.
   void set_inputs(const LandingInputs& inputs);
-  // Integrates from time() to t > time(), through the events on the way. Throws as
-  // simulate_landing does when the integrator gives up.
+  /// Integrates from time() to t > time(), through the events on the way. Throws
+  /// InvalidArgument for a t that is not finite or not after time(), and as simulate_landing
+  /// does when the integrator gives up or options.stop asks.
   void advance_to(double t);
 
-  double time() const;
-  const GearState& state() const;
-  const GearMode& mode() const;
-  LandingSample sample() const;    // time, state, contact and mode at time()
-  const GearModel& model() const;  // with the current inputs
+  double time() const;             ///< where the stepper stands [s]
+  const GearState& state() const;  ///< the state at time()
+  const GearMode& mode() const;    ///< the mode at time()
+  LandingSample sample() const;    ///< time, state, contact and rolling flag at time()
+  const GearModel& model() const;  ///< with the current inputs
+  /// The events so far, the input's brake switches among them.
   const std::vector<LandingEvent>& events() const;
 
  private:

@@ -1,7 +1,8 @@
-// The closed loop's catalogue of effects, one table: each effect's name (as in the JSON report),
-// what it adds to the model, its null, the words a report says it in and the measurement that
-// tells it from the others. The loop, the reports and the docs read this table; an effect is one
-// enumerator and one entry (a table that misses one does not compile).
+/// \file
+/// The closed loop's catalogue of effects, one table: each effect's name (as in the JSON report),
+/// what it adds to the model, its null, the words a report says it in and the measurement that
+/// tells it from the others. The loop, the reports and the docs read this table; an effect is one
+/// enumerator and one entry (a table that misses one does not compile).
 #pragma once
 
 #include <array>
@@ -9,42 +10,46 @@
 
 namespace contensou {
 
+/// An effect the closed loop can add to the model (its name: describe(e).name).
 enum class Effect {
-  shape,
-  profile_detail,
-  anisotropy,
-  pressure_shift_y,
-  speed_dependence,
-  channel_offset,
-  channel_crosstalk,
-  slip_angle_offset,
-  spin_offset,
-  patch_growth,
-  friction_dependence,
-  friction_dependence_curve,
-  noise_growth,
+  shape,                      ///< the exact integrals over the profile replace the law
+  profile_detail,             ///< the identified profile a quartic instead of a quadratic in rho^2
+  anisotropy,                 ///< lateral friction kappa f, kappa != 1
+  pressure_shift_y,           ///< lateral pressure shift ky
+  speed_dependence,           ///< friction falling with the slip speed, f(w)
+  channel_offset,             ///< a constant in one measured channel
+  channel_crosstalk,          ///< one channel picks up a share of another
+  slip_angle_offset,          ///< the rig's slip angle off by delta
+  spin_offset,                ///< the rig's spin reading off by omega_0
+  patch_growth,               ///< the patch radius grows with the load, R = R0 (N/N0)^q
+  friction_dependence,        ///< friction follows a recorded variable, f (1 + b1 z)
+  friction_dependence_curve,  ///< the same along a curve, + b2 (2 z^2 - 1)
+  noise_growth,               ///< the noise grows with the value, sigma = a + b |y|
 };
+/// The number of effects (enumerators of Effect).
 inline constexpr int kEffects = 13;
 
+/// One entry of the catalogue: an effect and its texts.
 struct EffectDescriptor {
-  Effect effect;
-  const char* name;      // "anisotropy": the JSON report's and the table's name
-  const char* adds;      // what it adds to the model, for the docs' table
-  const char* null;      // the parameter value at which it vanishes
-  const char* words;     // in a test engineer's words; "{}" stands for the step's detail
-  const char* separate;  // the measurement that shows it apart from effects it resembles
+  Effect effect;         ///< the effect
+  const char* name;      ///< "anisotropy": the JSON report's and the table's name
+  const char* adds;      ///< what it adds to the model, for the docs' table
+  const char* null;      ///< the parameter value at which it vanishes
+  const char* words;     ///< in a test engineer's words; "{}" stands for the step's detail
+  const char* separate;  ///< the measurement that shows it apart from effects it resembles
 };
 
-// The descriptor of an effect (the table's entry in enumerator order).
+/// The descriptor of an effect (the table's entry in enumerator order).
 const EffectDescriptor& describe(Effect e);
 
-// The effect of a name ("anisotropy"); false if there is none.
+/// The effect of a name ("anisotropy") into *e; false (e untouched) if there is none.
 bool effect_by_name(const std::string& name, Effect* e);
 
-// The words of an effect with its detail ("friction follows T [degC]").
+/// The words of an effect with its detail in place of "{}" ("friction follows T [degC]"); an
+/// empty detail reads "a recorded variable".
 std::string effect_in_words(Effect e, const std::string& detail);
 
-// The table as Markdown (docs/identification.md holds it; a test compares the two).
+/// The table as Markdown (docs/identification.md holds it; a test compares the two).
 std::string effect_catalogue_markdown();
 
 }  // namespace contensou

@@ -1,6 +1,7 @@
-// One identification as contensou-identify and Python's contensou.identify() run it: gross
-// errors found and left out (outliers.hpp), then the fit of the fractional law alone or the
-// closed loop on the clean rows.
+/// \file
+/// One identification as contensou-identify and Python's contensou.identify() run it: gross
+/// errors found and left out (outliers.hpp), then the fit of the fractional law alone or the
+/// closed loop on the clean rows.
 #pragma once
 
 #include <optional>
@@ -13,26 +14,35 @@
 
 namespace contensou {
 
+/// What identify() does: the fit's options, the closed loop's (or none) and the gross errors'
+/// treatment.
 struct IdentifyOptions {
-  IdentificationOptions fit;
-  std::optional<ClosedLoopOptions> loop;  // nullopt: the fit of the fractional law only
-  bool leave_out_outliers = true;         // find gross errors and fit without them
-  // Above this many rows, the robust fit that judges gross errors and the loop's model selection
-  // use a stratified sample of about this many (sweeps.hpp: stratified_sample); the gross errors
-  // are judged, and the reported fits made, on every row. 0: every row always.
+  IdentificationOptions fit;              ///< the fit's options (radius, load, profile, noise, ...)
+  std::optional<ClosedLoopOptions> loop;  ///< nullopt: the fit of the fractional law only
+  bool leave_out_outliers = true;         ///< find gross errors and fit without them
+  /// Above this many rows, the robust fit that judges gross errors and the loop's model selection
+  /// use a stratified sample of about this many (sweeps.hpp: stratified_sample); the gross errors
+  /// are judged, and the reported fits made, on every row. 0: every row always.
   std::size_t selection_rows = 4000;
 };
 
+/// The result of identify(): the gross errors left out, the data fitted and the fits.
 struct Identification {
-  std::vector<Outlier> outliers;  // left out of the fit (indices into the data given)
-  MeasuredData fitted;            // the data the reported fit used
-  std::vector<int> origin;        // for each point of `fitted`, its index in the data given
-  FitReport fit;                  // the fractional law (loop off) or the loop's base fit
-  std::optional<ClosedLoopReport> loop;
+  std::vector<Outlier> outliers;  ///< left out of the fit (indices into the data given)
+  MeasuredData fitted;            ///< the data the reported fit used
+  std::vector<int> origin;        ///< for each point of `fitted`, its index in the data given
+  /// The fractional law (loop off; its residual traced) or the loop's base fit.
+  FitReport fit;
+  std::optional<ClosedLoopReport> loop;  ///< the closed loop's report (nullopt: loop off)
+  /// The fit to report: the loop's final fit, or `fit` when the loop was off.
   const FitReport& final_fit() const { return loop ? loop->final_fit : fit; }
 };
 
-// Throws as fit_fractional_law and close_the_loop do.
+/// Finds the gross errors (options.leave_out_outliers: up to ten rounds of a robust fit, the
+/// values find_outliers names and a refit without them; outliers sorted most extreme first),
+/// then fits the fractional law to the clean rows, or closes the loop on them
+/// (close_the_loop_on_sample). Throws as fit_fractional_law, fit_model and close_the_loop do
+/// (Interrupted when options.fit.stop asks).
 Identification identify(const MeasuredData& data, const IdentifyOptions& options);
 
 }  // namespace contensou

@@ -1,7 +1,8 @@
-// The identification report as text, as contensou-identify prints it and as Python's
-// IdentificationResult.text gives it: the input, the parameters with their intervals, the
-// channels' diagnostics, warnings in words, the closed loop's steps with a legend, and a
-// plain-language summary. The JSON report (report.hpp) carries the same facts.
+/// \file
+/// The identification report as text, as contensou-identify prints it and as Python's
+/// IdentificationResult.text gives it: the input, the parameters with their intervals, the
+/// channels' diagnostics, warnings in words, the closed loop's steps with a legend, and a
+/// plain-language summary. The JSON report (report.hpp) carries the same facts.
 #pragma once
 
 #include <string>
@@ -13,24 +14,26 @@
 
 namespace contensou {
 
-// Fewer residual degrees of freedom than this per estimated noise scale make a warning: a
-// scale estimated from k degrees of freedom has a relative standard error of about
-// 1 / sqrt(2 k), 22 % at 10.
+/// Fewer residual degrees of freedom than this per estimated noise scale make a warning: a
+/// scale estimated from k degrees of freedom has a relative standard error of about
+/// 1 / sqrt(2 k), 22 % at 10.
 inline constexpr int kFewDegreesOfFreedomPerScale = 10;
 
-// What a reader must know before trusting the fit, in words (empty if nothing): too little data
-// for the noise scales, parameters the data do not determine, a solver that did not converge.
+/// What a reader must know before trusting the fit, in words (empty if nothing): too little data
+/// for the noise scales, parameters the data do not determine, a solver that did not converge,
+/// a radius that cannot match the torque (M0 / (F0 R) above 1.05 or below 0.05).
 std::vector<std::string> fit_warnings(const FitReport& fit);
 
-// The loop's outcome in plain words: what the data show, what was tried and not needed, what
-// limits the fit.
+/// The loop's outcome in plain words: what the data show, what was tried and not needed, what
+/// was not decided because its fit failed, what limits the fit.
 std::string loop_summary(const ClosedLoopReport& loop);
 
-// The fit of the fractional law alone: input, parameters, channels, fit line, warnings.
+/// The fit of the fractional law alone: input, parameters, channels, fit line, residual
+/// whiteness and trace, warnings.
 std::string fit_report_text(const ReportInput& input, const FitReport& fit);
 
-// The closed loop: the base fit as above, the steps with a legend, the final model and a
-// summary in plain words.
+/// The closed loop: the base fit as above, the steps with a legend, the accepted effects, the
+/// final model (when an effect was accepted) and a summary in plain words.
 std::string loop_report_text(const ReportInput& input, const ClosedLoopReport& loop);
 
 }  // namespace contensou
