@@ -46,7 +46,7 @@ TEST(CombineMeasured, EachRowKeepsItsFileAndLineAndRecordedColumnsMatchByHeader)
   EXPECT_EQ(all.points[0].source, 0);
   EXPECT_EQ(all.points[2].source, 1);
   EXPECT_EQ(all.points[1].line, 3);
-  EXPECT_EQ(all.points[2].line, 3);  // the comment line counts
+  EXPECT_EQ(all.points[2].line, 3);    // the comment line counts
   ASSERT_EQ(all.recorded.size(), 2u);  // T from both files, p from the second
   std::size_t t = all.recorded[0].header == "T [degC]" ? 0 : 1;
   const std::size_t p = 1 - t;
