@@ -274,7 +274,8 @@ constexpr std::array kRolling{
 constexpr std::array kScenario{
     number("scenario.forward_speed_mps", "m/s", kPositive, "V, forward speed",
            [](GearConfig& c) -> double& { return c.scenario.forward_speed_mps; }),
-    number("scenario.drift_speed_mps", "m/s", kFinite, "Vd, lateral ground speed at touchdown",
+    number("scenario.drift_speed_mps", "m/s", kFinite,
+           "Vd, lateral ground speed (crosswind drift, constant over the run)",
            [](GearConfig& c) -> double& { return c.scenario.drift_speed_mps; }),
     number("scenario.static_load_n", "N", kPositive, "N_s, vertical load after the ramp",
            [](GearConfig& c) -> double& { return c.scenario.static_load_n; }),

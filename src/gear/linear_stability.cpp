@@ -321,6 +321,16 @@ void describe_dominant_mode(const GearModel& model, const QuasiSteadyState& q,
       friction_work(mode_energy(flat, q, contact_jacobian(flat, q), v, ev.imag()));
 }
 
+// The drag slope -dFx/dvx against the sliding speed the law reads (StabilityReport): through
+// the wheel speed, vx = ... - Omega r, so -dFx/dvx = (dFx/dOmega) / r; with longitudinal
+// relaxation the law reads V u / sigma_x, so -dFx/dvx = -(dFx/du) sigma_x / V. Both wheels.
+double drag_slope(const GearModel& model, const Eigen::Matrix<double, 4, kStateSize>& Jc) {
+  const double sigma_x = model.config.tire.longitudinal_relaxation_length_m;
+  if (sigma_x > 0.0)
+    return -(Jc(0, kSlipX) + Jc(0, kSlipX2)) * sigma_x / model.config.scenario.forward_speed_mps;
+  return (Jc(0, kSpin) + Jc(0, kSpin2)) / model.config.structure.wheel_radius_m;
+}
+
 }  // namespace
 
 StabilityReport assess_stability(const GearModel& model, StabilityPhase phase,
@@ -347,7 +357,7 @@ StabilityReport assess_stability(const GearModel& model, StabilityPhase phase,
   }
   const Eigen::Matrix<double, 4, kStateSize> Jc = contact_jacobian(model, q);
   rep.spin_torque_damping_nms_per_rad = -Jc(2, kPsiDot);
-  rep.drag_slope_ns_per_m = (Jc(0, kSpin) + Jc(0, kSpin2)) / model.config.structure.wheel_radius_m;
+  rep.drag_slope_ns_per_m = drag_slope(model, Jc);
   rep.friction = contact_state(model, q.mode, q.t, q.x).friction;
   double best_share = -1.0;
   for (int k : order) {

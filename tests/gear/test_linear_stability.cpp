@@ -416,3 +416,35 @@ TEST(LinearStability, FallOfFrictionIsWhatFeedsTheLargeOffset) {
   EXPECT_NEAR(q.energy.fall_of_friction, 0.0, 1e-9);
   EXPECT_LT(q.growth_rate_per_s, 0.0);  // constant f: sliding friction damps
 }
+
+// The drag slope -dFx/dvx at the braked state: read through the tire's longitudinal deflection
+// (relaxation on, the default) it equals the one read through the wheel speed (relaxation off),
+// and for the decoupled model it is the closed form of Fx = -N f(w) vx / w:
+// -dFx/dvx = N (f'(w) vx^2 / w^2 + f(w) vy^2 / w^3), negative where f falls.
+TEST(LinearStability, DragSlopeIsTheSameThroughTheDeflectionAndTheWheelSpeed) {
+  StabilityOptions o;
+  o.simulate_perturbation = false;
+  for (ContactModel cm : {ContactModel::coupled, ContactModel::decoupled}) {
+    GearConfig relaxed;
+    GearConfig rigid = relaxed;
+    rigid.tire.longitudinal_relaxation_length_m = 0.0;
+    ASSERT_GT(relaxed.tire.longitudinal_relaxation_length_m, 0.0);
+    const GearModel m = make_gear_model(relaxed, cm);
+    const StabilityReport a = assess_stability(m, StabilityPhase::braked_slide, o);
+    const StabilityReport b =
+        assess_stability(make_gear_model(rigid, cm), StabilityPhase::braked_slide, o);
+    ASSERT_TRUE(a.state.converged && b.state.converged) << to_string(cm);
+    EXPECT_LT(a.drag_slope_ns_per_m, 0.0) << to_string(cm);
+    EXPECT_NEAR(a.drag_slope_ns_per_m, b.drag_slope_ns_per_m,
+                1e-3 * std::abs(b.drag_slope_ns_per_m))
+        << to_string(cm);
+    if (cm != ContactModel::decoupled) continue;
+    const ContactState cs = contact_state(m, a.state.mode, a.state.t, a.state.x);
+    const double vx = cs.slip.vx, vy = cs.slip.vy, w = std::hypot(vx, vy), h = 1e-5 * w;
+    const auto& fc = m.config.tire.friction;
+    const double df = (friction_at(fc, w + h) - friction_at(fc, w - h)) / (2 * h);
+    const double expected =
+        cs.load_n * (df * vx * vx / (w * w) + friction_at(fc, w) * vy * vy / (w * w * w));
+    EXPECT_NEAR(a.drag_slope_ns_per_m, expected, 0.02 * std::abs(expected));
+  }
+}

@@ -111,10 +111,10 @@ struct StabilityReport {
   /// Slope of the friction torque against psi' at the state (-dMz/dpsi') [N m s/rad]: what the
   /// contact adds to the torsional damping (decoupled model: about M0 R / eps).
   double spin_torque_damping_nms_per_rad = 0.0;
-  /// Slope of the drag against the patch's sliding speed [N s/m], taken through the wheel speed:
-  /// (dFx/dOmega) / r, which is -dFx/dvx where the law sees the kinematic vx; negative on the
-  /// falling part of f(w). With longitudinal relaxation on (the default) the law sees u, not
-  /// Omega, and this is 0.
+  /// Slope of the drag against the sliding speed the law reads, -dFx/dvx [N s/m], summed over
+  /// the wheels: (dFx/dOmega) / r where the law reads the kinematic vx, -(dFx/du) sigma_x / V
+  /// with longitudinal relaxation on (the law reads V u / sigma_x); negative on the falling part
+  /// of f(w) (docs/shimmy.md, "Where the energy comes from").
   double drag_slope_ns_per_m = 0.0;
   double friction = 0.0;  ///< f at the state
   /// Of the dominant oscillatory mode at an amplitude of 1 mrad of torsion or 1 mm of lateral or
