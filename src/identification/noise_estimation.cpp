@@ -17,48 +17,52 @@ constexpr double kNoiseFloor = 1e-6;
 
 // Affine noise of one channel from its residuals e_i and |yhat_i|: sigma_i = a + b |yhat_i|
 // by maximum likelihood of the Gaussian residuals (pseudo-likelihood of a variance function,
-// Carroll & Ruppert 1988, ch. 3). Written sigma_i = s w_i(t), w_i = (1 - t) + t |yhat_i| / peak
-// (s is sigma at the channel's peak), the scale has the closed form s^2(t) = sum (e_i / w_i)^2 /
-// dof, and t in [0, 0.99] minimises the profile -2 log L(t) = n log s^2(t) + 2 sum log w_i(t):
-// a grid of 34 points, then golden section in the best one's bracket. a = s (1 - t),
-// b = s t / peak; t = 0 is the additive model, t = 0.99 keeps a >= 1 % of sigma at the peak.
+// Carroll & Ruppert 1988, ch. 3). Written sigma_i = s w_i(r), w_i = r + (1 - r) |yhat_i| / peak
+// (s is sigma at the channel's peak), the scale has the closed form s^2(r) = sum (e_i / w_i)^2 /
+// dof, and r in [1e-4, 1] minimises the profile -2 log L(r) = n log s^2(r) + 2 sum log w_i(r):
+// a grid of 49 points in log r, then golden section in the best one's bracket. a = s r,
+// b = s (1 - r) / peak; r = 1 is the additive model, r = 1e-4 (a = 1e-4 of sigma at the peak)
+// is as near to purely relative noise (a = 0) as the weights of the values near zero allow.
 std::array<double, 2> affine_noise(const std::vector<double>& e, const std::vector<double>& y,
                                    double peak, double dof, double s_floor) {
   const auto n = static_cast<double>(e.size());
-  const auto sum_sq = [&](double t, double* log_w) {
+  const auto sum_sq = [&](double r, double* log_w) {
     double ss = 0.0;
     *log_w = 0.0;
     for (std::size_t i = 0; i < e.size(); ++i) {
-      const double w = (1.0 - t) + t * y[i] / peak;
+      const double w = r + (1.0 - r) * y[i] / peak;
       ss += e[i] * e[i] / (w * w);
       *log_w += std::log(w);
     }
     return std::max(ss, 1e-300);
   };
-  const auto m2ll = [&](double t) {
+  // -2 log L at r = 10^u, u in [log10 r_min, 0].
+  const auto m2ll = [&](double u) {
     double log_w = 0.0;
-    const double ss = sum_sq(t, &log_w);
+    const double ss = sum_sq(std::pow(10.0, u), &log_w);
     return n * std::log(ss) + 2.0 * log_w;
   };
-  constexpr double t_max = 0.99;
-  constexpr int grid = 33;
+  constexpr double u_min = -4.0;
+  constexpr int grid = 48;
+  const auto at = [&](int k) { return u_min * (1.0 - static_cast<double>(k) / grid); };
   int best = 0;
   for (int k = 1; k <= grid; ++k)
-    if (m2ll(t_max * k / grid) < m2ll(t_max * best / grid)) best = k;
-  double lo = t_max * std::max(best - 1, 0) / grid, hi = t_max * std::min(best + 1, grid) / grid;
+    if (m2ll(at(k)) < m2ll(at(best))) best = k;
+  double lo = at(std::max(best - 1, 0)), hi = at(std::min(best + 1, grid));
   const double g = 0.5 * (std::sqrt(5.0) - 1.0);
   for (int it = 0; it < 40; ++it) {
-    const double t1 = hi - g * (hi - lo), t2 = lo + g * (hi - lo);
-    if (m2ll(t1) < m2ll(t2))
-      hi = t2;
+    const double u1 = hi - g * (hi - lo), u2 = lo + g * (hi - lo);
+    if (m2ll(u1) < m2ll(u2))
+      hi = u2;
     else
-      lo = t1;
+      lo = u1;
   }
-  double t = 0.5 * (lo + hi);
-  if (m2ll(t_max * best / grid) < m2ll(t)) t = t_max * best / grid;
+  double u = 0.5 * (lo + hi);
+  if (m2ll(at(best)) < m2ll(u)) u = at(best);
+  const double r = std::pow(10.0, u);
   double log_w = 0.0;
-  const double s = std::max(std::sqrt(sum_sq(t, &log_w) / std::max(dof, 1.0)), s_floor);
-  return {s * (1.0 - t), s * t / peak};
+  const double sc = std::max(std::sqrt(sum_sq(r, &log_w) / std::max(dof, 1.0)), s_floor);
+  return {sc * r, sc * (1.0 - r) / peak};
 }
 
 }  // namespace
