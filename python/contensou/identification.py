@@ -104,6 +104,10 @@ class IdentificationResult:
         # The rows fitted (their index in the data given) and the gross errors left out.
         self.rows: np.ndarray = np.asarray(raw["rows"]).astype(np.int64)
         self.outliers: list[dict[str, Any]] = list(self.report["input"].get("outliers", []))
+        # Values first taken for gross errors that the final model fits (put back in the fit).
+        self.outliers_put_back: list[dict[str, Any]] = list(
+            self.report["input"].get("outliers_put_back", [])
+        )
         self.kinematics: np.ndarray = np.asarray(raw["kinematics"])
         self.measured: np.ndarray = np.asarray(raw["measured"])
         self.prediction: np.ndarray = np.asarray(raw["final_prediction"])

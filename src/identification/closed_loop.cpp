@@ -9,6 +9,7 @@
 #include "contensou/identification/effect_catalogue.hpp"
 #include "contensou/identification/residual_trace.hpp"
 #include "contensou/identification/statistics.hpp"
+#include "fit_problem.hpp"
 #include "loop_candidates.hpp"
 
 namespace contensou {
@@ -616,19 +617,8 @@ ClosedLoopReport close_the_loop(const MeasuredData& data, const IdentificationOp
   return report;
 }
 
-ClosedLoopReport close_the_loop_on_sample(const MeasuredData& data, const std::vector<char>& sample,
-                                          const IdentificationOptions& options,
-                                          const ClosedLoopOptions& loop) {
-  MeasuredData part = data;
-  part.points.clear();
-  for (std::size_t i = 0; i < data.points.size(); ++i)
-    if (i >= sample.size() || sample[i]) part.points.push_back(data.points[i]);
-  if (part.points.size() == data.points.size()) return close_the_loop(data, options, loop);
-  say(loop, "choosing the model on " + std::to_string(part.points.size()) + " of " +
-                std::to_string(data.points.size()) + " rows (every sweep, every variable's range)");
-  ClosedLoopReport report = close_the_loop(part, options, loop);
-  report.selection_rows = part.points.size();
-  report.rows = data.points.size();
+void refit_on_every_row(const MeasuredData& data, const IdentificationOptions& options,
+                        const ClosedLoopOptions& loop, ClosedLoopReport& report) {
   NoiseSettings noise = noise_settings_for(options);
   const std::vector<Covariate> covariates = covariates_of(data);
   say(loop, "fitting the base law on all " + std::to_string(data.points.size()) + " rows");
@@ -650,6 +640,29 @@ ClosedLoopReport close_the_loop_on_sample(const MeasuredData& data, const std::v
   report.final_fit = st.fit;
   report.final_spec = st.spec;
   report.structure_remains = !st.fit.residual_white || !st.fit.trace.followed.empty();
+}
+
+std::vector<Resultants<double>> predict_final_model(const ClosedLoopReport& report,
+                                                    const MeasuredData& data) {
+  ModelSpec spec = report.final_spec;
+  build_laws(spec, {});
+  return detail::evaluate_all(spec, spec.value.data(), data);
+}
+
+ClosedLoopReport close_the_loop_on_sample(const MeasuredData& data, const std::vector<char>& sample,
+                                          const IdentificationOptions& options,
+                                          const ClosedLoopOptions& loop) {
+  MeasuredData part = data;
+  part.points.clear();
+  for (std::size_t i = 0; i < data.points.size(); ++i)
+    if (i >= sample.size() || sample[i]) part.points.push_back(data.points[i]);
+  if (part.points.size() == data.points.size()) return close_the_loop(data, options, loop);
+  say(loop, "choosing the model on " + std::to_string(part.points.size()) + " of " +
+                std::to_string(data.points.size()) + " rows (every sweep, every variable's range)");
+  ClosedLoopReport report = close_the_loop(part, options, loop);
+  report.selection_rows = part.points.size();
+  report.rows = data.points.size();
+  refit_on_every_row(data, options, loop, report);
   return report;
 }
 

@@ -1,6 +1,7 @@
 #include "contensou/identification/identify.hpp"
 
 #include <algorithm>
+#include <cmath>
 
 #include "contensou/identification/sweeps.hpp"
 
@@ -65,6 +66,30 @@ FitReport judge_fit(const MeasuredData& data, const IdentificationOptions& judge
   }
 }
 
+// The outliers the loop's final model fits within kPutBackSigma of its noise scale go to
+// r.put_back (with that residual in sigma); the rest stay out. Returns whether any went back.
+bool put_back_fitting_values(const MeasuredData& data, Identification& r) {
+  const FitReport& fit = r.loop->final_fit;
+  const std::vector<Resultants<double>> model = predict_final_model(*r.loop, data);
+  std::vector<Outlier> kept;
+  for (Outlier o : r.outliers) {
+    const double yhat = model[static_cast<std::size_t>(o.point)].vector()(o.channel);
+    const double sigma =
+        fit.noise_model == NoiseModel::relative
+            ? fit.noise_scale[o.channel] * std::abs(yhat)
+            : fit.noise_scale[o.channel] + fit.noise_slope[o.channel] * std::abs(yhat);
+    const double z = (o.value - yhat) / sigma;
+    if (sigma > 0.0 && std::isfinite(z) && std::abs(z) <= kPutBackSigma) {
+      o.residual_sigma = z;
+      r.put_back.push_back(o);
+    } else {
+      kept.push_back(o);
+    }
+  }
+  r.outliers = std::move(kept);
+  return !r.put_back.empty();
+}
+
 }  // namespace
 
 Identification identify(const MeasuredData& data, const IdentifyOptions& options) {
@@ -96,6 +121,10 @@ Identification identify(const MeasuredData& data, const IdentifyOptions& options
     r.loop = close_the_loop_on_sample(
         r.fitted, stratified_sample(r.fitted, options.fit.radius_m, options.selection_rows),
         options.fit, *options.loop);
+    if (!r.outliers.empty() && put_back_fitting_values(data, r)) {
+      r.fitted = clean_rows(data, r.outliers, r.origin);
+      refit_on_every_row(r.fitted, options.fit, *options.loop, *r.loop);
+    }
     r.fit = r.loop->base;
   } else {
     r.fit = fit_fractional_law(r.fitted, options.fit);

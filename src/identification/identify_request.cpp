@@ -199,6 +199,7 @@ IdentifyRun identify(const MeasuredData& data, const IdentifyRequest& request) {
   run.input = describe_run(data.source, data, request.radius_m, o.fit.normal_load_n, profile);
   run.input.normal_load_source = load_source;
   run.input.outliers = run.result.outliers;
+  run.input.put_back = run.result.put_back;
   return run;
 }
 

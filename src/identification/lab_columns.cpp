@@ -44,17 +44,19 @@ bool iequals(const std::string& a, const std::string& b) {
          });
 }
 
-// The quantity a bare name stands for ("vx", "Omega", "time"), if any.
+// The quantity a bare name stands for ("vx", "Omega", "time"), if any. Time is "t" in lower
+// case or "time": a capital "T" is as often a temperature.
 std::optional<int> quantity_of(const std::string& stem) {
+  const int time = static_cast<int>(MeasuredQuantity::t);
   for (int q = 0; q < kMeasuredQuantities; ++q)
-    if (iequals(stem, kQuantities[q].name)) return q;
-  if (iequals(stem, "time")) return static_cast<int>(MeasuredQuantity::t);
+    if (q == time ? stem == kQuantities[q].name : iequals(stem, kQuantities[q].name)) return q;
+  if (iequals(stem, "time")) return time;
   return std::nullopt;
 }
 
 // A header cell split into a name and a unit: "vx [m/s]", "Mz (N m)", "omega_rpm", "Fx".
 // The part after the last '_' is a unit when the part before it names a quantity or when it
-// is a unit this reader knows; "run_id" stays one name.
+// is a unit this reader knows; "run_id" and "T_tread" (T is not the time) stay one name.
 struct HeaderCell {
   std::string stem;
   std::string unit;

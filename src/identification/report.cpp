@@ -112,16 +112,22 @@ nlohmann::json fit_report(const ReportInput& info, const FitReport& base) {
                         {"values", c.values}});
   r["input"]["recorded_columns"] = recorded;
   r["input"]["columns_not_read"] = info.columns_not_read;
-  nlohmann::json outliers = nlohmann::json::array();
-  for (const Outlier& o : info.outliers)
-    outliers.push_back({{"line", o.line > 0 ? nlohmann::json(o.line) : nlohmann::json()},
-                        {"point", o.point},
-                        {"channel", kChannelColumns[o.channel]},
-                        {"value", o.value},
-                        {"residual_sigma", o.residual_sigma},
-                        {"where", o.where},
-                        {"value_in_file_unit", o.file_value}});
-  r["input"]["outliers"] = outliers;
+  const auto outlier_list = [](const std::vector<Outlier>& list) {
+    nlohmann::json out = nlohmann::json::array();
+    for (const Outlier& o : list)
+      out.push_back({{"line", o.line > 0 ? nlohmann::json(o.line) : nlohmann::json()},
+                     {"point", o.point},
+                     {"channel", kChannelColumns[o.channel]},
+                     {"value", o.value},
+                     {"residual_sigma", o.residual_sigma},
+                     {"where", o.where},
+                     {"value_in_file_unit", o.file_value}});
+    return out;
+  };
+  r["input"]["outliers"] = outlier_list(info.outliers);
+  // Taken for gross errors by the robust judge, fitted by the final model within
+  // kPutBackSigma (residual_sigma against it): back in the fit.
+  r["input"]["outliers_put_back"] = outlier_list(info.put_back);
   r["input"]["outlier_rule"] =
       "residual of a robust fit minus the median of its four neighbours in kinematic order (load, "
       "spin sense, sliding direction, v/omega), beyond 8 local robust sigma (1.4826 median|d| / "

@@ -1,5 +1,7 @@
 #include "contensou/identification/report_text.hpp"
 
+#include "contensou/identification/identify.hpp"
+
 #include <algorithm>
 #include <cstdio>
 #include <map>
@@ -28,6 +30,12 @@ std::string input_text(const ReportInput& info) {
          " values left out of the fit as gross errors (a robust fit's residual more than 8 robust "
          "sigma from its kinematic neighbours'):";
     for (const Outlier& o : info.outliers) s += "\n  " + o.describe(info.file);
+  }
+  if (!info.put_back.empty()) {
+    s += "\nput back: " + std::to_string(info.put_back.size()) +
+         " values first taken for gross errors, which the final model fits within " +
+         fmt("%g", kPutBackSigma) + " sigma (sigma against the final model):";
+    for (const Outlier& o : info.put_back) s += "\n  " + o.describe(info.file);
   }
   if (!info.profile.empty()) {
     s += "\nprofile: " + info.profile;

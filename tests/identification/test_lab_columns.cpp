@@ -306,3 +306,18 @@ TEST(LabColumns, EveryOtherColumnIsRecordedOrListedAsNotRead) {
   EXPECT_EQ(twice.columns_not_read[0],
             "'omega [rpm]' (column 4): omega is read from 'omega_radps' (column 3)");
 }
+
+// Time is "t" or "time": a capital T (a temperature, more often than not) is a recorded
+// column, with or without a suffix, beside the time.
+TEST(LabColumns, ACapitalTIsATemperatureNotTheTime) {
+  const MeasuredData d = read_measured_csv(
+      write("lab_temp.csv",
+            "time,vx_mps,vy_mps,omega_radps,Fx_N,T_tread,T\n0,1,0,3,4,25,26\n0.5,1,0,3,4,27,28\n"));
+  ASSERT_EQ(d.points.size(), 2u);
+  ASSERT_TRUE(d.points[1].time);
+  EXPECT_DOUBLE_EQ(*d.points[1].time, 0.5);
+  ASSERT_EQ(d.recorded.size(), 2u);
+  EXPECT_EQ(d.recorded[0].name, "T_tread");
+  EXPECT_EQ(d.recorded[1].name, "T");
+  EXPECT_DOUBLE_EQ(d.points[1].recorded[0], 27.0);
+}

@@ -217,6 +217,49 @@ TEST(RigFiles, GlitchesInShuffledRowsAreExactlyTheOnesInjected) {
   expect_exactly_the_glitches(true);
 }
 
+// Friction that falls with the load and with a tread temperature rising over the programme,
+// sign flips of Fx in shuffled rows: the robust judge fit lacks both dependences; exactly the
+// rows injected stay named, and any row put back (one the final model fits within
+// kPutBackSigma) is a good one. tests/python/test_identification.py has a file where the
+// judge names good rows and the final model puts them back.
+TEST(RigFiles, WithDependencesTheGlitchesNamedAreTheInjectedOnes) {
+  RigFile s;
+  s.loads = {2000.0, 4000.0, 6000.0};
+  s.directions = {0.0, 0.5 * std::numbers::pi, 0.25 * std::numbers::pi};
+  s.points = 40;
+  s.friction = 0.9;
+  s.reference_load = 4000.0;
+  s.noise = 0.002;
+  s.shuffle = true;
+  s.temperature = [](int, double t) { return 25.0 + 0.1 * t; };
+  s.factor = [](double load, double, double temp) {
+    return (1.0 - 0.04e-3 * (load - 4000.0)) * (1.0 - 0.004 * (temp - 40.0));
+  };
+  MeasuredData d = make_rig_file(s);
+  std::set<int> injected;
+  for (MeasuredPoint& p : d.points)
+    if (injected.size() < 4 && std::abs(p.kinematics.vx) > 0.5 && p.kinematics.vy == 0.0 &&
+        p.line % 7 == 0) {
+      *p.force[0] = -*p.force[0];
+      injected.insert(p.line);
+    }
+  ASSERT_EQ(injected.size(), 4u);
+  const Identification id = identify(d, loop_options());
+  std::set<int> found;
+  std::string named;
+  for (const Outlier& x : id.outliers) {
+    found.insert(x.line);
+    named += x.describe(d.source) + "\n";
+  }
+  for (const Outlier& x : id.put_back) {
+    EXPECT_FALSE(injected.count(x.line)) << "a glitch put back: " << x.describe(d.source);
+    EXPECT_LE(std::abs(x.residual_sigma), kPutBackSigma);
+    std::printf("put back: %s\n", x.describe(d.source).c_str());
+  }
+  EXPECT_EQ(found, injected) << named;
+  expect_at_the_noise(id.fitted, id.final_fit());
+}
+
 // The catalogue in docs/identification.md is the one the loop uses (effect_catalogue_markdown).
 TEST(RigFiles, TheDocsCatalogueIsTheLoopsCatalogue) {
   std::ifstream in(CONTENSOU_SOURCE_DIR "/docs/identification.md");

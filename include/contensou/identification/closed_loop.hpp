@@ -150,6 +150,16 @@ bool step_fit_failed(const LoopStep& step);
 ClosedLoopReport close_the_loop(const MeasuredData& data, const IdentificationOptions& options,
                                 const ClosedLoopOptions& loop = {});
 
+/// The base law and the chosen model of `report` refitted on every row of `data`, each from the
+/// report's estimates and noise scales, their residuals traced, structure_remains updated: what
+/// close_the_loop_on_sample does after its steps. Throws as fit_model.
+void refit_on_every_row(const MeasuredData& data, const IdentificationOptions& options,
+                        const ClosedLoopOptions& loop, ClosedLoopReport& report);
+
+/// The chosen model (report.final_spec, at its estimates) at every row of `data` [N, N, N m].
+std::vector<Resultants<double>> predict_final_model(const ClosedLoopReport& report,
+                                                    const MeasuredData& data);
+
 /// The loop's model selection on the rows `sample` marks (one entry a row of data; rows past its
 /// end count as marked), then the base law and the selected model fitted on every row (from the
 /// sample's estimates), their residual traced over every row. For large files: the steps' tests

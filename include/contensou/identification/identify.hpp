@@ -29,8 +29,12 @@ struct IdentifyOptions {
 /// The result of identify(): the gross errors left out, the data fitted and the fits.
 struct Identification {
   std::vector<Outlier> outliers;  ///< left out of the fit (indices into the data given)
-  MeasuredData fitted;            ///< the data the reported fit used
-  std::vector<int> origin;        ///< for each point of `fitted`, its index in the data given
+  /// Values the robust judge named as gross errors that the loop's final model fits within
+  /// kPutBackSigma of its noise scale: put back and refitted (residual_sigma: against the
+  /// final model, before the refit).
+  std::vector<Outlier> put_back;
+  MeasuredData fitted;      ///< the data the reported fit used
+  std::vector<int> origin;  ///< for each point of `fitted`, its index in the data given
   /// The fractional law (loop off; its residual traced) or the loop's base fit.
   FitReport fit;
   std::optional<ClosedLoopReport> loop;  ///< the closed loop's report (nullopt: loop off)
@@ -38,11 +42,18 @@ struct Identification {
   const FitReport& final_fit() const { return loop ? loop->final_fit : fit; }
 };
 
+/// A value left out as a gross error is put back when the loop's final model fits it within
+/// this many of its noise scales (a + b |yhat|): the robust judge fit lacks the effects the loop
+/// finds (friction that follows the load or a temperature), and at the end of a sweep its misfit
+/// can pass for a glitch.
+inline constexpr double kPutBackSigma = 4.0;
+
 /// Finds the gross errors (options.leave_out_outliers: up to ten rounds of a robust fit, the
 /// values find_outliers names and a refit without them; outliers sorted most extreme first),
 /// then fits the fractional law to the clean rows, or closes the loop on them
-/// (close_the_loop_on_sample). Throws as fit_fractional_law, fit_model and close_the_loop do
-/// (Interrupted when options.fit.stop asks).
+/// (close_the_loop_on_sample); with the loop, the values its final model fits within
+/// kPutBackSigma are put back and the base and final models refitted (refit_on_every_row). Throws
+/// as fit_fractional_law, fit_model and close_the_loop do (Interrupted when options.fit.stop asks).
 Identification identify(const MeasuredData& data, const IdentifyOptions& options);
 
 }  // namespace contensou

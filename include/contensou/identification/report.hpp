@@ -41,7 +41,8 @@ struct ReportInput {
   std::vector<RecordedSummary> recorded;      ///< the file's columns the law does not read
   std::vector<std::string> columns_not_read;  ///< and those not read at all, with the reason
   std::vector<Outlier> outliers;              ///< gross errors left out of the fit
-  std::string profile;                        ///< how the pressure profile was given ("" if none)
+  std::vector<Outlier> put_back;  ///< first taken for gross errors, fitted by the final model
+  std::string profile;            ///< how the pressure profile was given ("" if none)
   std::optional<double> profile_rms_residual_pa;  ///< a smoothing fit's rms residual [Pa]
   std::optional<double> profile_max_residual_pa;  ///< a smoothing fit's largest residual [Pa]
 };
