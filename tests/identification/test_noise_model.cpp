@@ -59,6 +59,22 @@ double truth_of(const FractionalLaw<double>& law, const std::string& name) {
   return law.F0 / kLoad;  // f
 }
 
+// One replica's affine fit into the tallies: which 95 % intervals cover the truth, and the
+// noise scales a and slopes b averaged over the replicas.
+void tally(const FractionalLaw<double>& law, const FitReport& r, int replicas,
+           std::map<std::string, int>& covered, std::array<double, kChannels>& mean_a,
+           std::array<double, kChannels>& mean_b) {
+  for (const ParameterEstimate& p : r.parameters) {
+    ASSERT_TRUE(p.ci95.has_value()) << p.name;
+    const double t = truth_of(law, p.name);
+    covered[p.name] += (*p.ci95)[0] <= t && t <= (*p.ci95)[1];
+  }
+  for (int c = 0; c < kChannels; ++c) {
+    mean_a[c] += r.noise_scale[c] / replicas;
+    mean_b[c] += r.noise_slope[c] / replicas;
+  }
+}
+
 // Two sweeps (longitudinal, then lateral sliding), 20 points each, 0.5 s apart, from the
 // fractional law with the shape constants the identification assumes without a profile.
 FractionalLaw<double> uniform_constants_law() {
@@ -127,15 +143,7 @@ TEST(NoiseModel, AffineIntervalsCoverTheTruthOnLoadCellNoise) {
     const MeasuredData d = simulate_diagrams(law, load_cell_spec(seed, 40));
     const FitReport r = fit_fractional_law(d, tire_options(NoiseModel::affine));
     EXPECT_EQ(r.noise_model, NoiseModel::affine);
-    for (const ParameterEstimate& p : r.parameters) {
-      ASSERT_TRUE(p.ci95.has_value()) << p.name;
-      const double t = truth_of(law, p.name);
-      covered[p.name] += (*p.ci95)[0] <= t && t <= (*p.ci95)[1];
-    }
-    for (int c = 0; c < kChannels; ++c) {
-      mean_a[c] += r.noise_scale[c] / replicas;
-      mean_b[c] += r.noise_slope[c] / replicas;
-    }
+    tally(law, r, replicas, covered, mean_a, mean_b);
     const FitReport add = fit_fractional_law(d, tire_options(NoiseModel::additive));
     for (const ParameterEstimate& p : add.parameters) {
       const double t = truth_of(law, p.name);
@@ -179,15 +187,7 @@ TEST(NoiseModel, AffineModelReachesPurelyRelativeNoise) {
     spec.seed = static_cast<std::uint64_t>(seed);
     const FitReport r =
         fit_fractional_law(simulate_diagrams(law, spec), tire_options(NoiseModel::affine));
-    for (const ParameterEstimate& p : r.parameters) {
-      ASSERT_TRUE(p.ci95.has_value()) << p.name;
-      const double t = truth_of(law, p.name);
-      covered[p.name] += (*p.ci95)[0] <= t && t <= (*p.ci95)[1];
-    }
-    for (int c = 0; c < kChannels; ++c) {
-      mean_a[c] += r.noise_scale[c] / replicas;
-      mean_b[c] += r.noise_slope[c] / replicas;
-    }
+    tally(law, r, replicas, covered, mean_a, mean_b);
   }
   for (const auto& [name, n] : covered) {
     const double coverage = static_cast<double>(n) / replicas;

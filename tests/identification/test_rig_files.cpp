@@ -173,6 +173,17 @@ TEST(RigFiles, ASlipAngleOffsetFromOneDirectionIsReportedAmbiguous) {
   EXPECT_TRUE(named) << "the offset and the crosstalk are not told apart, and no step says so";
 }
 
+// The file lines of the values identify named as gross errors; `named` gets their
+// descriptions, a line each.
+std::set<int> named_lines(const Identification& id, const std::string& source, std::string& named) {
+  std::set<int> lines;
+  for (const Outlier& x : id.outliers) {
+    lines.insert(x.line);
+    named += x.describe(source) + "\n";
+  }
+  return lines;
+}
+
 // Glitches as a rig makes them: Fx sign flips at large slip, spikes in Fy and Mz. Sorted or
 // shuffled, the gross-error search names exactly the eight rows injected, none besides.
 void expect_exactly_the_glitches(bool shuffle) {
@@ -198,12 +209,8 @@ void expect_exactly_the_glitches(bool shuffle) {
   }
   ASSERT_EQ(injected.size(), 8u);
   const Identification id = identify(d, loop_options());
-  std::set<int> found;
   std::string named;
-  for (const Outlier& x : id.outliers) {
-    found.insert(x.line);
-    named += x.describe(d.source) + "\n";
-  }
+  const std::set<int> found = named_lines(id, d.source, named);
   EXPECT_EQ(found, injected) << named;
   // With them out, the fit reaches the noise, and no relative noise swallows the rest.
   expect_at_the_noise(id.fitted, id.final_fit());
@@ -245,12 +252,8 @@ TEST(RigFiles, WithDependencesTheGlitchesNamedAreTheInjectedOnes) {
     }
   ASSERT_EQ(injected.size(), 4u);
   const Identification id = identify(d, loop_options());
-  std::set<int> found;
   std::string named;
-  for (const Outlier& x : id.outliers) {
-    found.insert(x.line);
-    named += x.describe(d.source) + "\n";
-  }
+  const std::set<int> found = named_lines(id, d.source, named);
   for (const Outlier& x : id.put_back) {
     EXPECT_FALSE(injected.count(x.line)) << "a glitch put back: " << x.describe(d.source);
     EXPECT_LE(std::abs(x.residual_sigma), kPutBackSigma);
