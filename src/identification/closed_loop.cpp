@@ -3,6 +3,8 @@
 #include <Eigen/QR>
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
+#include <functional>
 #include <limits>
 #include <tuple>
 
@@ -92,7 +94,7 @@ void set_speed_inside(ModelSpec& s, const ClosedLoopOptions& loop) {
 // slip-speed table).
 void build_laws(const ModelSpec& s, const StopRequest& stop) {
   throw_if_stopped(stop);
-  if (s.uses_exact() && s.exact_laws) s.exact_laws->laws(s.speed_in_exact, stop, s.profile_degree);
+  if (s.uses_exact() && s.exact_laws) s.exact_laws->laws(s.speed_in_exact, stop, s.law_degree());
 }
 
 LoopState fit_state(const MeasuredData& data, ModelSpec spec, const NoiseSettings& noise) {
@@ -233,7 +235,7 @@ LoopStep test_extension(const MeasuredData& data, const LoopState& cur, const Lo
 // model's form, not an effect with a null), and not taken out already.
 bool prunable(const LoopStep& acc) {
   return acc.accepted && !acc.removed && acc.kind != Effect::shape &&
-         acc.kind != Effect::profile_detail;
+         acc.kind != Effect::profile_detail && acc.kind != Effect::profile_correction;
 }
 
 // Backward pass: an effect accepted early may stand in for ones found later. Refit without
@@ -505,15 +507,39 @@ std::array<double, 5> raised_to_quartic(double w1, double w2) {
   return w;
 }
 
+// The model's form tested right after the shape (profile_detail, profile_correction): `ext`
+// fitted from the current state and tested by the loop's rules at `threshold`; `detail`, if set,
+// names the step from its fit. True when accepted (st is then its state).
+struct ShapeStep {
+  const MeasuredData& data;
+  const NoiseSettings& noise;
+  const ClosedLoopOptions& loop;
+  int step;
+  double threshold;
+};
+bool test_shape_step(const ShapeStep& at, const ModelSpec& ext, const Candidate& c,
+                     const std::function<std::string(const LoopState&)>& detail, LoopState& st,
+                     ClosedLoopReport& report) {
+  const int values = at.data.count(0) + at.data.count(1) + at.data.count(2);
+  if (values < measured_values_needed(at.data, ext, at.noise)) return false;
+  say(at.loop, step_label(at.step) + "fitting " + label(c));
+  StepFit fitted = fit_step(at.data, st, ext, c, at.threshold, at.noise, at.loop);
+  if (detail) fitted.step.detail = detail(fitted.ext);
+  say(at.loop, step_label(at.step) + label(c) + (fitted.step.accepted ? " accepted" : " rejected") +
+                   " (" + fitted.step.verdict + ")");
+  report.steps.push_back(fitted.step);
+  if (!fitted.step.accepted) return false;
+  report.accepted_effects.push_back(describe(c.effect).name);
+  st = std::move(fitted.ext);
+  return true;
+}
+
 // Right after the shape is accepted with the identified profile: the quartic profile, started
 // at the quadratic raised to degree 4 (the same profile: the fit starts at the quadratic's
 // optimum and can only improve), tested against it by the loop's rules (LR on 2 degrees of
 // freedom at alpha over the step's candidates, BIC, CV). A rig file of a tire whose profile is
 // not quadratic in rho^2 otherwise leaves a misfit that later steps fill with stand-ins.
-// True when the quartic is accepted (st is then its state).
-bool test_profile_detail(const MeasuredData& data, const NoiseSettings& noise,
-                         const ClosedLoopOptions& loop, int step, double threshold, LoopState& st,
-                         ClosedLoopReport& report) {
+bool test_profile_detail(const ShapeStep& at, LoopState& st, ClosedLoopReport& report) {
   if (st.spec.profile_model || !st.spec.uses_exact() || st.spec.profile_degree != 2) return false;
   ModelSpec quartic = st.spec;
   quartic.profile_degree = 4;
@@ -524,17 +550,31 @@ bool test_profile_detail(const MeasuredData& data, const NoiseSettings& noise,
     quartic.free[slots[k]] = true;
   }
   const Candidate c{Effect::profile_detail, "quartic", {kProfileW3, kProfileW4}, -1};
-  const int values = data.count(0) + data.count(1) + data.count(2);
-  if (values < measured_values_needed(data, quartic, noise)) return false;
-  say(loop, step_label(step) + "fitting " + label(c));
-  StepFit fitted = fit_step(data, st, quartic, c, threshold, noise, loop);
-  say(loop, step_label(step) + label(c) + (fitted.step.accepted ? " accepted" : " rejected") +
-                " (" + fitted.step.verdict + ")");
-  report.steps.push_back(fitted.step);
-  if (!fitted.step.accepted) return false;
-  report.accepted_effects.push_back(describe(Effect::profile_detail).name);
-  st = std::move(fitted.ext);
-  return true;
+  return test_shape_step(at, quartic, c, {}, st, report);
+}
+
+// Right after the shape is accepted with a given profile: that profile times a quadratic factor
+// in rho^2 (w1 = w2 = 1 at the start: the profile as given), tested by the loop's rules (LR on
+// 2 degrees of freedom, BIC, CV). A profile that is not the tire's otherwise leaves a misfit
+// that later steps fill with stand-ins (a speed law, offsets).
+bool test_profile_correction(const ShapeStep& at, LoopState& st, ClosedLoopReport& report) {
+  if (!st.spec.profile_model || !st.spec.uses_exact() || st.spec.profile_corrected) return false;
+  ModelSpec corrected = st.spec;
+  corrected.profile_corrected = true;
+  for (int p : {kProfileW1, kProfileW2}) {
+    corrected.value[p] = 1.0;
+    corrected.free[p] = true;
+  }
+  const Candidate c{Effect::profile_correction, "", {kProfileW1, kProfileW2}, -1};
+  // The factor at rho = 0.71 and at the rim, short for the step table (the summary's words
+  // take the final model's: profile_correction_detail).
+  const auto detail = [](const LoopState& fitted) {
+    char buf[64];
+    const double w1 = fitted.theta[kProfileW1], w2 = fitted.theta[kProfileW2];
+    std::snprintf(buf, sizeof buf, "x%.3g mid, x%.3g rim", 0.25 + 0.5 * w1 + 0.25 * w2, w2);
+    return std::string(buf);
+  };
+  return test_shape_step(at, corrected, c, detail, st, report);
 }
 
 ClosedLoopReport close_the_loop(const MeasuredData& data, const IdentificationOptions& options,
@@ -598,8 +638,9 @@ ClosedLoopReport close_the_loop(const MeasuredData& data, const IdentificationOp
           .steps[report.steps.size() - trials.size() +
                  static_cast<std::size_t>(best - trials.data())]
           .fit_after.trace = st.fit.trace;
+      const ShapeStep at{data, noise, loop, step, threshold};
       if (cands[best->candidate].effect == Effect::shape &&
-          test_profile_detail(data, noise, loop, step, threshold, st, report)) {
+          (test_profile_detail(at, st, report) || test_profile_correction(at, st, report))) {
         st.fit.trace = trace_residual(data, st.fit, st.spec.radius_m, covariates);
         report.steps.back().fit_after.trace = st.fit.trace;
       }

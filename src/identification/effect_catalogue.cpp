@@ -1,5 +1,6 @@
 #include "contensou/identification/effect_catalogue.hpp"
 
+#include <cstdio>
 #include <stdexcept>
 
 namespace contensou {
@@ -25,6 +26,14 @@ constexpr std::array<EffectDescriptor, kEffects> kCatalogue = {{
      "the quartic equal to the quadratic",
      "the pressure profile has more structure than a quadratic in rho^2 describes",
      "a measured pressure profile (`--profile`), or more points with psi between 0.1 and 10"},
+    {E::profile_correction, "profile_correction",
+     "the `--profile` given times a factor q(s) = (1-s)^2 + 2 w1 s(1-s) + w2 s^2 in s = rho^2 "
+     "(w1, w2 >= 0: never negative; 1, 1 leaves the profile as given), tested right after the "
+     "shape is accepted: the data's pressure is not the profile given",
+     "w1 = w2 = 1",
+     "the pressure profile given is not the one the data show (they fit it times a factor {})",
+     "a pressure measurement of this tire at the rows' loads (a pressure film), or more points "
+     "with psi between 0.1 and 10"},
     {E::anisotropy, "anisotropy", "lateral friction kappa f != f", "kappa = 1",
      "friction differs along and across the patch", "a lateral sweep (sliding along y)"},
     {E::pressure_shift_y, "pressure_shift_y", "lateral pressure shift ky (camber, asymmetric load)",
@@ -107,6 +116,13 @@ bool effect_by_name(const std::string& name, Effect* e) {
       return true;
     }
   return false;
+}
+
+std::string profile_correction_detail(double w1, double w2) {
+  char buf[96];
+  std::snprintf(buf, sizeof buf, "%.3g at rho 0.71 and %.3g at the rim, 1 at the centre",
+                0.25 + 0.5 * w1 + 0.25 * w2, w2);
+  return buf;
 }
 
 std::string effect_in_words(Effect e, const std::string& detail) {

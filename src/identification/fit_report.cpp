@@ -25,7 +25,7 @@ constexpr int K = kModelParameters;
 bool reported(const ModelSpec& s, int i) {
   if (s.exact_only && (i == kA || i == kM0 || i == kMShape || i == kShapeBlend)) return false;
   const bool parametric = !s.profile_model && s.uses_exact();
-  if ((i == kProfileW1 || i == kProfileW2) && !parametric) return false;
+  if ((i == kProfileW1 || i == kProfileW2) && !parametric && !s.profile_corrected) return false;
   if (i == kProfileW3 || i == kProfileW4) return parametric && s.profile_degree == 4;
   if (i == kSpeedRef) return s.free[kSpeedDrop] || s.value[kSpeedDrop] != 0.0;
   return s.free[i] || i <= kKx || s.value[i] != parameter_info(i).null_value;
@@ -49,6 +49,20 @@ std::string dependence_note(const ModelSpec& spec, int i, const ParameterEstimat
       "%s of f (1 + b1 z + b2 (2 z^2 - 1)), z = %s over %.6g to %.6g %s: %s = %.4g 1/%s%s",
       curve ? "b2" : "b1", c.name.c_str(), c.mid - c.half_range, c.mid + c.half_range, unit.c_str(),
       curve ? "(1/f) d2f/dX2" : "(1/f) df/dX", per, unit.c_str(), curve ? "^2" : "");
+  return buf;
+}
+
+// With friction falling with the slip speed, f is its value at rest: the note says what it is at
+// w = w_s and fast, f (1 - beta (1 - e^-1)) and f (1 - beta) (a large beta extrapolates f(0)
+// far above the friction the rows show).
+std::string speed_note(const ModelSpec& spec, const std::array<double, K>& theta, double f) {
+  if (!spec.free[kSpeedDrop] && spec.value[kSpeedDrop] == 0.0) return "";
+  const double beta = theta[kSpeedDrop], ws = theta[kSpeedRef];
+  char buf[240];
+  std::snprintf(buf, sizeof buf,
+                "f at rest (w = 0); f(w) = f (1 - beta (1 - e^(-w/w_s))) is %.4g at w = w_s = "
+                "%.3g m/s and falls to f (1 - beta) = %.4g at large w",
+                f * (1.0 - beta * (1.0 - std::exp(-1.0))), ws, f * (1.0 - beta));
   return buf;
 }
 
@@ -86,7 +100,7 @@ void report_parameters(const ModelSpec& spec, const std::array<double, K>& theta
     e.note = dependence_note(spec, i, e);
     report.parameters.push_back(e);
   }
-  if (spec.exact_only && spec.profile_model) {
+  if (spec.exact_only && spec.profile_model && !spec.profile_corrected) {
     // The exact model has no a, m, M0 of its own: report the profile's asymptote-matched
     // values (fixed, no interval), so that a report always carries the law's parameters.
     const double derived[3] = {spec.profile_a, theta[kF0] * spec.radius_m * spec.profile_m0_ratio,
@@ -111,6 +125,7 @@ void report_parameters(const ModelSpec& spec, const std::array<double, K>& theta
     f.determined = F0.determined;
     f.std_error = F0.std_error / N;
     if (F0.ci95) f.ci95 = std::array<double, 2>{(*F0.ci95)[0] / N, (*F0.ci95)[1] / N};
+    f.note = speed_note(spec, theta, f.value);
     report.parameters.push_back(f);
   }
   report.correlation = Eigen::MatrixXd::Identity(est.size(), est.size());
@@ -145,7 +160,11 @@ void report_quality(const FitSetup& s, const Solution& sol, FitReport& report) {
   report.noise_scale = sol.scale;
   report.noise_slope = sol.slope;
   report.channels = residual_diagnostics(subset, sub_pred, s.spec.radius_m, sol.scale);
-  const std::array<double, kChannels> scatter = neighbour_scatter(subset, sub_pred);
+  const NoiseScales scales = report.noise_scales();
+  const std::array<double, kChannels> scatter =
+      neighbour_scatter(subset, sub_pred, [&](int c, std::size_t i) {
+        return value_scale(scales, c, sub_pred[i].vector()(c), s.floor_rel[c]);
+      });
   for (ChannelDiagnostics& d : report.channels)
     for (int c = 0; c < kChannels; ++c)
       if (d.channel == kChannelColumns[c]) {

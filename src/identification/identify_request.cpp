@@ -14,12 +14,13 @@ const std::vector<RequestKey>& identify_request_keys() {
   static const std::vector<RequestKey> keys = {
       {"radius", "patch radius R [m] (required)"},
       {"normal_load",
-       "normal load N [N]: f = F0/N is reported, at this load (else N comes from the profile "
-       "with its pressure, or the mean of an Fz column; rows with an Fz value are each fitted "
-       "at their own load); with a profile, the profile gives only the shape"},
+       "normal load N [N]: f = F0/N is reported, at this load (else N is the mean of an Fz "
+       "column, or comes from the profile with its pressure; rows with an Fz value are each "
+       "fitted at their own load); with a profile, the profile gives only the shape"},
       {"profile",
        "pressure profile: uniform, hertz, seed-tire or a CSV rho,pressure_Pa (fixes "
-       "the shape constants; a CSV, or a built-in one with its pressure, gives N)"},
+       "the shape constants; a CSV, or a built-in one with its pressure, gives N when the rows "
+       "carry no Fz)"},
       {"pressure", "reference pressure p* [Pa] of a built-in profile"},
       {"profile_smoothing",
        "fit the profile CSV by a Chebyshev series in rho^2 of this many "
@@ -188,11 +189,17 @@ IdentifyOptions identify_options(const IdentifyRequest& r, ProfileChoice& profil
 IdentifyRun identify(const MeasuredData& data, const IdentifyRequest& request) {
   ProfileChoice profile;
   IdentifyOptions o = identify_options(request, profile);
+  // The rows' own loads (an Fz column) win over a profile's pressure, which then gives only the
+  // shape; a load given directly wins over both.
   std::string load_source;
-  if (!o.fit.normal_load_n)
+  if (!request.normal_load_n)
     if (const std::optional<LoadFromData> l = normal_load_from_data(data)) {
+      if (o.fit.normal_load_n && std::abs(*o.fit.normal_load_n - l->mean_n) > 1e-3 * l->mean_n)
+        load_source = "; the profile's pressure, " +
+                      std::to_string(std::lround(*o.fit.normal_load_n)) +
+                      " N over the patch, gives only its shape";
       o.fit.normal_load_n = l->mean_n;  // f = F0 / N is then reported
-      load_source = l->description();
+      load_source = l->description() + load_source;
     }
   IdentifyRun run;
   run.result = identify(data, o);

@@ -209,16 +209,25 @@ std::optional<LoadFromData> normal_load_from_data(const MeasuredData& data) {
     }
   if (load.rows == 0) return std::nullopt;
   load.mean_n = sum / load.rows;
+  load.min_n = load.max_n = load.mean_n;
   for (const MeasuredPoint& p : data.points)
-    if (p.normal_load)
+    if (p.normal_load) {
       load.spread = std::max(load.spread, std::abs(*p.normal_load - load.mean_n) / load.mean_n);
+      load.min_n = std::min(load.min_n, *p.normal_load);
+      load.max_n = std::max(load.max_n, *p.normal_load);
+    }
   return load;
 }
 
 std::string LoadFromData::description() const {
-  char buf[128];
-  std::snprintf(buf, sizeof buf, "mean of the Fz column over %d rows, within +-%.2g %%", rows,
-                100.0 * spread);
+  char buf[160];
+  if (spread > 0.05)
+    std::snprintf(buf, sizeof buf,
+                  "mean of the Fz column over %d rows, %.6g to %.6g N, each row at its own load",
+                  rows, min_n, max_n);
+  else
+    std::snprintf(buf, sizeof buf, "mean of the Fz column over %d rows, within +-%.2g %%", rows,
+                  100.0 * spread);
   return buf;
 }
 

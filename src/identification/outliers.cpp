@@ -151,23 +151,31 @@ std::string Outlier::describe(const std::string& source) const {
   return at + buf + (file_value.empty() ? "" : " = " + file_value) + ")";
 }
 
-std::array<double, kChannels> neighbour_scatter(const MeasuredData& data,
-                                                const std::vector<Resultants<double>>& prediction) {
+std::array<double, kChannels> neighbour_scatter(
+    const MeasuredData& data, const std::vector<Resultants<double>>& prediction,
+    const std::function<double(int c, std::size_t i)>& row_scale) {
   std::array<double, kChannels> scale{};
   if (prediction.size() != data.points.size()) return scale;
   for (int c = 0; c < kChannels; ++c) {
     const OrderedChannel ch = ordered_channel(data, prediction, c);
-    // The rms of d over its smaller 98 % (a glitch left in does not set it), / 1.14: comparable
+    // The rms of d over its smaller 98 % (a glitch left in does not set it), / 1.067 (d of
+    // Gaussian noise, 1.14 sigma, trimmed of its largest 2 %: 1.067 sigma, by simulation of
+    // 2e5 values): comparable
     // with the residual's rms whatever the noise does along the file (a median would follow
-    // the quietest half: sweeps at small loads, a channel near zero in a lateral sweep).
-    std::vector<double> ad;
-    for (double d : neighbour_differences(ch.e, ch.kinematics))
-      if (std::isfinite(d)) ad.push_back(std::abs(d));
+    // the quietest half: sweeps at small loads, a channel near zero in a lateral sweep). The
+    // 98 % by d / row scale when the noise grows with the value.
+    std::vector<std::pair<double, double>> ad;  // (|d| / scale, |d|)
+    const std::vector<double> d = neighbour_differences(ch.e, ch.kinematics);
+    for (std::size_t k = 0; k < d.size(); ++k) {
+      if (!std::isfinite(d[k])) continue;
+      const double s = row_scale ? row_scale(c, static_cast<std::size_t>(ch.rows[k])) : 1.0;
+      ad.emplace_back(s > 0.0 ? std::abs(d[k]) / s : std::abs(d[k]), std::abs(d[k]));
+    }
     std::sort(ad.begin(), ad.end());
     const std::size_t kept = ad.size() - ad.size() / 50;
     double ss = 0.0;
-    for (std::size_t k = 0; k < kept; ++k) ss += ad[k] * ad[k];
-    scale[c] = ad.size() >= 4 ? std::sqrt(ss / static_cast<double>(kept)) / 1.14 : 0.0;
+    for (std::size_t k = 0; k < kept; ++k) ss += ad[k].second * ad[k].second;
+    scale[c] = ad.size() >= 4 ? std::sqrt(ss / static_cast<double>(kept)) / 1.067 : 0.0;
   }
   return scale;
 }

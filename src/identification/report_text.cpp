@@ -240,7 +240,7 @@ std::string trace_text(const FitReport& fit) {
 std::string identified_profile_caveat(const ClosedLoopReport& loop) {
   const bool stand_in = std::any_of(loop.steps.begin(), loop.steps.end(), [](const LoopStep& st) {
     return st.accepted && !st.removed && st.kind != Effect::shape &&
-           st.kind != Effect::profile_detail;
+           st.kind != Effect::profile_detail && st.kind != Effect::profile_correction;
   });
   if (loop.final_spec.profile_model || !loop.final_spec.uses_exact() || !stand_in) return "";
   std::string kinematic;
@@ -255,10 +255,26 @@ std::string identified_profile_caveat(const ClosedLoopReport& loop) {
          "measured profile (--profile) decides them.";
 }
 
+namespace {
+
+// A profile correction's factor in the final model (the step's own if the final fit does not
+// report its weights).
+std::string final_correction(const FitReport& fit, const std::string& step_detail) {
+  const ParameterEstimate *w1 = nullptr, *w2 = nullptr;
+  for (const ParameterEstimate& e : fit.parameters) {
+    if (e.name == "profile_w1") w1 = &e;
+    if (e.name == "profile_w2") w2 = &e;
+  }
+  return w1 && w2 ? profile_correction_detail(w1->value, w2->value) : step_detail;
+}
+
+}  // namespace
+
 std::string loop_summary(const ClosedLoopReport& loop) {
   std::vector<std::string> shown, not_needed, failed;
   const auto step_name = [](const LoopStep& st) {
-    return st.detail.empty() || st.kind == Effect::shape || st.kind == Effect::noise_growth
+    return st.detail.empty() || st.kind == Effect::shape || st.kind == Effect::noise_growth ||
+                   st.kind == Effect::profile_correction
                ? st.effect
                : st.effect + " (" + st.detail + ")";
   };
@@ -268,7 +284,9 @@ std::string loop_summary(const ClosedLoopReport& loop) {
   for (const LoopStep& st : loop.steps) last_failed[step_name(st)] = step_fit_failed(st);
   for (const LoopStep& st : loop.steps) {
     const std::string name = step_name(st);
-    if (st.accepted && !st.removed)
+    if (st.accepted && !st.removed && st.kind == Effect::profile_correction)
+      shown.push_back(effect_in_words(st.kind, final_correction(loop.final_fit, st.detail)));
+    else if (st.accepted && !st.removed)
       shown.push_back(effect_in_words(st.kind, variable_in_words(st.detail)));
     else if (last_failed[name])
       failed.push_back(name);

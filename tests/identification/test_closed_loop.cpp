@@ -75,9 +75,10 @@ std::set<std::string> as_set(const std::vector<std::string>& v) {
   return {v.begin(), v.end()};
 }
 
-void expect_found(const Case& c, const std::set<std::string>& expected, std::uint64_t seed = 7) {
+ClosedLoopReport expect_found(const Case& c, const std::set<std::string>& expected,
+                              std::uint64_t seed = 7) {
   const Data d = two_sweeps(make_exact_model(c.patch), c.rig, seed);
-  const ClosedLoopReport r = close_the_loop(d.measured, options());
+  ClosedLoopReport r = close_the_loop(d.measured, options());
   EXPECT_EQ(as_set(r.accepted_effects), expected);
   for (const ChannelDiagnostics& ch : r.final_fit.channels) {
     // d.noise is the larger of the two sweeps' noise scales of the channel: the final rms
@@ -87,6 +88,7 @@ void expect_found(const Case& c, const std::set<std::string>& expected, std::uin
   }
   EXPECT_LT(r.final_fit.error, r.base.error);
   EXPECT_FALSE(r.structure_remains);
+  return r;
 }
 
 }  // namespace
@@ -110,7 +112,17 @@ TEST(ClosedLoop, FindsLateralPressureShift) {
 TEST(ClosedLoop, FindsSpeedDependence) {
   Case c = seed_case();
   c.patch.slip_speed_friction = SlipSpeedFriction<double>{0.3, 0.21, 5.0, 1.0};
-  expect_found(c, {"shape", "speed_dependence"});
+  const ClosedLoopReport r = expect_found(c, {"shape", "speed_dependence"});
+  // f is friction at rest; its note gives f (1 - beta), the friction of fast sliding (0.21).
+  const ParameterEstimate* f = r.final_fit.parameter("f");
+  const ParameterEstimate* beta = r.final_fit.parameter("speed_drop");
+  ASSERT_TRUE(f && beta);
+  EXPECT_NEAR(f->value, 0.3, 0.01);
+  char fast[32];
+  std::snprintf(fast, sizeof fast, "%.4g at large w", f->value * (1.0 - beta->value));
+  EXPECT_NE(f->note.find("f at rest (w = 0)"), std::string::npos) << f->note;
+  EXPECT_NE(f->note.find(fast), std::string::npos) << f->note;
+  EXPECT_NEAR(f->value * (1.0 - beta->value), 0.21, 0.01);
 }
 
 // Another tire, as a user would bring it: Hertz pressure with a rolling shift, friction falling

@@ -136,7 +136,7 @@ TEST(IdentifyRequest, BadValuesAreRefusedNamingTheKeyAndTheRange) {
   }
 }
 
-TEST(IdentifyRequest, NormalLoadComesFromTheProfileOrElseFromTheFzColumn) {
+TEST(IdentifyRequest, NormalLoadComesFromTheFzColumnOrElseFromTheProfile) {
   IdentifyRequest r;
   r.radius_m = 0.087;
   r.loop = false;
@@ -169,6 +169,15 @@ TEST(IdentifyRequest, NormalLoadComesFromTheProfileOrElseFromTheFzColumn) {
   patch.friction = 0.3;
   patch.profile = seed_tire_profile();
   EXPECT_NEAR(*from_profile.input.normal_load_n, normal_load(patch), 1e-9 * normal_load(patch));
+  // The profile's pressure and rows with their own Fz: the rows win (each row at its load, f at
+  // their mean), and the report says that the profile gives only its shape.
+  const IdentifyRun both = identify(sweep(3000.0), r);
+  EXPECT_NEAR(*both.input.normal_load_n, 3000.0, 0.01 * 3000.0);
+  EXPECT_NE(both.input.normal_load_source.find("the profile's pressure, " +
+                                               std::to_string(std::lround(normal_load(patch))) +
+                                               " N over the patch, gives only its shape"),
+            std::string::npos)
+      << both.input.normal_load_source;
   // No load anywhere: none reported, and f is not either.
   r.profile.clear();
   r.pressure_pa.reset();

@@ -14,6 +14,7 @@ namespace contensou {
 enum class Effect {
   shape,                      ///< the exact integrals over the profile replace the law
   profile_detail,             ///< the identified profile a quartic instead of a quadratic in rho^2
+  profile_correction,         ///< the given profile times a quadratic in rho^2
   anisotropy,                 ///< lateral friction kappa f, kappa != 1
   pressure_shift_y,           ///< lateral pressure shift ky
   speed_dependence,           ///< friction falling with the slip speed, f(w)
@@ -27,7 +28,7 @@ enum class Effect {
   noise_growth,               ///< the noise grows with the value, sigma = a + b |y|
 };
 /// The number of effects (enumerators of Effect).
-inline constexpr int kEffects = 13;
+inline constexpr int kEffects = 14;
 
 /// One entry of the catalogue: an effect and its texts.
 struct EffectDescriptor {
@@ -48,6 +49,11 @@ bool effect_by_name(const std::string& name, Effect* e);
 /// The words of an effect with its detail in place of "{}" ("friction follows T [degC]"); an
 /// empty detail reads "a recorded variable".
 std::string effect_in_words(Effect e, const std::string& detail);
+
+/// The detail of a profile_correction with weights w1, w2: its factor
+/// q(s) = (1-s)^2 + 2 w1 s(1-s) + w2 s^2 (1 at the centre) at rho = 0.71 (s = 1/2) and at the
+/// rim, "1.2 at rho 0.71 and 1.37 at the rim, 1 at the centre".
+std::string profile_correction_detail(double w1, double w2);
 
 /// The table as Markdown (docs/identification.md holds it; a test compares the two).
 std::string effect_catalogue_markdown();

@@ -154,6 +154,9 @@ struct ModelSpec {
   /// The parametric profile's Bernstein degree: 2 (weights w1, w2) or 4 (w1 to w4, the loop's
   /// profile_detail step).
   int profile_degree = 2;
+  /// The given profile times a quadratic in rho^2, p_g sum_k w_k B_k2 with the weights w1, w2 of
+  /// the parametric profile (the loop's profile_correction step; null w1 = w2 = 1: p_g).
+  bool profile_corrected = false;
   /// The exact laws of the profile, built on first use and shared by the spec's copies
   /// (base_model_spec sets the parametric profile's, base_spec_for a given profile's); a spec
   /// that uses the exact integrals without them cannot be evaluated (std::logic_error).
@@ -179,6 +182,9 @@ struct ModelSpec {
 
   /// Whether the exact integrals take part: exact_only, or the shape blend free or non-zero.
   bool uses_exact() const { return exact_only || free[kShapeBlend] || value[kShapeBlend] != 0.0; }
+  /// The degree ExactLawCache::laws takes: the parametric profile's, or for a given profile 0
+  /// (as given) or 2 (corrected).
+  int law_degree() const { return profile_model ? (profile_corrected ? 2 : 0) : profile_degree; }
 };
 
 /// A spec of radius `radius_m` [m] and load `normal_load_n` [N] with every parameter at its null

@@ -121,12 +121,14 @@ Resultants<T> friction_part(const ModelSpec& s, const T* th, const Kinematics<K>
     y = {wl * r.Fx, wl * r.Fy, wl * r.Mz * g};
   }
   if (s.uses_exact()) {
-    // The exact law of the profile (exact_law_cache.hpp): one law, or the parametric profile's
-    // three basis laws (parametric_profile_coefficients). F0 = f p* R^2 L with f folded in.
+    // The exact law of the profile (exact_law_cache.hpp): one law, or three or five basis laws
+    // (the parametric profile's, or a corrected given profile's: parametric_profile_coefficients).
+    // F0 = f p* R^2 L with f folded in.
     if (!s.exact_laws) throw std::logic_error("ModelSpec without exact laws (use base_model_spec)");
-    const std::vector<ExactLaw>& laws = s.exact_laws->laws(s.speed_in_exact, {}, s.profile_degree);
+    const std::vector<ExactLaw>& laws = s.exact_laws->laws(s.speed_in_exact, {}, s.law_degree());
     std::array<T, 5> coef{T(1.0), T(0.0), T(0.0), T(0.0), T(0.0)};
-    if (laws.size() > 1) coef = detail::parametric_profile_coefficients(th, s.profile_degree);
+    if (laws.size() > 1)
+      coef = detail::parametric_profile_coefficients(th, laws.size() == 5 ? 4 : 2);
     T load(0.0);
     for (std::size_t i = 0; i < laws.size(); ++i) load += coef[i] * laws[i].load_area;
     const double Rl = laws.front().radius;

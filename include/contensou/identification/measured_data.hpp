@@ -114,8 +114,12 @@ std::string point_location(const MeasuredData& data, std::size_t point);
 struct LoadFromData {
   double mean_n = 0.0;  ///< mean Fz over the rows that have one [N]
   double spread = 0.0;  ///< max |Fz - mean| / mean over those rows
+  double min_n = 0.0;   ///< the smallest Fz [N]
+  double max_n = 0.0;   ///< the largest Fz [N]
   int rows = 0;         ///< the number of rows with an Fz value
-  /// "mean of the Fz column over 112 rows, within +-0.8 %", for the report.
+  /// "mean of the Fz column over 112 rows, within +-0.8 %" (one load) or "mean of the Fz column
+  /// over 1089 rows, 2000 to 6000 N, each row at its own load" (a spread above 5 %), for the
+  /// report.
   std::string description() const;
 };
 /// The load of the data's Fz column (LoadFromData); nullopt if no row has one.

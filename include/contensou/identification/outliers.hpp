@@ -23,6 +23,7 @@
 /// below the threshold with room for that (none in 500 clean rows of the tests).
 #pragma once
 
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -57,12 +58,17 @@ std::vector<Outlier> find_outliers(const MeasuredData& data,
                                    double threshold_sigma = kOutlierThresholdSigma);
 
 /// The scatter of each channel's residual between neighbouring rows (the rule's d, in kinematic
-/// order): the rms of d over its smaller 98 %, / 1.14, a noise scale comparable with the
+/// order): the rms of d over its smaller 98 %, / 1.067 (what that is for Gaussian noise of unit
+/// scale), a noise scale comparable with the
 /// residual's rms that a smooth misfit of the model does not inflate (0 for a channel with fewer
 /// than four such differences, and for every channel when `prediction` does not have one value
-/// per point). A residual whose rms is several times it is a misfit, not noise.
-std::array<double, kChannels> neighbour_scatter(const MeasuredData& data,
-                                                const std::vector<Resultants<double>>& prediction);
+/// per point). A residual whose rms is several times it is a misfit, not noise. With
+/// `row_scale` (the noise scale of channel c at point i, for noise that grows with the value),
+/// the 2 % left out are the largest d / scale, not the largest d: the quiet rows' glitches, not
+/// the loud rows' noise (which the residual's rms counts too).
+std::array<double, kChannels> neighbour_scatter(
+    const MeasuredData& data, const std::vector<Resultants<double>>& prediction,
+    const std::function<double(int c, std::size_t i)>& row_scale = {});
 
 /// The data with the outlying values marked not measured (a row left with no channel is
 /// dropped; an outlier whose point or channel is out of range is ignored).
