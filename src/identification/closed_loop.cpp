@@ -232,10 +232,11 @@ LoopStep test_extension(const MeasuredData& data, const LoopState& cur, const Lo
 }
 
 // An accepted step the backward pass may take out: not the shape nor the profile's degree (the
-// model's form, not an effect with a null), and not taken out already.
+// model's form, not an effect with a null), and not taken out already. A profile correction is
+// (tested right after the shape, it can stand in for effects found later).
 bool prunable(const LoopStep& acc) {
   return acc.accepted && !acc.removed && acc.kind != Effect::shape &&
-         acc.kind != Effect::profile_detail && acc.kind != Effect::profile_correction;
+         acc.kind != Effect::profile_detail;
 }
 
 // Backward pass: an effect accepted early may stand in for ones found later. Refit without
@@ -266,6 +267,7 @@ void prune(const MeasuredData& data, const NoiseSettings& noise, const ClosedLoo
             }
             without.dependence[j].reset();
           }
+      if (acc.kind == Effect::profile_correction) without.profile_corrected = false;
       set_speed_inside(without, loop);
       say(loop, "backward: refitting without " + acc.effect);
       const LoopState wo = fit_state(data, without, noise);

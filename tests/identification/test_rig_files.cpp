@@ -148,6 +148,25 @@ TEST(RigFiles, ASlipAngleOffsetSweptInThreeDirectionsIsRecovered) {
   expect_at_the_noise(d, id.final_fit());
 }
 
+// The right profile on a file whose other effects the loop finds later (friction falling with
+// the load, a misaligned rig in three directions): a profile_correction tried right after the
+// shape may soak up their misfit for a while, but none is left at the end (the backward pass
+// takes out a correction that later effects made redundant).
+TEST(RigFiles, TheRightProfileEndsUncorrectedWhenOtherEffectsComeLater) {
+  RigFile s;
+  s.loads = kThreeLoads;
+  s.directions = {0.0, 0.25 * std::numbers::pi, 0.5 * std::numbers::pi};
+  s.slip_angle_offset = 0.01;
+  s.factor = [](double load, double, double) { return 1.0 - 0.08 * (load - 4500.0) / 3000.0; };
+  const MeasuredData d = make_rig_file(s);
+  const Identification id = identify(d, loop_options());
+  ASSERT_TRUE(id.loop);
+  EXPECT_EQ(kept(*id.loop),
+            (std::set<std::string>{"shape", "friction_dependence(Fz_N)", "slip_angle_offset"}));
+  EXPECT_FALSE(id.loop->final_spec.profile_corrected);
+  expect_at_the_noise(d, id.final_fit());
+}
+
 // The same offset with longitudinal sweeps only: vy = -vx tan(delta) looks like crosstalk to the
 // data. Whatever the loop keeps, it must not keep it silently: the step names the other as an
 // alternative, with the sweep that would separate them.
