@@ -182,10 +182,30 @@ std::string sweeps_csv(const MeasuredData& data, const std::vector<Sweep>& sweep
 }
 
 // The gnuplot clauses of one channel's upper panel: measured points and the fitted law, one
-// colour a sweep (up to kMaxCurves; beyond, all rows alike, the law as points), then the values
-// left out as gross errors.
-constexpr std::size_t kMaxCurves = 10;
+// colour a sweep (up to kMaxCurves, each named in the key up to kMaxKeyed; beyond, all rows
+// alike, the law as points), then the values left out as gross errors.
+constexpr std::size_t kMaxCurves = 40;
+constexpr std::size_t kMaxKeyed = 12;
 constexpr std::size_t kDrawnRows = 5000;
+
+// Whether a channel's picture draws each sweep in its own colour (the title says so only then).
+bool coloured_by_sweep(const std::vector<Sweep>& sweeps) {
+  return sweeps.size() <= kMaxCurves;
+}
+
+// Sweep k of n's colour: gnuplot's own line colours up to 8 sweeps, else hues around the wheel
+// (alternately darker) as '#rrggbb'.
+std::string sweep_colour(std::size_t k, std::size_t n) {
+  if (n <= 8) return std::to_string(k + 1);
+  const double h = 6.0 * static_cast<double>(k) / static_cast<double>(n);
+  const double v = k % 2 ? 0.65 : 0.95, x = v * (1.0 - std::abs(std::fmod(h, 2.0) - 1.0));
+  const int sector = static_cast<int>(h) % 6;
+  const double rgb[6][3] = {{v, x, 0}, {x, v, 0}, {0, v, x}, {0, x, v}, {x, 0, v}, {v, 0, x}};
+  char buf[16];
+  std::snprintf(buf, sizeof buf, "#%02x%02x%02x", static_cast<int>(255 * rgb[sector][0]),
+                static_cast<int>(255 * rgb[sector][1]), static_cast<int>(255 * rgb[sector][2]));
+  return "rgb '" + std::string(buf) + "'";
+}
 
 std::string channel_clauses(const std::vector<Sweep>& sweeps, const std::string& x,
                             const std::string& ch, bool any_outlier, const std::string& every) {
@@ -195,19 +215,23 @@ std::string channel_clauses(const std::vector<Sweep>& sweeps, const std::string&
   auto only = [](std::size_t k, const std::string& col) {
     return "(column(\"sweep\")==" + std::to_string(k + 1) + "?column(\"" + col + "\"):NaN)";
   };
-  if (sweeps.size() <= kMaxCurves) {
-    for (std::size_t k = 0; k < sweeps.size(); ++k) {
-      const std::string colour = std::to_string(k + 1);
+  const std::size_t n = sweeps.size();
+  if (coloured_by_sweep(sweeps)) {
+    for (std::size_t k = 0; k < n; ++k) {
+      const std::string title =
+          n <= kMaxKeyed ? "title '" + sweeps[k].label + "'"
+          : k == 0       ? "title 'measured, " + std::to_string(n) + " sweeps (sweeps.csv)'"
+                         : "notitle";
       plot += std::string(k ? ", " : "") + file + only(k, "measured_" + ch) +
-              " with points pt 7 ps 0.4 lc " + colour + " title '" + sweeps[k].label + "'";
+              " with points pt 7 ps 0.4 lc " + sweep_colour(k, n) + " " + title;
     }
-    for (std::size_t k = 0; k < sweeps.size(); ++k)  // the law over every sweep's points
+    for (std::size_t k = 0; k < n; ++k)  // the law over every sweep's points
       plot += ", " + again + only(k, "fit_" + ch) + " with lines lw 1.5 lc rgb 'black' " +
               (k == 0 ? "title 'fitted law'" : "notitle");
   } else {
     plot += file + "\"measured_" + ch +
-            "\" with points pt 7 ps 0.5 lc rgb '#1f77b4' title 'measured (" +
-            std::to_string(sweeps.size()) + " sweeps)', " + again + "\"fit_" + ch +
+            "\" with points pt 7 ps 0.5 lc rgb '#1f77b4' title 'measured (" + std::to_string(n) +
+            " sweeps)', " + again + "\"fit_" + ch +
             "\" with points pt 6 ps 0.5 lc rgb '#d62728' title 'fitted law'";
   }
   if (any_outlier)  // every gross error marked, however many rows are drawn
@@ -238,7 +262,8 @@ std::string fit_script(const PlotInput& in, const std::vector<Sweep>& sweeps) {
     const std::string xlabel = c == 0 ? "psi = v / (omega R) [-]" : "upsilon = omega R / v [-]";
     gp += "set output 'fit_" + ch + ".png'\n";
     gp += "set multiplot layout 2,1 title '" + std::string(title[c]) + ": measured and fitted, " +
-          "one colour a sweep" + drawn + "' noenhanced\n";
+          (coloured_by_sweep(sweeps) ? "one colour a sweep" : "all sweeps in one colour") + drawn +
+          "' noenhanced\n";
     gp +=
         "set logscale x\nset format x '10^{%L}'\nset grid\n"
         "set key outside right top box noenhanced\nset lmargin 12\nset rmargin 34\n";

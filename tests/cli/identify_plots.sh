@@ -52,3 +52,15 @@ table = list(csv.DictReader(open(sweeps)))
 assert sum(int(t["rows"]) for t in table) == len(out), "sweeps.csv does not count every row"
 print(f"fit.csv: {len(out)} rows in {len(table)} sweeps, each channel the data's own values")
 PY
+# A title that says "one colour a sweep" has one measured clause a sweep, each its own colour.
+python3 - "$dir/plots/fit.gp" "$dir/plots/sweeps.csv" <<'PY'
+import csv, re, sys
+gp, sweeps = open(sys.argv[1]).read(), list(csv.DictReader(open(sys.argv[2])))
+for block in gp.split("set output ")[1:]:
+    if "one colour a sweep" not in block:
+        continue
+    measured = re.findall(r'column\("sweep"\)==(\d+)\?column\("measured_[^"]+"\):NaN\) with points pt \d+ ps [\d.]+ lc (rgb \S+|\d+)', block)
+    assert len(measured) == len(sweeps), f"{len(measured)} measured clauses for {len(sweeps)} sweeps"
+    assert len({c for _, c in measured}) == len(sweeps), "two sweeps share a colour"
+print("fit.gp: one colour a sweep, as its titles say")
+PY
