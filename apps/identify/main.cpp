@@ -23,6 +23,7 @@
 #include "gnuplot.hpp"
 #include "report.hpp"
 #include "run_guard.hpp"
+#include "test_seams.hpp"  // the hidden --test-failing-point
 
 using namespace contensou;
 
@@ -413,7 +414,7 @@ void add_fit_options(CLI::App& app, FitArgs& a, FitOptionHandles& h) {
                "a terminal)");
   app.add_flag("--verbose", h.verbose, "show the solver's own log (Ceres, glog) on stderr");
   // Testing only (hidden): the residual of this data point fails to evaluate.
-  app.add_option("--test-failing-point", r.failing_point)->group("");
+  app.add_option("--test-failing-point", testing::Seams::of(r).failing_point)->group("");
 }
 
 // The options of `contensou-identify simulate`.

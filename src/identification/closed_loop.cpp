@@ -13,6 +13,7 @@
 #include "contensou/identification/statistics.hpp"
 #include "fit_problem.hpp"
 #include "loop_candidates.hpp"
+#include "test_seams.hpp"
 
 namespace contensou {
 using namespace detail;  // NOLINT: the loop's candidates (loop_candidates.hpp)
@@ -420,7 +421,8 @@ StepFit fit_step(const MeasuredData& data, const LoopState& cur, const ModelSpec
                  const Candidate& c, double threshold, const NoiseSettings& noise,
                  const ClosedLoopOptions& loop) {
   NoiseSettings first = noise;
-  if (loop.test_first_fit_iterations >= 0) first.solver_iterations = loop.test_first_fit_iterations;
+  if (const int n = testing::Seams::of(loop).first_fit_iterations; n >= 0)
+    first.solver_iterations = n;
   StepFit best{fit_state(data, ext_spec, first), {}};
   throw_if_stopped(noise.stop);
   best.step = test_extension(data, cur, best.ext, c, threshold, loop);

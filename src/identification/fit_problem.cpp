@@ -1,6 +1,7 @@
 // The fit as a Ceres problem: one residual block per row, the bounds, the solve (with the bound
 // watch and the noise rounds). See fit_problem.hpp.
 #include "fit_problem.hpp"
+#include "test_seams.hpp"
 
 #include <ceres/ceres.h>
 
@@ -461,7 +462,7 @@ Solution solve(const FitSetup& s) {
                        &sol.prediction,
                        s.noise.loss,
                        s.noise.loss_scale,
-                       s.noise.failing_point};
+                       testing::Seams::of(s.noise).failing_point};
     add_points(*sol.problem, s.data, s.spec, s.active, s.theta_const, sol.packed.data(), wt, s.use);
     set_bounds(*sol.problem, sol.packed.data(), s.active);
     ceres::Solver::Options opt;

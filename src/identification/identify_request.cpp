@@ -7,6 +7,7 @@
 
 #include "contensou/friction/contact_patch.hpp"
 #include "contensou/identification/effect_model.hpp"
+#include "test_seams.hpp"
 
 namespace contensou {
 
@@ -163,7 +164,7 @@ IdentifyOptions identify_options(const IdentifyRequest& r, ProfileChoice& profil
   if (const std::optional<double> n = load_from_profile(r, profile)) f.normal_load_n = n;
   if (!r.profile.empty()) f.profile = profile.profile;
   f.fixed = r.fix;
-  f.failing_point = r.failing_point;
+  testing::Seams::of(f) = testing::Seams::of(r);
   f.loss = r.loss == "huber"    ? RobustLoss::huber
            : r.loss == "cauchy" ? RobustLoss::cauchy
                                 : RobustLoss::none;

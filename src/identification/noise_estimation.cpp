@@ -1,6 +1,7 @@
 // The noise scales of a fit from its residuals: additive, relative, robust and affine
 // (sigma = a + b |y|) noise. See fit_problem.hpp and fit.hpp.
 #include "fit_problem.hpp"
+#include "test_seams.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -139,7 +140,7 @@ NoiseSettings noise_settings_for(const IdentificationOptions& o) {
   n.loss = o.loss;
   n.loss_scale = o.loss_scale;
   n.iterations = o.noise_iterations;
-  n.failing_point = o.failing_point;
+  testing::Seams::of(n) = testing::Seams::of(o);
   n.stop = o.stop;
   return n;
 }

@@ -8,6 +8,7 @@
 #include "contensou/identification/closed_loop.hpp"
 #include "contensou/identification/report_text.hpp"
 #include "contensou/identification/simulation.hpp"
+#include "test_seams.hpp"
 
 using namespace contensou;
 
@@ -245,7 +246,7 @@ TEST(ClosedLoop, AFirstFitThatStopsAtItsStartIsRetried) {
   ClosedLoopOptions lo;
   lo.max_steps = 1;
   const ClosedLoopReport plain = close_the_loop(d.measured, o, lo);
-  lo.test_first_fit_iterations = 0;
+  contensou::testing::Seams::of(lo).first_fit_iterations = 0;
   const ClosedLoopReport stalled = close_the_loop(d.measured, o, lo);
   const auto shape_step = [](const ClosedLoopReport& r) -> const LoopStep* {
     for (const LoopStep& st : r.steps)

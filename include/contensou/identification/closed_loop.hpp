@@ -113,10 +113,11 @@ struct ClosedLoopOptions {
   /// (when the noise model is additive and its scales are estimated). The app's and Python's
   /// default (noise_model "auto").
   bool choose_noise_model = false;
-  /// Testing only: Ceres' iterations in each candidate's first fit (-1: as every fit), so that a
-  /// first fit stops at its start and the retry from other starts (LoopStep::retries) runs.
-  int test_first_fit_iterations = -1;
   std::function<void(const std::string&)> progress;  ///< called with a line per stage
+
+ private:
+  detail::TestSeams seams_;
+  friend struct testing::Seams;
 };
 
 /// What the closed loop found.

@@ -33,6 +33,18 @@
 
 namespace contensou {
 
+namespace testing {
+struct Seams;  // (Internal) src/identification/test_seams.hpp, not installed
+}  // namespace testing
+
+namespace detail {
+/// (Internal) What tests set, through testing::Seams only, to reach failure paths; -1: off.
+struct TestSeams {
+  int failing_point = -1;         ///< this point's residual fails to evaluate (a failed solve)
+  int first_fit_iterations = -1;  ///< Ceres' iterations in a loop candidate's first fit
+};
+}  // namespace detail
+
 /// How the noise scale s_ic of value i of channel c follows the value.
 enum class NoiseModel {
   additive,  ///< s_ic = s_c
@@ -75,10 +87,13 @@ struct IdentificationOptions {
   double loss_scale = 2.0;             ///< robust loss threshold, in noise scales
   int noise_iterations = 6;            ///< fit / scatter / refit rounds when s_c is estimated
   double regularization_speed = 1e-6;  ///< eps of the law [m/s]
-  int failing_point = -1;              ///< testing only: see NoiseSettings::failing_point
   /// Polled between the solver's iterations and the closed loop's stages (and by the exact laws'
   /// builds): the fit or the loop throws Interrupted once it returns true (error.hpp).
   StopRequest stop{};
+
+ private:
+  detail::TestSeams seams_;
+  friend struct testing::Seams;
 };
 
 /// One parameter of a fit's report.
@@ -191,12 +206,13 @@ struct NoiseSettings {
   /// scales change by less than 1e-3.
   int iterations = 6;
   int solver_iterations = 200;  ///< Ceres' iterations per round (the loop's retry test lowers it)
-  /// Testing only: the residual of this point (index into the data) fails to evaluate, so that
-  /// the failed-solve path (an error naming the fit, no report) can be exercised. -1: none.
-  int failing_point = -1;
   /// Polled after every solver iteration and between the rounds: Interrupted once it returns
   /// true (IdentificationOptions::stop).
   StopRequest stop{};
+
+ private:
+  detail::TestSeams seams_;
+  friend struct testing::Seams;
 };
 
 /// Fits a general model (effect_model.hpp): its free parameters, from spec.value as start.

@@ -41,12 +41,15 @@ struct IdentifyRequest {
   /// speed_inside_integrals: the loop's slip-speed friction at the local slip speed inside the
   /// exact integrals (else at an effective speed).
   bool speed_inside_integrals = true;
-  bool outliers = true;    ///< outliers: find gross errors and leave them out
-  int failing_point = -1;  ///< testing only (IdentificationOptions::failing_point)
+  bool outliers = true;  ///< outliers: find gross errors and leave them out
   /// Called with a line per stage of the closed loop (ClosedLoopOptions::progress).
   std::function<void(const std::string&)> progress;
   StopRequest stop{};  ///< polled by the fit and the loop (IdentificationOptions::stop)
   KeyStyle style = KeyStyle::python;  ///< how errors name the keys
+
+ private:
+  detail::TestSeams seams_;
+  friend struct testing::Seams;
 };
 
 /// A key of the request with what it means (units included).
