@@ -26,6 +26,7 @@ using namespace contensou;
 
 struct LawArguments {
   std::string out, profile = "uniform", law = "exact", model_name = "contensou_law";
+  std::string profile_name;  // how the model description names a CSV profile (else its path)
   std::optional<double> radius, load, pressure, friction;
   std::vector<double> slip_speed;
   int fmi = 2;
@@ -162,6 +163,8 @@ void add_law_options(CLI::App& law, LawArguments& a) {
       ->capture_default_str();
   law.add_option("--model-name", a.model_name, "modelName in modelDescription.xml")
       ->capture_default_str();
+  law.add_option("--profile-name", a.profile_name,
+                 "how the model description names a CSV profile (default: the file's path)");
   law.add_option("--fmi", a.fmi, "the standard: 2 (FMI 2.0) or 3 (FMI 3.0)")
       ->check(CLI::IsMember({2, 3}))
       ->capture_default_str();
@@ -204,7 +207,8 @@ int main(int argc, char** argv) {
       o.model_name = a.model_name;
       o.fmi_version = a.fmi;
       o.profile_text = a.profile.size() > 4 && a.profile.substr(a.profile.size() - 4) == ".csv"
-                           ? describe(patch.profile) + " from " + a.profile
+                           ? describe(patch.profile) + " from " +
+                                 (a.profile_name.empty() ? a.profile : a.profile_name)
                            : "";
       const fmu::FmuExport e = fmu::export_law_fmu(patch, a.out, o);
       print(e, "law FMU");

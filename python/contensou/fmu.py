@@ -83,7 +83,8 @@ def _profile_arguments(patch: ContactPatch, folder: Path) -> list[str]:
     lines += [f"{r!r},{v!r}" for r, v in zip(rho.tolist(), p.tolist())]
     table.write_text("\n".join(lines) + "\n")
     # The file's mean pressure becomes p* and the table p / p*: the same pressure sigma.
-    return ["--profile", str(table), *flags]
+    name = f"the {profile.kind} profile of the patch exported, sampled at {TABLE_POINTS} points in rho^2"
+    return ["--profile", str(table), "--profile-name", name, *flags]
 
 
 def export(

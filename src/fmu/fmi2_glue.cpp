@@ -108,6 +108,8 @@ constexpr unsigned kRunning =
     bit(Phase::event_mode) | bit(Phase::continuous) | bit(Phase::step_complete);
 constexpr unsigned kInitialized = kRunning | bit(Phase::initialization) | bit(Phase::terminated);
 constexpr unsigned kAfterInstantiation = kInitialized | bit(Phase::instantiated);
+// Where fmi2Set* may be called: not once terminated (FMI 2.0 state machine, section 4.3.1).
+constexpr unsigned kSettable = kAfterInstantiation & ~bit(Phase::terminated);
 
 // A function of the standard this FMU does not provide (its capability flag is false).
 fmi2Status unsupported(fmi2Component c, const char* what, const char* why) {
@@ -299,7 +301,7 @@ fmi2Status fmi2GetReal(fmi2Component c, const fmi2ValueReference vr[], size_t n,
 
 fmi2Status fmi2SetReal(fmi2Component c, const fmi2ValueReference vr[], size_t n,
                        const fmi2Real value[]) {
-  return cf::guarded(c, "fmi2SetReal", cf::kAfterInstantiation, [&](Instance& in) {
+  return cf::guarded(c, "fmi2SetReal", cf::kSettable, [&](Instance& in) {
     cf::require_array(vr, n, "vr");
     cf::require_array(value, n, "value");
     for (size_t i = 0; i < n; ++i) {
@@ -319,7 +321,7 @@ fmi2Status fmi2GetInteger(fmi2Component c, const fmi2ValueReference[], size_t n,
 
 fmi2Status fmi2SetInteger(fmi2Component c, const fmi2ValueReference[], size_t n,
                           const fmi2Integer[]) {
-  return cf::guarded(c, "fmi2SetInteger", cf::kAfterInstantiation, [&](Instance&) {
+  return cf::guarded(c, "fmi2SetInteger", cf::kSettable, [&](Instance&) {
     if (n > 0) throw InvalidArgument("vr", "given", "this FMU has no Integer variables");
     return fmi2OK;
   });
@@ -340,7 +342,7 @@ fmi2Status fmi2GetBoolean(fmi2Component c, const fmi2ValueReference vr[], size_t
 
 fmi2Status fmi2SetBoolean(fmi2Component c, const fmi2ValueReference vr[], size_t n,
                           const fmi2Boolean value[]) {
-  return cf::guarded(c, "fmi2SetBoolean", cf::kAfterInstantiation, [&](Instance& in) {
+  return cf::guarded(c, "fmi2SetBoolean", cf::kSettable, [&](Instance& in) {
     cf::require_array(vr, n, "vr");
     cf::require_array(value, n, "value");
     for (size_t i = 0; i < n; ++i) {
@@ -368,7 +370,7 @@ fmi2Status fmi2GetString(fmi2Component c, const fmi2ValueReference vr[], size_t 
 
 fmi2Status fmi2SetString(fmi2Component c, const fmi2ValueReference vr[], size_t n,
                          const fmi2String value[]) {
-  return cf::guarded(c, "fmi2SetString", cf::kAfterInstantiation, [&](Instance& in) {
+  return cf::guarded(c, "fmi2SetString", cf::kSettable, [&](Instance& in) {
     cf::require_array(vr, n, "vr");
     cf::require_array(value, n, "value");
     for (size_t i = 0; i < n; ++i) {

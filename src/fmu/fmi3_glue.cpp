@@ -52,6 +52,8 @@ constexpr unsigned kRunning3 =
 constexpr unsigned kInitialized3 =
     kRunning3 | bit(Phase3::initialization) | bit(Phase3::terminated);
 constexpr unsigned kAll3 = kInitialized3 | bit(Phase3::instantiated);
+// Where fmi3Set* may be called: not once terminated (FMI 3.0 state machine).
+constexpr unsigned kSettable3 = kAll3 & ~bit(Phase3::terminated);
 
 void log(const Instance3& in, fmi3Status status, const std::string& text) {
   if (in.logger) in.logger(in.environment, status, "logStatusError", text.c_str());
@@ -287,7 +289,7 @@ fmi3Status fmi3GetFloat64(fmi3Instance c, const fmi3ValueReference vr[], size_t 
 
 fmi3Status fmi3SetFloat64(fmi3Instance c, const fmi3ValueReference vr[], size_t n,
                           const fmi3Float64 values[], size_t n_values) {
-  return cf::guarded(c, "fmi3SetFloat64", cf::kAll3, [&](Instance3& in) {
+  return cf::guarded(c, "fmi3SetFloat64", cf::kSettable3, [&](Instance3& in) {
     cf::require_arrays(vr, values, n, n_values);
     for (size_t i = 0; i < n; ++i) {
       cf::check_settable(in, cf::variable(in, vr[i], VariableType::real));
@@ -311,7 +313,7 @@ fmi3Status fmi3GetBoolean(fmi3Instance c, const fmi3ValueReference vr[], size_t 
 
 fmi3Status fmi3SetBoolean(fmi3Instance c, const fmi3ValueReference vr[], size_t n,
                           const fmi3Boolean values[], size_t n_values) {
-  return cf::guarded(c, "fmi3SetBoolean", cf::kAll3, [&](Instance3& in) {
+  return cf::guarded(c, "fmi3SetBoolean", cf::kSettable3, [&](Instance3& in) {
     cf::require_arrays(vr, values, n, n_values);
     for (size_t i = 0; i < n; ++i) {
       cf::check_settable(in, cf::variable(in, vr[i], VariableType::boolean));
@@ -337,7 +339,7 @@ fmi3Status fmi3GetString(fmi3Instance c, const fmi3ValueReference vr[], size_t n
 
 fmi3Status fmi3SetString(fmi3Instance c, const fmi3ValueReference vr[], size_t n,
                          const fmi3String values[], size_t n_values) {
-  return cf::guarded(c, "fmi3SetString", cf::kAll3, [&](Instance3& in) {
+  return cf::guarded(c, "fmi3SetString", cf::kSettable3, [&](Instance3& in) {
     cf::require_arrays(vr, values, n, n_values);
     for (size_t i = 0; i < n; ++i) {
       cf::check_settable(in, cf::variable(in, vr[i], VariableType::string));
@@ -359,7 +361,7 @@ fmi3Status fmi3SetString(fmi3Instance c, const fmi3ValueReference vr[], size_t n
   }                                                                                             \
   fmi3Status fmi3Set##Type(fmi3Instance c, const fmi3ValueReference[], size_t n, const CType[], \
                            size_t) {                                                            \
-    return cf::guarded(c, "fmi3Set" #Type, cf::kAll3, [&](Instance3&) {                         \
+    return cf::guarded(c, "fmi3Set" #Type, cf::kSettable3, [&](Instance3&) {                    \
       if (n) throw InvalidArgument("valueReferences", "given", "no " #Type " variables here");  \
       return fmi3OK;                                                                            \
     });                                                                                         \

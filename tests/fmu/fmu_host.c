@@ -298,6 +298,12 @@ static void law_bad_inputs(const Fmu* f, const char* work) {
   f->reset(c);
   f->enter_init(c);
   f->exit_init(c);
+  f->terminate(c); /* terminated: values can be read, not set (FMI 2.0, section 4.3.1) */
+  CHECK(f->get_real(c, &fx, 1, &out) == fmi2OK, "get after terminate: %s", log.message);
+  REFUSED(f->set_real(c, &vx, 1, &one), "not allowed");
+  f->reset(c);
+  f->enter_init(c);
+  f->exit_init(c);
   REFUSED(f->do_step(c, 5.0, 1e-3, fmi2True), "end of the previous step");
   f->reset(c);
   f->enter_init(c);
