@@ -1,5 +1,7 @@
 #include <gtest/gtest.h>
 
+#include "temp_files.hpp"
+
 #include "contensou/friction/csv.hpp"
 #include "contensou/friction/error.hpp"
 
@@ -220,7 +222,7 @@ TEST(Csv, ReadsAsItGoesAndChecksEachByte) {
     EXPECT_EQ(e.column(), 1);
     EXPECT_NE(std::string(e.what()).find("a NUL byte"), std::string::npos);
   }
-  const std::string path = ::testing::TempDir() + "contensou-csv-blocks.csv";
+  const std::string path = contensou::test::temp_path("contensou-csv-blocks.csv");
   std::string text = "x,y\r\n";
   int rows = 0;
   while (text.size() < 3 * 65536) {

@@ -1,5 +1,7 @@
 #include <gtest/gtest.h>
 
+#include "temp_files.hpp"
+
 #include <cmath>
 #include <cstdio>
 #include <fstream>
@@ -136,7 +138,7 @@ TEST(Profiles, BadInputNamesTheParameter) {
 }
 
 std::string write_temp(const std::string& name, const std::string& text) {
-  const std::string path = ::testing::TempDir() + name;
+  const std::string path = contensou::test::temp_path(name);
   std::ofstream(path) << text;
   return path;
 }

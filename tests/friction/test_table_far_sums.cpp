@@ -4,6 +4,8 @@
 // limit on the number of points.
 #include <gtest/gtest.h>
 
+#include "temp_files.hpp"
+
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
@@ -236,7 +238,7 @@ TEST(DenseProfile, TooManyPointsIsAClearError) {
     EXPECT_NE(std::string(e.what()).find(count + " points"), std::string::npos) << e.what();
     EXPECT_NE(std::string(e.what()).find("at most " + limit), std::string::npos) << e.what();
   }
-  const std::string path = ::testing::TempDir() + "dense_profile_too_many.csv";
+  const std::string path = contensou::test::temp_path("dense_profile_too_many.csv");
   {
     std::ofstream out(path);
     out.precision(17);

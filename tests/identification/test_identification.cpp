@@ -1,5 +1,7 @@
 #include <gtest/gtest.h>
 
+#include "temp_files.hpp"
+
 #include "seed_tire_law.hpp"
 
 #include <cmath>
@@ -265,7 +267,7 @@ TEST(MeasuredData, RoundTripAndErrors) {
   s.time_step_s = 0.5;
   MeasuredData d = simulate_diagrams(law, s);
   d.points[3].force[1].reset();
-  const std::string path = ::testing::TempDir() + "diagrams.csv";
+  const std::string path = contensou::test::temp_path("diagrams.csv");
   write_measured_csv(path, d, "test data");
   const MeasuredData back = read_measured_csv(path);
   ASSERT_EQ(back.points.size(), d.points.size());
@@ -276,7 +278,7 @@ TEST(MeasuredData, RoundTripAndErrors) {
   EXPECT_EQ(back.count(1), 6);
 
   auto error_line = [](const std::string& text) {
-    const std::string p = ::testing::TempDir() + "bad_diagrams.csv";
+    const std::string p = contensou::test::temp_path("bad_diagrams.csv");
     std::ofstream(p) << text;
     try {
       read_measured_csv(p);

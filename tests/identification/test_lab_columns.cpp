@@ -2,6 +2,8 @@
 // --columns, values converted to SI and never taken as they are (lab_columns.hpp).
 #include <gtest/gtest.h>
 
+#include "temp_files.hpp"
+
 #include <cmath>
 #include <fstream>
 #include <string>
@@ -15,7 +17,7 @@ using namespace contensou;
 namespace {
 
 std::string write(const std::string& name, const std::string& text) {
-  const std::string path = ::testing::TempDir() + name;
+  const std::string path = contensou::test::temp_path(name);
   std::ofstream(path) << text;
   return path;
 }
