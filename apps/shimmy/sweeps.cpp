@@ -137,7 +137,7 @@ void draw_amplitudes(const OutputDir& out, const std::vector<const BifurcationSw
   gp << header(name, group.front()->axis, 2,
                "braked slide: limit cycle against " + parameter_axis_label(parameter) +
                    "\\ndotted: linear boundaries (" + boundary_words(group) +
-                   ")\\nwhere the two directions part: hysteresis (a subcritical branch)")
+                   ")\\nwhere both directions settle apart: hysteresis (a subcritical branch)")
      << boundary_arrows(group) << "set ylabel 'limit-cycle amplitude of psi [rad]'\n"
      << panel(group, "amplitude_rad") << "set ylabel 'torque-link load amplitude [N m]'\n"
      << panel(group, "torque_link_nm") << "unset multiplot\n";
