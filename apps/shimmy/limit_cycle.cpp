@@ -9,6 +9,24 @@ namespace contensou::app {
 
 namespace {
 
+// Why the amplitude is not settled: its trend outside the band, or within it while the
+// amplitude still moved more than kSettledChange since the window's middle (a slow drift).
+std::string trend_words(const LimitCycle& c) {
+  char buf[300];
+  if (c.drifting)
+    std::snprintf(buf, sizeof buf,
+                  "%s %.1f %% from +-%.3g rad at %.3g s (trend %+.3f 1/s over the last %d periods, "
+                  "within +-%.3f, yet a slow drift; eigenvalue %+.3f 1/s)",
+                  c.amplitude_rad > c.midway_amplitude_rad ? "up" : "down",
+                  100.0 * std::abs(c.amplitude_rad / c.midway_amplitude_rad - 1.0),
+                  c.midway_amplitude_rad, c.midway_s, c.trend_per_s, kTrendPeriods, c.band_per_s,
+                  c.eigen_growth_per_s);
+  else
+    std::snprintf(buf, sizeof buf, "trend %+.3f 1/s (outside +-%.3f; eigenvalue %+.3f 1/s)",
+                  c.trend_per_s, c.band_per_s, c.eigen_growth_per_s);
+  return buf;
+}
+
 std::string describe(const LimitCycle& c, const ShimmyCriterion& k) {
   char buf[400];
   const double e = c.eigen_growth_per_s;
@@ -16,18 +34,25 @@ std::string describe(const LimitCycle& c, const ShimmyCriterion& k) {
     case CycleState::not_measured:
       return "no limit cycle measured (the window holds fewer than " +
              std::to_string(kTrendPeriods) + " periods)";
-    case CycleState::limit_cycle:
+    case CycleState::limit_cycle: {
+      std::string how;
+      if (e <= 0.0) {
+        how = ": stable to small motions, the swing the landing left is past an unstable cycle";
+      } else if (c.start_amplitude_rad > (1.0 + kSettledChange) * c.amplitude_rad) {
+        std::snprintf(buf, sizeof buf, ", reached from above: the window began at +-%.3g rad",
+                      c.start_amplitude_rad);
+        how = buf;
+      }
       std::snprintf(buf, sizeof buf,
                     "%s: a limit cycle of +-%.3g rad (torque link +-%.3g N m), settled by %.3g s "
-                    "(trend %+.3f 1/s within +-%.3f over %d periods; eigenvalue %+.3f 1/s%s)",
+                    "(trend %+.3f 1/s within +-%.3f over %d periods, %+.1f %% since %.3g s; "
+                    "eigenvalue %+.3f 1/s%s)",
                     e > 0.0 ? "shimmy" : "shimmy held by a nonlinearity", c.amplitude_rad,
-                    c.torque_link_nm, c.run_end_s, c.trend_per_s, c.band_per_s, kTrendPeriods, e,
-                    e > 0.0 ? (c.earlier_amplitude_rad > c.amplitude_rad
-                                   ? ", reached from above: the spin-up left a larger swing"
-                                   : "")
-                            : ": stable to small motions, the swing the landing left is past an "
-                              "unstable cycle");
+                    c.torque_link_nm, c.run_end_s, c.trend_per_s, c.band_per_s, kTrendPeriods,
+                    100.0 * (c.amplitude_rad / c.midway_amplitude_rad - 1.0), c.midway_s, e,
+                    how.c_str());
       return buf;
+    }
     case CycleState::settled_small:
       std::snprintf(buf, sizeof buf,
                     "settled at +-%.3g rad, below the threshold %.3g rad, by %.3g s (trend "
@@ -36,22 +61,19 @@ std::string describe(const LimitCycle& c, const ShimmyCriterion& k) {
                     c.band_per_s, e);
       return buf;
     case CycleState::growing:
-      std::snprintf(buf, sizeof buf,
-                    "%s: +-%.3g rad at %.3g s, trend %+.3f 1/s (outside +-%.3f; eigenvalue "
-                    "%+.3f 1/s)%s",
-                    e > 0.0 ? "shimmy, still growing" : "still growing", c.amplitude_rad,
-                    c.run_end_s, c.trend_per_s, c.band_per_s, e,
-                    c.run_end_s >= kLongestRun ? "; not settled within the longest run" : "");
-      return buf;
-    case CycleState::decaying:
-      std::snprintf(buf, sizeof buf,
-                    "decaying: +-%.3g rad at %.3g s, trend %+.3f 1/s (outside +-%.3f; eigenvalue "
-                    "%+.3f 1/s)%s",
-                    c.amplitude_rad, c.run_end_s, c.trend_per_s, c.band_per_s, e,
-                    e > 0.0 ? ": unstable by eigenvalues, the landing's swing decays onto a cycle "
-                              "it has not reached yet"
-                            : "");
-      return buf;
+    case CycleState::decaying: {
+      const bool up = c.state == CycleState::growing;
+      const char* what = up ? (e > 0.0 ? "shimmy, still growing" : "still growing") : "decaying";
+      std::snprintf(buf, sizeof buf, "%s: +-%.3g rad at %.3g s, %s", what, c.amplitude_rad,
+                    c.run_end_s, trend_words(c).c_str());
+      std::string out = buf;
+      if (!up && e > 0.0)
+        out +=
+            ": unstable by eigenvalues, the landing's swing decays onto a cycle it has not "
+            "reached yet";
+      if (up && c.run_end_s >= kLongestRun) out += "; not settled within the longest run";
+      return out;
+    }
   }
   return "";
 }

@@ -119,9 +119,13 @@ nlohmann::json limit_cycle_json(const ModelAnalysis& a) {
           {"phase", a.limit_cycle_phase},
           {"amplitude_rad", c.amplitude_rad},
           {"earlier_amplitude_rad", c.earlier_amplitude_rad},
+          {"start_amplitude_rad", c.start_amplitude_rad},
           {"trend_per_s", c.trend_per_s},
           {"settling_band_per_s", c.band_per_s},
           {"trend_periods", kTrendPeriods},
+          {"midway_amplitude_rad", c.midway_amplitude_rad},
+          {"midway_s", c.midway_s},
+          {"drifting", c.drifting},
           {"run_end_s", c.run_end_s},
           {"eigenvalue_growth_rate_per_s", c.eigen_growth_per_s},
           {"torque_link_amplitude_nm", c.torque_link_nm},
@@ -412,9 +416,10 @@ void print_scenario_table(const nlohmann::json& scenarios) {
   }
   print_same_tire_note(scenarios);
   std::printf(
-      "\nat the end of each analysis window (the trend of the amplitude over its last %d periods; "
-      "a run that has not settled is run again up to %g s):\n",
-      kTrendPeriods, kLongestRun);
+      "\nat the end of each analysis window (settled: the trend of the amplitude over its last %d "
+      "periods within the band and the amplitude within %.0f %% of the window's middle; a run "
+      "that has not settled is run again, twice as long, up to %g s):\n",
+      kTrendPeriods, 100 * kSettledChange, kLongestRun);
   for (const NamedScenario& n : named_scenarios()) {
     if (!scenarios.contains(n.name)) continue;
     const nlohmann::json& models = scenarios[n.name]["summary"]["models"];

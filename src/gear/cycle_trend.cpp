@@ -44,6 +44,18 @@ double log_slope(const std::vector<double>& t, const std::vector<double>& a) {
   return n >= 3 && d > 0.0 ? (n * stl - st * sl) / d : 0.0;
 }
 
+// Half the swing of psi over the samples in [from, to].
+double half_swing(const std::vector<double>& t, const std::vector<double>& psi, double from,
+                  double to) {
+  double lo = std::numeric_limits<double>::infinity(), hi = -lo;
+  for (std::size_t i = 0; i < t.size(); ++i)
+    if (t[i] >= from && t[i] <= to) {
+      lo = std::min(lo, psi[i]);
+      hi = std::max(hi, psi[i]);
+    }
+  return lo <= hi ? 0.5 * (hi - lo) : 0.0;
+}
+
 }  // namespace
 
 CycleTrend cycle_trend(const std::vector<double>& t, const std::vector<double>& psi,
@@ -81,10 +93,19 @@ CycleTrend cycle_trend(const std::vector<double>& t, const std::vector<double>& 
   c.amplitude_rad = swing.back();
   c.torque_link_nm = mlo <= mhi ? 0.5 * (mhi - mlo) : 0.0;
   c.trend_per_s = log_slope(mid, swing);
-  if (std::abs(c.trend_per_s) <= c.band_per_s)
-    c.state = c.amplitude_rad > threshold_rad ? CycleState::limit_cycle : CycleState::settled_small;
-  else
+  // The window holds kTrendPeriods >= 2 periods, so the period ending at its middle lies in it.
+  c.start_amplitude_rad = half_swing(t, psi, w.start_s, w.start_s + P);
+  c.midway_s = 0.5 * (w.start_s + end);
+  c.midway_amplitude_rad = half_swing(t, psi, c.midway_s - P, c.midway_s);
+  const double change = c.amplitude_rad - c.midway_amplitude_rad;
+  const bool in_band = std::abs(c.trend_per_s) <= c.band_per_s;
+  c.drifting = in_band && std::abs(change) > kSettledChange * c.midway_amplitude_rad;
+  if (!in_band)
     c.state = c.trend_per_s > 0.0 ? CycleState::growing : CycleState::decaying;
+  else if (c.drifting)
+    c.state = change > 0.0 ? CycleState::growing : CycleState::decaying;
+  else
+    c.state = c.amplitude_rad > threshold_rad ? CycleState::limit_cycle : CycleState::settled_small;
   return c;
 }
 

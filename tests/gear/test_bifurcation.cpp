@@ -76,6 +76,27 @@ TEST(CycleTrend, RecoversTheGrowthOfASineAndClassifiesItAgainstTheBand) {
       CycleState::settled_small);
 }
 
+// Oracle: a drift too slow for the last kTrendPeriods periods to show (s = 0.02 1/s, inside the
+// band 0.041) moves the amplitude by e^{0.02 * 3.85} - 1 = 8 % between the window's middle and
+// its end: growing (or decaying), not settled; the same sine with s = 0 settles.
+TEST(CycleTrend, ASlowDriftOverTheWindowIsNotSettled) {
+  GearStructure g;
+  for (const double s : {0.02, -0.02, 0.0}) {
+    const Synthetic x = damped_sine(0.03, s, 32.0, 8.0);
+    const CycleTrend c = cycle_trend(x.t, x.psi, x.rate, g, {1.0 / 32.0, 0.3, 8.0}, 0.41, 1e-3);
+    ASSERT_TRUE(c.measured);
+    EXPECT_LE(std::abs(c.trend_per_s), c.band_per_s) << "s = " << s;
+    EXPECT_NEAR(c.midway_s, 4.15, 1e-12);
+    const double midway = 0.03 * std::exp(s * (4.15 - 0.5 / 32.0));
+    EXPECT_NEAR(c.midway_amplitude_rad, midway, 0.01 * midway) << "s = " << s;
+    EXPECT_EQ(c.drifting, s != 0.0) << "s = " << s;
+    const CycleState want = s > 0.0   ? CycleState::growing
+                            : s < 0.0 ? CycleState::decaying
+                                      : CycleState::limit_cycle;
+    EXPECT_EQ(c.state, want) << "s = " << s;
+  }
+}
+
 namespace {
 
 // The coupled braked slide at 60 m/s with the offset `l`, run to `end` s with the brake on to

@@ -14,13 +14,18 @@ namespace contensou {
 /// The number of periods, counted back from the window's end, that cycle_trend() measures.
 inline constexpr int kTrendPeriods = 8;
 
+/// The most a settled amplitude may change between the window's middle and its end (5 %): a trend
+/// within the band over the last kTrendPeriods periods is not enough where a slow drift, too slow
+/// for those periods to show, still moves the amplitude over the window.
+inline constexpr double kSettledChange = 0.05;
+
 /// How the oscillation ends its window.
 enum class CycleState {
   not_measured,   ///< fewer than kTrendPeriods periods in the window (or no period or samples)
   limit_cycle,    ///< settled above the amplitude threshold
   settled_small,  ///< settled at or below the threshold (e.g. inside a freeplay, or decayed away)
-  growing,        ///< trend above the band
-  decaying        ///< trend below the band
+  growing,        ///< trend above the band, or within it with the amplitude up > kSettledChange
+  decaying        ///< trend below the band, or within it with the amplitude down > kSettledChange
 };
 /// "not_measured", "limit_cycle", "settled_below_threshold", "still_growing" or "decaying".
 const char* to_string(CycleState s);
@@ -37,6 +42,14 @@ struct CycleTrend {
   double earlier_amplitude_rad = 0.0;  ///< the same over the first of the kTrendPeriods [rad]
   double trend_per_s = 0.0;  ///< d ln(half swing)/dt, least squares over the periods [1/s]
   double band_per_s = 0.0;   ///< settling_band(): settled when abs(trend) is within it [1/s]
+  /// Half the psi swing over the window's first period [rad].
+  double start_amplitude_rad = 0.0;
+  /// Half the psi swing over the period that ends at the window's middle [rad].
+  double midway_amplitude_rad = 0.0;
+  double midway_s = 0.0;  ///< the window's middle [s]
+  /// The trend is within the band but the amplitude moved more than kSettledChange since
+  /// midway_s: a slow drift, so growing or decaying rather than settled.
+  bool drifting = false;
   /// Half the swing of k_psi psi + c_psi psi' over the last period [N m].
   double torque_link_nm = 0.0;
 };
@@ -50,7 +63,9 @@ struct CycleWindow {
 
 /// From samples (t ascending [s], psi [rad], psi' [rad/s]) over the window; the torque-link load
 /// uses the structure's k_psi and c_psi, the band eigen_growth_per_s [1/s], and `threshold_rad`
-/// tells a limit cycle from a settled small motion.
+/// tells a limit cycle from a settled small motion. Settled (limit_cycle or settled_small) means
+/// both: the trend within the band and the last period's half swing within kSettledChange of the
+/// half swing over the period ending at the window's middle.
 CycleTrend cycle_trend(const std::vector<double>& t, const std::vector<double>& psi,
                        const std::vector<double>& psi_rate, const GearStructure& structure,
                        const CycleWindow& window, double eigen_growth_per_s, double threshold_rad);
