@@ -208,7 +208,8 @@ int run(const Options& o) {
     report_sensitivity(classical_sensitivity(config, t), summary);
   if (o.maps) run_maps(config, out, o.map_size, o.threads, t, summary);
   if (o.bifurcation)
-    report_sweeps(out, compute_sweeps(config, o.threads, t, progress_bar), summary);
+    report_sweeps(out, compute_sweeps(config, o.threads, t, progress_bar), sweep_options(config),
+                  summary);
   out.write("summary.json",
             summary.dump(2, ' ', false, nlohmann::json::error_handler_t::replace) + "\n");
   const int stale = folder.commit();  // an earlier run's files this one did not rewrite

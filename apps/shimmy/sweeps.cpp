@@ -25,18 +25,22 @@ void check_sweep_work(const ShimmyConfig& config) {
                               std::to_string(kMostSweepPoints) + " in one run");
 }
 
+SweepOptions sweep_options(const ShimmyConfig& config) {
+  SweepOptions o;
+  o.relative_tolerance = config.solver.relative_tolerance;
+  o.output_interval_s = config.solver.output_interval_s;
+  o.amplitude_threshold_rad = config.criterion.amplitude_threshold_rad;
+  return o;
+}
+
 std::vector<BifurcationSweep> compute_sweeps(const ShimmyConfig& config, unsigned threads,
                                              const TireInput* tire, const Progress& progress) {
   check_sweep_work(config);
   std::vector<GearModel> models;
   for (ContactModel cm : config.models) models.push_back(gear_model(config, cm, tire));
-  SweepOptions o;
-  o.relative_tolerance = config.solver.relative_tolerance;
-  o.output_interval_s = config.solver.output_interval_s;
-  o.amplitude_threshold_rad = config.criterion.amplitude_threshold_rad;
-  return bifurcation_sweeps(models, config.sweeps, o, threads, [&](int done, int total) {
-    progress("bifurcation sweeps (up and down)", done, total);
-  });
+  return bifurcation_sweeps(
+      models, config.sweeps, sweep_options(config), threads,
+      [&](int done, int total) { progress("bifurcation sweeps (up and down)", done, total); });
 }
 
 namespace {
@@ -45,24 +49,37 @@ double finite_or_nan(double v, bool ok) {
   return ok && std::isfinite(v) ? v : std::nan("");
 }
 
+// Whether a point's amplitude is an end state: a settled cycle or motion, or a decay already
+// below the threshold (the diagram's rest branch); the others ran out of time still moving.
+bool settled_point(const SweepPoint& p, double threshold_rad) {
+  return p.valid && (p.state == CycleState::limit_cycle || p.state == CycleState::settled_small ||
+                     (p.state == CycleState::decaying && p.amplitude_rad < threshold_rad));
+}
+
 // One direction of a sweep as CSV: the parameter's column, then the point's numbers (NaN where
-// the point failed: gnuplot leaves a gap).
-std::string sweep_csv(const BifurcationSweep& s, const std::vector<SweepPoint>& points) {
+// the point failed: gnuplot leaves a gap); the amplitudes again split into settled (the
+// diagram's branches) and unsettled (still growing or decaying when the run ended).
+std::string sweep_csv(const BifurcationSweep& s, const std::vector<SweepPoint>& points,
+                      double threshold_rad) {
   std::ostringstream o;
   o.precision(9);
   o << s.axis.parameter
     << ",state,amplitude_rad,torque_link_nm,trend_per_s,frequency_hz,eigen_growth_rate_per_s,"
-       "eigen_frequency_hz,onset_s,run_s,valid,error\n";
+       "eigen_frequency_hz,onset_s,run_s,valid,settled_amplitude_rad,settled_torque_link_nm,"
+       "unsettled_amplitude_rad,unsettled_torque_link_nm,error\n";
   for (const SweepPoint& p : points) {
     const bool cycle = p.valid && p.state == CycleState::limit_cycle;
+    const bool settled = settled_point(p, threshold_rad);
     o << p.value << ',' << to_string(p.state) << ',' << finite_or_nan(p.amplitude_rad, p.valid)
       << ',' << finite_or_nan(p.torque_link_nm, p.valid) << ','
       << finite_or_nan(p.trend_per_s, p.valid) << ','
       << finite_or_nan(p.frequency_hz, cycle && p.frequency_hz > 0) << ','
       << finite_or_nan(p.eigen_growth_per_s, p.error.empty()) << ','
       << finite_or_nan(p.eigen_frequency_hz, p.error.empty()) << ','
-      << finite_or_nan(p.onset_s, cycle) << ',' << p.run_s << ',' << p.valid << ",\"" << p.error
-      << "\"\n";
+      << finite_or_nan(p.onset_s, p.valid) << ',' << p.run_s << ',' << p.valid << ','
+      << finite_or_nan(p.amplitude_rad, settled) << ',' << finite_or_nan(p.torque_link_nm, settled)
+      << ',' << finite_or_nan(p.amplitude_rad, p.valid && !settled) << ','
+      << finite_or_nan(p.torque_link_nm, p.valid && !settled) << ",\"" << p.error << "\"\n";
   }
   return o.str();
 }
@@ -99,17 +116,26 @@ std::string boundary_words(const std::vector<const BifurcationSweep*>& group) {
   return out;
 }
 
-// One panel: `column` of every model, up (solid, filled) and down (dashed, open).
-std::string panel(const std::vector<const BifurcationSweep*>& group, const std::string& column) {
+// One panel: the settled `what` of every model, up (solid, filled) and down (dashed, open), and
+// the points that were still moving when their run ended as crosses (one key entry for all).
+std::string panel(const std::vector<const BifurcationSweep*>& group, const std::string& what,
+                  double longest_s) {
   std::ostringstream gp;
   gp << "plot ";
   bool first = true;
   for (const BifurcationSweep* s : group)
     for (const bool up : {true, false}) {
-      gp << (first ? "" : ", ") << "'" << base_name(*s, up) << ".csv' using \"" << s->axis.parameter
-         << "\":\"" << column << "\" with linespoints lw 1.5 " << (up ? "dt 1 pt 7" : "dt 2 pt 6")
-         << " ps 0.7 lc rgb '" << model_colour(s->contact) << "' title '" << to_string(s->contact)
-         << (up ? ", swept up" : ", swept down") << "'";
+      const std::string file = "'" + base_name(*s, up) + ".csv' using \"" + s->axis.parameter +
+                               "\":\"",
+                        colour = model_colour(s->contact);
+      gp << (first ? "" : ", ") << file << "settled_" << what << "\" with linespoints lw 1.5 "
+         << (up ? "dt 1 pt 7" : "dt 2 pt 6") << " ps 0.7 lc rgb '" << colour << "' title '"
+         << to_string(s->contact) << (up ? ", swept up" : ", swept down") << "', " << file
+         << "unsettled_" << what << "\" with points pt 2 ps 1.2 lc rgb '" << colour << "' ";
+      if (first)
+        gp << "title 'x: not settled in " << longest_s << " s'";
+      else
+        gp << "notitle";
       first = false;
     }
   return gp.str() + "\n";
@@ -121,38 +147,67 @@ std::string header(const std::string& name, const MapAxis& axis, int rows,
   std::ostringstream gp;
   gp << "set terminal pngcairo noenhanced size 960," << 60 + 320 * rows << " font ',10'\n"
      << "set output '" << name << ".png'\nset datafile separator ','\n"
-     << "set datafile columnheaders\nset datafile missing 'nan'\n"
+     << "set datafile columnheaders\n"
      << "set multiplot layout " << rows << ",1 title \"" << title << "\"\n"
      << "set xlabel '" << parameter_axis_label(parameter) << "'\nset xrange [" << axis.from << ":"
      << axis.to << "]\nset grid\n"
-     << "set key outside right top vertical\nset lmargin 12\n";
+     << "set key outside right top vertical\n"
+     // The same plot width in every panel, whatever its key: the key in the right quarter.
+     << "set lmargin at screen 0.09\nset rmargin at screen 0.74\n";
   return gp.str();
 }
 
+// Whether any point of the group has a finite `get` (gnuplot refuses a plot with none).
+template <class Get>
+bool any_finite(const std::vector<const BifurcationSweep*>& group, bool up_only, Get get) {
+  for (const BifurcationSweep* s : group)
+    for (const bool up : {true, false})
+      if (up || !up_only)
+        for (const SweepPoint& p : up ? s->up : s->down)
+          if (p.valid && std::isfinite(get(p))) return true;
+  return false;
+}
+
+// A panel with nothing to draw, saying why.
+std::string empty_panel(const std::string& why) {
+  return "set yrange [0:1]\nset label 1 '" + why +
+         "' at graph 0.5, 0.5 center\nplot NaN notitle\nunset label 1\nset autoscale y\n";
+}
+
 // Amplitude and torque-link load against the parameter, every model, both directions.
-void draw_amplitudes(const OutputDir& out, const std::vector<const BifurcationSweep*>& group) {
+void draw_amplitudes(const OutputDir& out, const std::vector<const BifurcationSweep*>& group,
+                     double longest_s) {
   const std::string& parameter = group.front()->axis.parameter;
   const std::string name = "bifurcation_" + short_name(parameter);
   std::ostringstream gp;
   gp << header(name, group.front()->axis, 2,
                "braked slide: limit cycle against " + parameter_axis_label(parameter) +
                    "\\ndotted: linear boundaries (" + boundary_words(group) +
-                   ")\\nwhere both directions settle apart: hysteresis (a subcritical branch)")
-     << boundary_arrows(group) << "set ylabel 'limit-cycle amplitude of psi [rad]'\n"
-     << panel(group, "amplitude_rad") << "set ylabel 'torque-link load amplitude [N m]'\n"
-     << panel(group, "torque_link_nm") << "unset multiplot\n";
+                   ")\\nx: still growing or decaying when its run ended (its last swing); where "
+                   "both directions settle apart: hysteresis (a subcritical branch)")
+     << boundary_arrows(group);
+  const bool any = any_finite(group, false, [](const SweepPoint& p) { return p.amplitude_rad; });
+  const std::string none = empty_panel("no point of any sweep finished its run");
+  gp << "set ylabel 'limit-cycle amplitude of psi [rad]'\n"
+     << (any ? panel(group, "amplitude_rad", longest_s) : none)
+     << "set ylabel 'torque-link load amplitude [N m]'\n"
+     << (any ? panel(group, "torque_link_nm", longest_s) : none) << "unset multiplot\n";
   run_gnuplot(out, name, gp.str());
 }
 
 // Growth rate, frequencies and time to onset against the parameter (the up sweeps).
-void draw_linear(const OutputDir& out, const std::vector<const BifurcationSweep*>& group) {
+void draw_linear(const OutputDir& out, const std::vector<const BifurcationSweep*>& group,
+                 const SweepOptions& o) {
   const std::string& parameter = group.front()->axis.parameter;
   const std::string name = "bifurcation_" + short_name(parameter) + "_growth";
   std::ostringstream gp, freq, growth, onset;
   gp << header(name, group.front()->axis, 3,
                "braked slide against " + parameter_axis_label(parameter) +
                    ": linear growth rate, shimmy frequency, time to onset\\n(onset: from a "
-                   "kick of psi' = 0.01 rad/s to half the settled amplitude)")
+                   "kick of psi' = " +
+                   format_value(o.seed_rate_radps) + " rad/s until a swing first reaches " +
+                   format_value(o.amplitude_threshold_rad) +
+                   " rad; none where it decays or settles below)")
      << boundary_arrows(group);
   growth << "plot ";
   freq << "plot ";
@@ -174,8 +229,13 @@ void draw_linear(const OutputDir& out, const std::vector<const BifurcationSweep*
   }
   gp << "set ylabel 'growth rate of the linearisation [1/s]'\nset xzeroaxis lt -1\n"
      << growth.str() << "\nset ylabel 'shimmy frequency [Hz]'\n"
-     << freq.str() << "\nset ylabel 'time to onset [s]'\n"
-     << onset.str() << "\nunset multiplot\n";
+     << freq.str() << "\nset ylabel 'time to onset [s]'\n";
+  if (any_finite(group, true, [](const SweepPoint& p) { return p.onset_s; }))
+    gp << onset.str() << "\n";
+  else
+    gp << empty_panel("no onset: no up-sweep point reaches " +
+                      format_value(o.amplitude_threshold_rad) + " rad from the kick");
+  gp << "unset multiplot\n";
   run_gnuplot(out, name, gp.str());
 }
 
@@ -224,7 +284,7 @@ nlohmann::json sweep_json(const BifurcationSweep& s) {
 }  // namespace
 
 void report_sweeps(const OutputDir& out, const std::vector<BifurcationSweep>& sweeps,
-                   nlohmann::json& summary) {
+                   const SweepOptions& options, nlohmann::json& summary) {
   std::map<std::string, std::vector<const BifurcationSweep*>> by_parameter;
   std::vector<std::string> order;
   std::printf(
@@ -234,7 +294,8 @@ void report_sweeps(const OutputDir& out, const std::vector<BifurcationSweep>& sw
       "model", "parameter", "linear bound.", "cycle (up)", "cycle (down)");
   for (const BifurcationSweep& s : sweeps) {
     for (const bool up : {true, false})
-      out.write(base_name(s, up) + ".csv", sweep_csv(s, up ? s.up : s.down));
+      out.write(base_name(s, up) + ".csv",
+                sweep_csv(s, up ? s.up : s.down, options.amplitude_threshold_rad));
     if (!by_parameter.count(s.axis.parameter)) order.push_back(s.axis.parameter);
     by_parameter[s.axis.parameter].push_back(&s);
     nlohmann::json j = sweep_json(s);
@@ -262,8 +323,8 @@ void report_sweeps(const OutputDir& out, const std::vector<BifurcationSweep>& sw
     summary["bifurcation"].push_back(std::move(j));
   }
   for (const std::string& p : order) {
-    draw_amplitudes(out, by_parameter[p]);
-    draw_linear(out, by_parameter[p]);
+    draw_amplitudes(out, by_parameter[p], options.longest_s);
+    draw_linear(out, by_parameter[p], options);
   }
 }
 

@@ -18,11 +18,15 @@ namespace contensou::app {
 inline constexpr long kMostSweepPoints = 4000;
 void check_sweep_work(const ShimmyConfig& config);
 
+// The sweeps' options: the solver's tolerance and output interval, the criterion's threshold.
+SweepOptions sweep_options(const ShimmyConfig& config);
+
 std::vector<BifurcationSweep> compute_sweeps(const ShimmyConfig& config, unsigned threads,
                                              const TireInput* tire, const Progress& progress);
 
 // Writes the sweeps' CSVs and PNGs into `out`; their summaries into summary["bifurcation"].
+// `options` are those the sweeps ran with (sweep_options(config)).
 void report_sweeps(const OutputDir& out, const std::vector<BifurcationSweep>& sweeps,
-                   nlohmann::json& summary);
+                   const SweepOptions& options, nlohmann::json& summary);
 
 }  // namespace contensou::app

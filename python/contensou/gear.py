@@ -494,7 +494,8 @@ def bifurcation_sweep(
     --bifurcation computes it: the torsional limit cycle by continuation, swept up from a small
     kick and down from a large swing (``direction`` "up" or "down"), each point with its settled
     amplitude, torque-link load, amplitude trend, simulated frequency, the linearisation's growth
-    rate and frequency, and the time to onset (up sweep, from a motion below the threshold).
+    rate and frequency, and the time to onset (up sweep, where it settles on a cycle or still
+    grows: from a kick at the quasi-steady state until a swing first reaches the threshold).
     Returns a pandas DataFrame; ``df.attrs["linear_boundary"]`` is the parameter where the
     eigenvalue growth first changes sign (NaN if it does not). Both directions run on threads
     (0: one per core)."""

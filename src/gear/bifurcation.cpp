@@ -150,9 +150,14 @@ struct Carry {
   bool any = false;
 };
 
+// Whether a run from a small kick can have a time to onset: it settled on a cycle or still grows.
+bool reaches_shimmy(CycleState s) {
+  return s == CycleState::limit_cycle || s == CycleState::growing;
+}
+
 // Runs the fixed mode from x0 until settled (or longest_s); fills the point's cycle numbers.
 void run_to_settled(const GearModel& model, const StabilityReport& rep, const GearState& x0,
-                    bool from_small, const SweepOptions& o, SweepPoint& p, Carry& carry) {
+                    const SweepOptions& o, SweepPoint& p, Carry& carry) {
   FixedModeRun run(model, rep.state, x0, o);
   Samples all;
   double segment = o.settle_s, total = 0.0;
@@ -184,13 +189,29 @@ void run_to_settled(const GearModel& model, const StabilityReport& rep, const Ge
   p.torque_link_nm = trend.torque_link_nm;
   p.trend_per_s = trend.trend_per_s;
   p.run_s = total;
-  p.onset_s = from_small && trend.state == CycleState::limit_cycle
-                  ? first_reaching(all, period, 0.5 * trend.amplitude_rad, rep.state.t)
-                  : kNaN;
   p.valid = true;
   carry.deviation = run.state() - rep.state.x;
   carry.amplitude_rad = trend.amplitude_rad;
   carry.any = true;
+}
+
+// The time to onset: from a kick of seed_rate_radps at the quasi-steady state until a period's
+// half swing first reaches the threshold, run in steps of settle_s / 2 up to longest_s (NaN if
+// it does not).
+double onset_from_kick(const GearModel& model, const StabilityReport& rep, const SweepOptions& o) {
+  GearState kicked = rep.state.x;
+  kicked[kPsiDot] += o.seed_rate_radps;
+  FixedModeRun run(model, rep.state, kicked, o);
+  const double period = rep.frequency_hz > 0.0 ? 1.0 / rep.frequency_hz : 0.0;
+  Samples all;
+  for (double total = 0.0; total < o.longest_s - 1e-9;) {
+    const double step = std::min(0.5 * o.settle_s, o.longest_s - total);
+    run.advance(step, all);
+    total += step;
+    const double t = first_reaching(all, period, o.amplitude_threshold_rad, rep.state.t);
+    if (std::isfinite(t)) return t;
+  }
+  return kNaN;
 }
 
 // One point of a direction: the parameter set, the linearisation, the run from the carried
@@ -217,22 +238,13 @@ SweepPoint sweep_point(const GearModel& base, const MapAxis& axis, int i, bool u
     GearState x0 = rep.state.x;
     if (carry.any)
       for (int s : rep.state.states) x0[s] += carry.deviation[s];
-    // Up: a kick where the motion has all but died out; the time to onset where it starts
-    // below the threshold.
+    // Up: a kick where the motion has all but died out; the time to onset, where the point
+    // settles on a cycle or still grows, by a run of its own from the kick.
     const double before = carry.any ? carry.amplitude_rad : 0.0;
     if (up && before < 0.1 * o.amplitude_threshold_rad) x0[kPsiDot] += o.seed_rate_radps;
     if (!up && !carry.any) x0[kPsi] += o.start_amplitude_rad;
-    const bool from_small = up && before < o.amplitude_threshold_rad;
-    run_to_settled(model, rep, x0, from_small, o, p, carry);
-    // The time to onset where the up sweep carried a cycle in: a run of its own from the kick.
-    if (up && !from_small && p.state == CycleState::limit_cycle) {
-      GearState kicked = rep.state.x;
-      kicked[kPsiDot] += o.seed_rate_radps;
-      SweepPoint fresh = p;
-      Carry unused;
-      run_to_settled(model, rep, kicked, true, o, fresh, unused);
-      p.onset_s = fresh.onset_s;
-    }
+    run_to_settled(model, rep, x0, o, p, carry);
+    if (up && reaches_shimmy(p.state)) p.onset_s = onset_from_kick(model, rep, o);
   } catch (const Interrupted&) {
     throw;
   } catch (const std::exception& e) {

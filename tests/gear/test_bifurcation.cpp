@@ -193,6 +193,23 @@ TEST(Bifurcation, SweepAgreesWithItsEigenvaluesAndTheTorqueLinkSpring) {
   EXPECT_GT(first->value, s.linear_boundary);
   EXPECT_GT(first->onset_s, 0.0);
   EXPECT_LT(first->onset_s, o.longest_s);
+  // Oracle for the time to onset: linear growth from the kick's swing psi' / (2 pi f) to the
+  // threshold, ln(threshold 2 pi f / kick) / growth, to 20 % and a period (the last period's
+  // swing is read at its end); none where the up sweep decays.
+  int timed = 0;
+  for (const SweepPoint& p : s.up) {
+    if (p.eigen_growth_per_s <= 0.0) {
+      EXPECT_TRUE(std::isnan(p.onset_s)) << p.value;
+      continue;
+    }
+    if (!std::isfinite(p.onset_s)) continue;
+    const double w = 2 * kPi * p.eigen_frequency_hz;
+    const double linear =
+        std::log(o.amplitude_threshold_rad * w / o.seed_rate_radps) / p.eigen_growth_per_s;
+    EXPECT_NEAR(p.onset_s, linear, 0.2 * linear + 1.0 / p.eigen_frequency_hz) << p.value;
+    ++timed;
+  }
+  EXPECT_GE(timed, 2);
   // A bad axis is refused by name.
   EXPECT_THROW(bifurcation_sweep(model, MapAxis{"structure.offset_m", -1e308, 1e308, 3}, o),
                InvalidArgument);

@@ -48,9 +48,10 @@ struct SweepPoint {
   double trend_per_s = 0.0;   ///< of ln(amplitude) over the last kTrendPeriods periods [1/s]
   double frequency_hz = 0.0;  ///< of the simulated oscillation (zero crossings) [Hz]; 0 if none
   double run_s = 0.0;         ///< how long this point ran [s]
-  /// Up sweep, where it settles on a cycle: the time [s] from a kick of seed_rate_radps at the
-  /// quasi-steady state until the half swing first reaches half the settled amplitude (the time
-  /// to onset; its own run where the sweep carried the cycle in); NaN otherwise.
+  /// Up sweep, where the motion settles on a cycle or still grows: the time [s] from a kick of
+  /// seed_rate_radps at the quasi-steady state until a period's half swing first reaches
+  /// amplitude_threshold_rad (the time to onset; its own run where the sweep carried the motion
+  /// in); NaN where it does not within the run, and on decaying or settled-small points.
   double onset_s = 0.0;
   double eigen_growth_per_s = 0.0;  ///< the linearisation's dominant oscillatory mode [1/s]
   double eigen_frequency_hz = 0.0;  ///< its frequency [Hz]
