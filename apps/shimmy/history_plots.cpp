@@ -84,6 +84,23 @@ std::string event_marks(const std::vector<LandingRun>& runs, bool labels) {
   return gp.str();
 }
 
+// Ranges for a panel with the decoupled model on the right axis: both symmetric about zero, so
+// that the two axes share their zero, each 5 % beyond its largest |value| (gnuplot's stats over
+// the CSVs the panel plots).
+std::string same_zero_ranges(const std::string& column, const std::vector<LandingRun>& runs) {
+  std::ostringstream gp;
+  gp << "max(a, b) = a > b ? a : b\nleft = 0\nright = 0\n";
+  for (std::size_t k = 0; k < runs.size(); ++k) {
+    const std::string side = runs[k].contact == ContactModel::decoupled ? "right" : "left";
+    gp << "stats '" << to_string(runs[k].contact) << ".csv' using (column(\"" << column
+       << "\")) name 'S" << k << "' nooutput\n"
+       << side << " = max(" << side << ", max(abs(S" << k << "_min), abs(S" << k << "_max)))\n";
+  }
+  gp << "if (left == 0) left = 1\nif (right == 0) right = 1\n"
+     << "set yrange [-1.05 * left:1.05 * left]\nset y2range [-1.05 * right:1.05 * right]\n";
+  return gp.str();
+}
+
 std::string panel_plot(const HistoryPanel& p, const std::vector<LandingRun>& runs) {
   std::ostringstream gp;
   const bool right =
@@ -94,9 +111,10 @@ std::string panel_plot(const HistoryPanel& p, const std::vector<LandingRun>& run
   gp << "set ylabel '" << panel_axis_label(p) << "'\n";
   if (right)
     gp << "set y2label 'decoupled (right axis) [N m]' tc rgb '"
-       << model_colour(ContactModel::decoupled) << "'\nset y2tics\nset ytics nomirror\n";
+       << model_colour(ContactModel::decoupled) << "'\nset y2tics\nset ytics nomirror\n"
+       << same_zero_ranges(p.column, runs);
   else
-    gp << "unset y2label\nunset y2tics\nset ytics mirror\n";
+    gp << "unset y2label\nunset y2tics\nset ytics mirror\nset autoscale y\n";
   gp << "plot ";
   for (std::size_t k = 0; k < runs.size(); ++k) {
     const std::string model = to_string(runs[k].contact);

@@ -324,16 +324,25 @@ void draw_energy(const OutputDir& out, const Landings& landings, const LandingAn
       {"carcass lever", &EnergyPerCycle::carcass_lever},
       {"torsional damping", &EnergyPerCycle::torsional_damping},
       {"lateral damping", &EnergyPerCycle::lateral_damping}};
+  const auto energy = [&](std::size_t k) -> const EnergyPerCycle& {
+    const ModelAnalysis& a = analysis.models[k];
+    return (braking ? a.braked_slide : a.touchdown).report.energy;
+  };
+  // A source that is zero in every model is switched off (the carcass lever without a carcass):
+  // left out of the table and the chart, and said so.
   std::ostringstream csv;
   csv.precision(6);
   csv << "source";
   for (const LandingRun& r : landings.runs) csv << ',' << to_string(r.contact) << "_mJ";
   csv << '\n';
-  const auto energy = [&](std::size_t k) -> const EnergyPerCycle& {
-    const ModelAnalysis& a = analysis.models[k];
-    return (braking ? a.braked_slide : a.touchdown).report.energy;
-  };
+  std::string omitted;
   for (const auto& [name, member] : sources) {
+    bool any = false;
+    for (std::size_t k = 0; k < landings.runs.size(); ++k) any |= energy(k).*member != 0.0;
+    if (!any) {
+      omitted += (omitted.empty() ? "" : ", ") + std::string(name);
+      continue;
+    }
     csv << '"' << name << '"';
     for (std::size_t k = 0; k < landings.runs.size(); ++k) csv << ',' << 1e3 * energy(k).*member;
     csv << '\n';
@@ -342,24 +351,29 @@ void draw_energy(const OutputDir& out, const Landings& landings, const LandingAn
   for (std::size_t k = 0; k < landings.runs.size(); ++k) csv << ',' << 1e3 * energy(k).total();
   csv << '\n';
   out.write("energy.csv", csv.str());
+  // One panel a model, each on its own scale: one model's large drain does not flatten the others.
+  const std::size_t n = landings.runs.size();
   std::ostringstream gp;
-  gp << "set terminal pngcairo noenhanced size 1000,520 font ',10'\nset output 'energy.png'\n"
+  gp << "set terminal pngcairo noenhanced size 1000," << 90 + 250 * n
+     << " font ',10'\nset output 'energy.png'\n"
      << "set datafile separator ','\nset datafile columnheaders\n"
-     << "set title \"energy per cycle of each model's dominant mode, by source ("
-     << (braking ? "braked slide" : "touchdown")
+     << "set multiplot layout " << n << ",1 title \"energy per cycle of each model's dominant "
+     << "mode, by source (" << (braking ? "braked slide" : "touchdown")
      << " linearisation; 1 mrad of torsion or 1 mm of deflection)\\n> 0 feeds the mode, < 0 "
-        "drains it\"\n"
+        "drains it; each model on its own scale"
+     << (omitted.empty() ? "" : "; zero in every model (switched off), not shown: " + omitted)
+     << "\"\n"
      << "set style data histograms\nset style histogram clustered gap 1\n"
-     << "set style fill solid 0.85 border -1\nset boxwidth 0.9\nset grid ytics\n"
-     << "set xzeroaxis lt -1\nset xtics rotate by -20 left\nset key outside right top vertical\n"
-     << "set ylabel 'work per cycle [mJ]'\nplot ";
-  for (std::size_t k = 0; k < landings.runs.size(); ++k) {
+     << "set style fill solid 0.85 border -1\nset boxwidth 0.6\nset grid ytics\n"
+     << "set xzeroaxis lt -1\nset xtics rotate by -15 left\nset key inside right top\n"
+     << "set lmargin 12\nset rmargin 6\n"
+     << "set ylabel 'work per cycle [mJ]'\n";
+  for (std::size_t k = 0; k < n; ++k) {
     const ContactModel m = landings.runs[k].contact;
-    gp << (k ? ", ''" : "'energy.csv'") << " using \"" << to_string(m) << "_mJ\""
-       << (k ? "" : ":xtic(1)") << " lc rgb '" << model_colour(m) << "' title '" << to_string(m)
-       << "'";
+    gp << "plot 'energy.csv' using \"" << to_string(m) << "_mJ\":xtic(1) lc rgb '"
+       << model_colour(m) << "' title '" << to_string(m) << "'\n";
   }
-  gp << "\n";
+  gp << "unset multiplot\n";
   run_gnuplot(out, "energy", gp.str());
 }
 
