@@ -85,23 +85,30 @@ std::string event_marks(const std::vector<LandingRun>& runs, bool labels) {
 }
 
 // Ranges for a panel with the decoupled model on the right axis: both symmetric about zero, so
-// that the two axes share their zero, each 5 % beyond its largest |value| (gnuplot's stats over
-// the CSVs the panel plots).
-std::string same_zero_ranges(const std::string& column, const std::vector<LandingRun>& runs) {
-  std::ostringstream gp;
-  gp << "max(a, b) = a > b ? a : b\nleft = 0\nright = 0\n";
-  for (std::size_t k = 0; k < runs.size(); ++k) {
-    const std::string side = runs[k].contact == ContactModel::decoupled ? "right" : "left";
-    gp << "stats '" << to_string(runs[k].contact) << ".csv' using (column(\"" << column
-       << "\")) name 'S" << k << "' nooutput\n"
-       << side << " = max(" << side << ", max(abs(S" << k << "_min), abs(S" << k << "_max)))\n";
+// that the two axes share their zero, each 5 % beyond its largest |value| in the runs' samples.
+std::string same_zero_ranges(const std::string& column, const std::vector<LandingRun>& runs,
+                             const GearStructure& structure) {
+  const std::vector<std::string>& names = history_columns();
+  const auto at =
+      static_cast<std::size_t>(std::find(names.begin(), names.end(), column) - names.begin());
+  double left = 0.0, right = 0.0;
+  for (const LandingRun& r : runs) {
+    double& side = r.contact == ContactModel::decoupled ? right : left;
+    for (const LandingSample& s : r.samples) {
+      const std::vector<double> row = history_row(s, structure);
+      if (at < row.size() && std::isfinite(row[at])) side = std::max(side, std::abs(row[at]));
+    }
   }
-  gp << "if (left == 0) left = 1\nif (right == 0) right = 1\n"
-     << "set yrange [-1.05 * left:1.05 * left]\nset y2range [-1.05 * right:1.05 * right]\n";
+  const auto range = [](double v) { return 1.05 * (v > 0.0 ? v : 1.0); };
+  std::ostringstream gp;
+  gp.precision(10);
+  gp << "set yrange [" << -range(left) << ":" << range(left) << "]\nset y2range [" << -range(right)
+     << ":" << range(right) << "]\n";
   return gp.str();
 }
 
-std::string panel_plot(const HistoryPanel& p, const std::vector<LandingRun>& runs) {
+std::string panel_plot(const HistoryPanel& p, const std::vector<LandingRun>& runs,
+                       const GearStructure& structure) {
   std::ostringstream gp;
   const bool right =
       p.decoupled_right &&
@@ -112,7 +119,7 @@ std::string panel_plot(const HistoryPanel& p, const std::vector<LandingRun>& run
   if (right)
     gp << "set y2label 'decoupled (right axis) [N m]' tc rgb '"
        << model_colour(ContactModel::decoupled) << "'\nset y2tics\nset ytics nomirror\n"
-       << same_zero_ranges(p.column, runs);
+       << same_zero_ranges(p.column, runs, structure);
   else
     gp << "unset y2label\nunset y2tics\nset ytics mirror\nset autoscale y\n";
   gp << "plot ";
@@ -129,7 +136,8 @@ std::string panel_plot(const HistoryPanel& p, const std::vector<LandingRun>& run
 
 }  // namespace
 
-std::string history_plot_script(const HistoryFigure& figure, const std::vector<LandingRun>& runs) {
+std::string history_plot_script(const HistoryFigure& figure, const std::vector<LandingRun>& runs,
+                                const GearStructure& structure) {
   std::ostringstream gp;
   gp.precision(10);
   const std::size_t n = figure.panels.size();
@@ -145,7 +153,7 @@ std::string history_plot_script(const HistoryFigure& figure, const std::vector<L
      << ", graph 1 behind fillcolor rgb '#ececec' fillstyle solid noborder\n";
   for (std::size_t k = 0; k < n; ++k) {
     gp << "unset arrow\nunset label\n" << event_marks(runs, k == 0);
-    gp << panel_plot(figure.panels[k], runs);
+    gp << panel_plot(figure.panels[k], runs, structure);
   }
   gp << "unset multiplot\n";
   return gp.str();
@@ -155,7 +163,7 @@ void draw_histories(const OutputDir& dir, const std::vector<LandingRun>& runs,
                     const GearStructure& structure) {
   if (runs.empty()) return;
   for (const HistoryFigure& f : history_figures(structure))
-    run_gnuplot(dir, f.name, history_plot_script(f, runs));
+    run_gnuplot(dir, f.name, history_plot_script(f, runs, structure));
 }
 
 }  // namespace contensou::app

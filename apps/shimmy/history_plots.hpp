@@ -33,8 +33,10 @@ std::vector<HistoryFigure> history_figures(const GearStructure& structure);
 // number).
 std::string panel_axis_label(const HistoryPanel& panel);
 
-// The gnuplot script of one figure over the runs, which read <model>.csv in the same folder.
-std::string history_plot_script(const HistoryFigure& figure, const std::vector<LandingRun>& runs);
+// The gnuplot script of one figure over the runs, which read <model>.csv in the same folder
+// (written with `structure`, history_row()).
+std::string history_plot_script(const HistoryFigure& figure, const std::vector<LandingRun>& runs,
+                                const GearStructure& structure);
 
 // Writes and runs every figure's script in `dir`.
 void draw_histories(const OutputDir& dir, const std::vector<LandingRun>& runs,

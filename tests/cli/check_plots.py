@@ -7,7 +7,8 @@ For every DIR/*.gp: each column a plot names ("name" or column("name")) is in th
 CSV it reads; the axis labels carry the unit that the plotted columns' names end in (t_s -> [s],
 Mz_nm -> [N m], ...; a pure number -> [-]), and a label that names a force or moment channel
 (Fx, Fy, Mz, ...) names the one its column holds; where the script fixes a y range, every finite value
-of the plotted columns lies inside it. Columns chosen by number (using 1:3) are refused: they
+of the plotted columns lies inside it (the range in force at that plot: the last `set yrange`, or
+`set y2range` for a clause on axes x1y2, since the last `set autoscale` of that axis). Columns chosen by number (using 1:3) are refused: they
 silently pick another quantity when a column is added. Exit status 1 with one line per problem.
 """
 import csv
@@ -59,11 +60,20 @@ def label(script, axis):
     return m[-1] if m else None
 
 
+def range_in_force(before, axis):
+    """(lo, hi) of the last numeric `set <axis>range [lo:hi]` in `before` that no later
+    `set autoscale <axis>` undid; None where the axis autoscales."""
+    last = None
+    for m in re.finditer(r"set (%s)range \[([^:\]]+):([^\]]+)\]|set autoscale (%s)\b" % (axis, axis),
+                         before):
+        last = (float(m.group(2)), float(m.group(3))) if m.group(1) else None
+    return last
+
+
 def check_script(gp):
     problems = []
     folder = os.path.dirname(gp)
     script = open(gp).read()
-    yrange = re.findall(r"set yrange \[([^:\]]+):([^\]]+)\]", script)
     lines = script.splitlines()
     for number, line in enumerate(lines):
         if not line.startswith("plot "):
@@ -110,8 +120,9 @@ def check_script(gp):
                     if named and channel not in named:
                         problems.append(f"{gp}: {axis} label '{text}' does not name {channel} "
                                         f"({col})")
-            if yrange and y in have:
-                lo, hi = (float(v) for v in yrange[-1])
+            fixed = range_in_force(before, "y2" if "axes x1y2" in clause else "y")
+            if fixed and y in have:
+                lo, hi = fixed
                 vals = column_values(csv_path, y)
                 if vals and (min(vals) < lo or max(vals) > hi):
                     problems.append(f"{gp}: {y} of {current} spans [{min(vals)}, {max(vals)}] "
