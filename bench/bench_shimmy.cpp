@@ -4,10 +4,13 @@
 // integrator before), and a 50 x 50 stability map on 2 threads against the same map on 1 thread
 // as the in-process baseline (the ratio is the speed-up). Each landing's counters say where its
 // time goes: steps, right-hand sides, Jacobians, LU factorisations, and the time its right-hand
-// sides and Jacobians take by themselves (rhs_ms, jac_ms; the rest is CVODE's).
+// sides and Jacobians take by themselves (rhs_ms, jac_ms; the rest is CVODE's). The coupled
+// landing at relative tolerances 1e-5 to 1e-9 says what a looser tolerance buys and costs in
+// accuracy (its growth and frequency against the landing at 1e-10).
 #include <benchmark/benchmark.h>
 
 #include <chrono>
+#include <cmath>
 
 #include "contensou/gear/landing_simulation.hpp"
 #include "contensou/gear/linear_stability.hpp"
@@ -49,6 +52,24 @@ void BM_Landing(benchmark::State& state, ContactModel contact, bool exact, bool 
   const auto end = std::chrono::steady_clock::now();
   state.counters["rhs_ms"] = std::chrono::duration<double, std::milli>(middle - start).count();
   state.counters["jac_ms"] = std::chrono::duration<double, std::milli>(end - middle).count();
+}
+
+// The default coupled landing at relative tolerance 10^-range(0): its time, steps, and how far
+// its window's fitted growth rate and frequency lie from the same landing at 1e-10 (the
+// accuracy the time buys; a looser tolerance is faster only at the accuracy it reports).
+void BM_LandingTolerance(benchmark::State& state) {
+  const GearModel m = make_gear_model(GearConfig{}, ContactModel::coupled);
+  SolverOptions o;
+  o.record = false;
+  o.relative_tolerance = 1e-10;
+  const OscillationEstimate reference = simulate_landing(m, o).metrics.torsion;
+  o.relative_tolerance = std::pow(10.0, -static_cast<double>(state.range(0)));
+  LandingRun run;
+  for (auto _ : state) run = simulate_landing(m, o);
+  const OscillationEstimate& e = run.metrics.torsion;
+  state.counters["steps"] = static_cast<double>(run.steps);
+  state.counters["growth_diff_per_s"] = std::abs(e.growth_rate_per_s - reference.growth_rate_per_s);
+  state.counters["freq_rel_diff"] = std::abs(e.frequency_hz / reference.frequency_hz - 1.0);
 }
 
 void BM_Map(benchmark::State& state) {
@@ -119,6 +140,7 @@ BENCHMARK_CAPTURE(BM_Landing, coupled_exact_integrals_dq, ContactModel::coupled,
 BENCHMARK_CAPTURE(BM_Landing, coupled_exact_integrals_bdf, ContactModel::coupled, true, true,
                   Integrator::bdf)
     ->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_LandingTolerance)->DenseRange(5, 9)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_LinearMap)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_Map)
     ->Args({2, 50})

@@ -216,8 +216,9 @@ def bench_table(path, out):
     ctx = b.get("context", {})
     out.append(f"Run at load average {', '.join(f'{v:.1f}' for v in ctx.get('load_avg', []))} "
                f"on {ctx.get('num_cpus', '?')} CPUs.\n")
-    out.append("| benchmark | CPU time | real-time factor | steps | RHS evaluations |")
-    out.append("|---|---|---|---|---|")
+    out.append("| benchmark | CPU time | real-time factor | steps | RHS evaluations | "
+               "off the 1e-10 landing: growth [1/s], frequency |")
+    out.append("|---|---|---|---|---|---|")
     rows = b["benchmarks"]
     medians = [r for r in rows if r.get("run_type") == "aggregate" and r.get("aggregate_name") == "median"]
     for r in medians or rows:
@@ -226,15 +227,19 @@ def bench_table(path, out):
         t = r["real_time"] if wall else r["cpu_time"]
         rt = r.get("realtime_factor")
         name = r["name"].replace("_median", "").replace("/iterations:1/real_time", " (wall)")
+        off = (f"{r['growth_diff_per_s']:.2g}, {r['freq_rel_diff']:.2g}"
+               if "growth_diff_per_s" in r else "–")
         out.append(f"| {name} | {t:.3g} {unit} | "
                    f"{fmt(rt, 4) + '×' if rt else '–'} | {fmt(r.get('steps'), 4)} | "
-                   f"{fmt(r.get('rhs'), 4)} |")
+                   f"{fmt(r.get('rhs'), 4)} | {off} |")
     out.append("")
     reps = sum(1 for r in rows if r.get("run_type") == "iteration") // max(len(medians), 1)
     out.append(f"Medians of {reps} repetitions (the machine is shared: times move with its load). "
                "BM_Rhs and BM_Jacobian: one right-hand side and one structured Jacobian at the "
                "braked slide's quasi-steady state; a landing's time less its RHS evaluations × "
-               "BM_Rhs is CVODE's own work per step (error test, Nordsieck update, LU solves).")
+               "BM_Rhs is CVODE's own work per step (error test, Nordsieck update, LU solves). "
+               "BM_LandingTolerance/k: the default coupled landing at relative tolerance 1e-k, "
+               "its window's fitted growth rate and frequency against the same landing at 1e-10.")
     out.append("")
 
 
