@@ -121,6 +121,7 @@ nlohmann::json write_overlay(const OutputDir& dir, const std::vector<ComputedMap
   std::ostringstream gp, labels, plots;
   gp.precision(10);
   nlohmann::json summary{{"png", name + ".png"}, {"phase", to_string(first.phase)}};
+  PlacedLabels placed;
   for (std::size_t k = 0; k < overlay.models.size(); ++k) {
     const OverlayModel& om = overlay.models[k];
     const StabilityMap& m = maps[static_cast<std::size_t>(om.map)].map;
@@ -128,11 +129,11 @@ nlohmann::json write_overlay(const OutputDir& dir, const std::vector<ComputedMap
     // Every lobe labelled at its centre (kept inside the frame), in the model's colour.
     for (std::size_t q = 0; q < om.lobes.size(); ++q) {
       const MapCell* c = om.lobes[q].cell;
-      const auto at = inside_frame(m, c->x, c->y);
-      labels << "set label " << 10 * (k + 1) + q << " \"" << to_string(m.contact)
-             << " unstable: " << (om.lobes[q].source.empty() ? "?" : om.lobes[q].source) << "\" at "
-             << at.x << "," << at.y << " " << at.align << " front boxed tc rgb '" << colour
-             << "' font ',9'\n";
+      const std::string text = std::string(to_string(m.contact)) + " unstable: " +
+                               (om.lobes[q].source.empty() ? "?" : om.lobes[q].source);
+      const auto at = place_clear(m, inside_frame(m, c->x, c->y), text.size(), placed);
+      labels << "set label " << 10 * (k + 1) + q << " \"" << text << "\" at " << at.x << "," << at.y
+             << " " << at.align << " front boxed tc rgb '" << colour << "' font ',9'\n";
     }
     // A model without a boundary has no line to plot: its key entry comes from NaN.
     plots << (k ? ", " : "");

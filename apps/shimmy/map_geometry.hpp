@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <string>
 #include <vector>
 
 #include "contensou/gear/stability_map.hpp"
@@ -118,6 +119,42 @@ inline LabelAnchor inside_frame(const StabilityMap& m, double x, double y) {
   // Keep the text off the frame's top and bottom lines too.
   l.y = clamp(l.y, m.y.from + 0.02 * (m.y.to - m.y.from), m.y.to - 0.02 * (m.y.to - m.y.from));
   return l;
+}
+
+// Labels already placed on a map, as boxes in fractions of its frame (0..1 on each axis).
+struct PlacedLabels {
+  struct Box {
+    double x0, x1, y0, y1;
+  };
+  std::vector<Box> boxes;
+};
+
+// `a` (from inside_frame) moved down, a line at a time (up once the bottom is reached), until a
+// text of `chars` characters at font 9 clears every label placed before; then recorded. The box
+// is estimated from the map pictures' 820 x 660 terminal (a frame of about 630 x 530 pixels,
+// 6 pixels a character, 16 a line).
+inline LabelAnchor place_clear(const StabilityMap& m, LabelAnchor a, std::size_t chars,
+                               PlacedLabels& placed) {
+  const double sx = m.x.to - m.x.from, sy = m.y.to - m.y.from;
+  if (sx == 0.0 || sy == 0.0) return a;
+  const double w = 6.0 * static_cast<double>(chars) / 630.0, h = 16.0 / 530.0;
+  const double rx = (a.x - m.x.from) / sx;
+  const std::string align = a.align;
+  const double x0 = align == "left" ? rx : align == "right" ? rx - w : rx - 0.5 * w;
+  const auto clear = [&](double ry) {
+    for (const PlacedLabels::Box& b : placed.boxes)
+      if (x0 < b.x1 && x0 + w > b.x0 && ry - 0.5 * h < b.y1 && ry + 0.5 * h > b.y0) return false;
+    return true;
+  };
+  const double start = (a.y - m.y.from) / sy;
+  // Lines below the start down to 3 % of the frame, then lines above it.
+  const int below = std::max(0, static_cast<int>(std::floor((start - 0.03) / h)));
+  double ry = start;
+  for (int k = 1; !clear(ry) && k < 60; ++k)
+    ry = k <= below ? start - k * h : start + (k - below) * h;
+  placed.boxes.push_back({x0, x0 + w, ry - 0.5 * h, ry + 0.5 * h});
+  a.y = m.y.from + ry * sy;
+  return a;
 }
 
 }  // namespace contensou::app

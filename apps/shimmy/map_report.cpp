@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <cstring>
 #include <sstream>
 
 #include "axis_label.hpp"
@@ -54,13 +55,14 @@ std::string map_labels(const StabilityMap& m, double x0, double y0) {
   gp.precision(10);
   gp << "set style textbox opaque noborder\n";
   int k = 0;
+  PlacedLabels placed;
   for (const std::vector<int>& lobe : unstable_lobes(m)) {
     double g = -1e300;
     for (int c : lobe) g = std::max(g, m.cells[static_cast<std::size_t>(c)].growth_rate_per_s);
     const MapCell& c = lobe_centre(m, lobe);
-    const auto at = inside_frame(m, c.x, c.y);
     char text[96];
     std::snprintf(text, sizeof text, "unstable (%zu cells): up to %+.2f 1/s", lobe.size(), g);
+    const auto at = place_clear(m, inside_frame(m, c.x, c.y), std::strlen(text), placed);
     gp << "set label " << ++k << " \"" << text << "\" at " << at.x << "," << at.y << " " << at.align
        << " front boxed font ',9'\n";
   }
