@@ -3,6 +3,8 @@
 (tests/python/doc_blocks.py says how), as a user would from the repository root: in a fresh
 folder holding `data/` (the repository's) and `build/apps/` (the apps under test), with
 `bash -eu -o pipefail`. A block that calls anything else fails here, so it must be a fragment.
+A ```text block right after a run block (at most two lines between them) is the output the
+docs claim: each of its lines (but "..." elisions) must be a line the run printed.
 Usage: doc_shell_blocks.py SOURCE_DIR APP...  (contensou-identify, -shimmy, -engine-coefficients,
 -fmu)
 """
@@ -22,8 +24,17 @@ sys.path.insert(0, str(root / "tests" / "python"))
 from doc_blocks import blocks, documents  # noqa: E402
 
 failures, ran = [], 0
+def claimed_output(found, k):
+    """The ```text block right after found[k] (the printed output the docs show), or None."""
+    if k + 1 >= len(found) or found[k + 1].lang != "text" or found[k + 1].fragment:
+        return None
+    end = found[k].line + found[k].code.count("\n") + 1  # the closing fence's line
+    return found[k + 1] if found[k + 1].line - end <= 3 else None
+
+
 for doc in documents(root):
-    for b in blocks(doc):
+    found = blocks(doc)
+    for k, b in enumerate(found):
         if b.lang not in ("sh", "bash") or b.fragment:
             continue
         where = f"{doc.relative_to(root)}:{b.line}"
@@ -40,6 +51,15 @@ for doc in documents(root):
             if r.returncode != 0:
                 tail = r.stdout[-2000:] + r.stderr[-2000:]
                 failures.append(f"{where}: exit {r.returncode}\n{b.code}{tail}")
+                continue
+            shown = claimed_output(found, k)
+            if shown is not None:
+                printed = {line.rstrip() for line in (r.stdout + r.stderr).split("\n")}
+                for n, line in enumerate(shown.code.split("\n")):
+                    line = line.rstrip()
+                    if line and line.strip() not in ("...", "…") and line not in printed:
+                        failures.append(f"{doc.relative_to(root)}:{shown.line + 1 + n}: the "
+                                        f"output shown is not what the run printed: {line}")
 if ran == 0:
     failures.append("no shell block found: the README's app quick starts are missing")
 for f in failures:
