@@ -8,6 +8,7 @@
 #include <chrono>
 #include <cstdio>
 #include <filesystem>
+#include <fstream>
 #include <new>
 #include <optional>
 #include <sstream>
@@ -15,8 +16,11 @@
 #include "cli.hpp"
 #include "contensou/contensou.hpp"
 #include "contensou/identification/fit.hpp"
+#include "contensou/identification/held_out.hpp"
 #include "contensou/identification/identify.hpp"
 #include "contensou/identification/identify_request.hpp"
+#include "contensou/identification/model_file.hpp"
+#include "contensou/identification/prediction.hpp"
 #include "contensou/identification/report.hpp"
 #include "contensou/identification/report_text.hpp"
 #include "contensou/identification/simulation.hpp"
@@ -96,7 +100,42 @@ struct FitArgs {
   std::vector<double> loads;  // --normal-load: one, or one a file
   std::vector<std::string> fixes;
   bool progress = false;
+  std::vector<std::string> validate;  // --validate: files to judge the fits on
+  double holdout = 0.0;               // --holdout: the share of rows held out of the fit
+  std::string group;                  // --group: the column whose values form the groups
+  unsigned holdout_seed = 1;          // --holdout-seed
 };
+
+// The data's rows as a file of several files would be read (one file keeps its own name).
+MeasuredData read_files(const std::vector<std::string>& paths, const ColumnRenames& renames,
+                        const std::vector<double>& loads, bool channels_optional = false) {
+  std::vector<MeasuredData> files;
+  for (const std::string& path : paths)
+    files.push_back(within_memory("reading " + path, [&] {
+      return read_measured_csv(path, renames, KeyStyle::command_line, channels_optional);
+    }));
+  return combine_measured(std::move(files), loads);
+}
+
+// The fits judged on the rows held out and on each --validate file (held_out.hpp).
+void judge_held_out(const FitArgs& a, const ColumnRenames& renames,
+                    const std::optional<HoldoutSplit>& split, IdentifyRun& run) {
+  const Identification& r = run.result;
+  const ClosedLoopReport* loop = r.loop ? &*r.loop : nullptr;
+  if (split) {
+    char name[200];
+    std::snprintf(name, sizeof name,
+                  "held out: %.3g %% of the rows (%d of %d groups by %s, seed %u)",
+                  100.0 * a.holdout, split->held_groups, split->groups, split->grouped_by.c_str(),
+                  a.holdout_seed);
+    run.input.held_out.push_back(judge_on_rows(r.fit, loop, split->held_out, name));
+  }
+  for (const std::string& path : a.validate) {
+    const MeasuredData rows =
+        read_files({path}, renames, a.loads.size() == 1 ? a.loads : std::vector<double>{});
+    run.input.held_out.push_back(judge_on_rows(r.fit, loop, rows, "validation file " + path));
+  }
+}
 
 // Progress for people (on a terminal, or with --progress): a line per stage of the loop on
 // stderr, each with the time since the loop began; in scripts and pipes stderr keeps errors
@@ -118,7 +157,7 @@ int print_and_write(const FitArgs& a, const MeasuredData& read, const Identifica
   const app::PlotInput shown{read, run.outliers, run.origin, a.request.radius_m};
   if (!run.loop) {
     std::printf("%s %s: fractional law (seed eqs. 5-7)\n%s", kName, kVersion,
-                fit_report_text(info, run.fit).c_str());
+                fit_report_text_with_cautions(info, run.fit).c_str());
     if (plots != nullptr && app::write_plots(app::OutputDir(*plots), shown, run.fit))
       std::printf("pictures: %s/fit_*.png\n", a.plots_dir.c_str());
     if (!a.json_path.empty()) {
@@ -166,15 +205,21 @@ int run_fit(FitArgs a, app::OutputFolder* plots) {
                           " files: give one load, or one a file in the files' order");
   validate(a.request);  // the options' ranges before the data are read
   const ColumnRenames renames = parse_column_renames(a.columns);
-  std::vector<MeasuredData> files;
-  for (const std::string& path : a.data_paths)
-    files.push_back(
-        within_memory("reading " + path, [&] { return read_measured_csv(path, renames); }));
   MeasuredData data =
-      combine_measured(std::move(files), a.loads.size() > 1 ? a.loads : std::vector<double>{});
-  const IdentifyRun run =
+      read_files(a.data_paths, renames, a.loads.size() > 1 ? a.loads : std::vector<double>{});
+  std::optional<HoldoutSplit> split;
+  if (a.holdout > 0.0) {
+    split = holdout_split(data, a.request.radius_m, a.holdout, a.group, a.holdout_seed);
+    data = split->fit;
+  } else if (!a.group.empty()) {
+    throw app::UsageError("--group " + a.group +
+                          " needs --holdout (the share of rows to hold out)");
+  }
+  IdentifyRun run =
       within_memory("fitting the " + std::to_string(data.points.size()) + " rows of " + data.source,
                     [&] { return identify(data, a.request); });
+  within_memory("judging the fits on rows they never saw",
+                [&] { judge_held_out(a, renames, split, run); });
   return within_memory("writing the report",
                        [&] { return print_and_write(a, data, run.result, run.input, plots); });
 }
@@ -360,6 +405,63 @@ int run_simulate(SimulateArgs a) {
   return 0;
 }
 
+// `contensou-identify predict`: a model from a report, the rows of data files, predictions.
+struct PredictArgs {
+  std::string model, out, columns;
+  std::vector<std::string> data_paths;
+  std::vector<double> loads;
+};
+
+// The whole text of a file, or an error naming it (missing, unreadable, over 1 GB).
+std::string file_text(const std::string& path) {
+  std::error_code ec;
+  const auto size = std::filesystem::file_size(path, ec);
+  if (ec) throw std::runtime_error(path + ": cannot read the model: " + ec.message());
+  if (size > (1u << 30)) throw std::runtime_error(path + ": over 1 GB: not a model file");
+  std::ifstream in(path, std::ios::binary);
+  std::ostringstream text;
+  text << in.rdbuf();
+  if (!in && !in.eof()) throw std::runtime_error(path + ": cannot read the model");
+  return text.str();
+}
+
+int run_predict(const PredictArgs& p) {
+  const ModelSpec read = model_from_json(file_text(p.model), p.model);
+  if (p.loads.size() > 1 && p.loads.size() != p.data_paths.size())
+    throw app::UsageError("--normal-load: one load, or one a file in the files' order");
+  const MeasuredData data =
+      read_files(p.data_paths, parse_column_renames(p.columns), p.loads, true);
+  const ModelSpec model = bind_to_data(read, data);
+  const std::vector<RowPrediction> pred = within_memory("predicting the rows of " + data.source,
+                                                        [&] { return predict_rows(model, data); });
+  app::write_output_file(nullptr, p.out, predictions_csv(data, pred));
+  std::printf("%s %s predict: the model of %s at the %zu rows of %s\n%s", kName, kVersion,
+              p.model.c_str(), data.points.size(), data.source.c_str(),
+              prediction_scores_text(score_predictions(data, pred, model.radius_m)).c_str());
+  std::printf("predictions: %s\n", p.out.c_str());
+  return 0;
+}
+
+CLI::App* add_predict_options(CLI::App& app, PredictArgs& p) {
+  auto* predict = app.add_subcommand(
+      "predict",
+      "predict rows with a fitted model, both ways: the force from the motion and the motion "
+      "its measured force would cause (the normal of the model's limit surface)");
+  predict->add_option("--model", p.model, "the report of a fit (--json), or its \"model\" object")
+      ->required();
+  predict->add_option("data", p.data_paths, "the rows (CSV, the fit's format; forces optional)")
+      ->required();
+  predict
+      ->add_option("--out", p.out,
+                   "the predictions (CSV: the rows, then pred_Fx_N, pred_Fy_N, pred_Mz_Nm, "
+                   "pred_twist_vx, pred_twist_vy, pred_twist_omegaR)")
+      ->required();
+  predict->add_option("--columns", p.columns, "read columns under other names (as for the fit)");
+  predict->add_option("--normal-load", p.loads, "the rows' load [N], one or one a file")
+      ->delimiter(',');
+  return predict;
+}
+
 }  // namespace
 
 // The fit's options: the request's keys (identify_request.hpp) with their help from its table,
@@ -405,10 +507,25 @@ void add_fit_options(CLI::App& app, FitArgs& a, FitOptionHandles& h) {
                "closed loop: slip-speed friction at the effective speed (v^2 + (2u/3)^2)^(1/2) "
                "outside the exact integrals instead")
       ->excludes(inside);
+  app.add_option(opt("resamples"), r.resamples, key_help("resamples"));
+  app.add_flag(opt("admissible_law"), r.admissible_law, key_help("admissible_law"));
   app.add_flag("--no-outliers", h.no_outliers,
                "keep every row in the fit (no search for gross errors)");
   app.add_option(opt("profile_smoothing"), r.profile_smoothing, key_help("profile_smoothing"));
   app.add_flag(opt("profile_clip"), r.profile_clip, key_help("profile_clip"));
+  app.add_option("--validate", a.validate,
+                 "judge the fits on these files, which they never saw: each model's error there "
+                 "and its predictions both ways (the force from the motion, the motion from the "
+                 "force)");
+  app.add_option("--holdout", a.holdout,
+                 "hold this share of the rows, in (0, 0.9], out of every fit (whole sweeps, or "
+                 "whole groups of --group, drawn at random) and judge the fits on them, each loop "
+                 "step included")
+      ->check(CLI::Range(0.0, 0.9));
+  app.add_option("--group", a.group,
+                 "with --holdout: the recorded column whose values form the groups held out "
+                 "together (a test run, a specimen)");
+  app.add_option("--holdout-seed", a.holdout_seed, "with --holdout: the random draw's seed");
   app.add_flag("--progress", a.progress,
                "closed loop: a line per stage on stderr with the time so far (the default on "
                "a terminal)");
@@ -486,6 +603,8 @@ int main(int argc, char** argv) {
 
   SimulateArgs sim;
   CLI::App* simulate = add_simulate_options(app, sim);
+  PredictArgs pred;
+  CLI::App* predict = add_predict_options(app, pred);
 
   app::prepare_output();
   if (const std::optional<int> status = app::parse(app, argc, argv)) return *status;
@@ -498,6 +617,7 @@ int main(int argc, char** argv) {
   google::InitGoogleLogging(argv[0]);
   try {
     if (simulate->parsed()) return app::finish_output(run_simulate(sim));
+    if (predict->parsed()) return app::finish_output(run_predict(pred));
     if (a.data_paths.empty()) throw app::UsageError("no data file given (see --help)");
     if (h.radius->count() == 0) throw app::UsageError("--radius is required (patch radius in m)");
     std::optional<app::OutputFolder> plots;

@@ -4,7 +4,9 @@
 /// from them, the fractional laws and the model-error report (theory.md sections 1-5).
 #pragma once
 
+#include "contensou/friction/admissible_shape.hpp"
 #include "contensou/friction/contact_patch.hpp"
+#include "contensou/friction/coulomb_envelope.hpp"
 #include "contensou/friction/csv.hpp"
 #include "contensou/friction/error.hpp"
 #include "contensou/friction/exact_law.hpp"

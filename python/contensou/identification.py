@@ -137,6 +137,46 @@ class IdentificationResult:
                 )
             )
 
+    def predict(
+        self,
+        data: Union[str, os.PathLike, Mapping[str, Any], np.ndarray, Any],
+        *,
+        columns: Optional[Union[str, Mapping[str, Any]]] = None,
+        normal_load: Optional[Union[float, Sequence[float]]] = None,
+    ) -> Any:
+        """The final model at the rows of ``data`` (read as ``identify`` reads it; rows need
+        only their motion), both ways: the friction from the motion (``pred_Fx_N``,
+        ``pred_Fy_N``, ``pred_Mz_Nm``) and the direction of motion each row's measured force
+        would cause (``pred_twist_vx``, ``pred_twist_vy``, ``pred_twist_omegaR``: the unit vector
+        of (vx, vy, omega R) whose model force is parallel to the measured (Fx, Fy, Mz / R), the
+        normal of the model's limit surface there; NaN where a channel is not measured), and
+        ``wrench_misfit_deg``, the angle the model's force there still differs by.
+
+        Returns a pandas DataFrame (one row a row of ``data``, its index when ``data`` is a
+        DataFrame) with the scores in ``.attrs["scores"]`` (median and mean motion angle [deg],
+        force relative error and angle; over the rows with all three channels), or a dict of
+        arrays with a ``"scores"`` entry when pandas is not installed."""
+        model = self.report.get("model")
+        if model is None:
+            raise ValueError("this report has no model to predict with (made by an older "
+                             "contensou: identify again)")
+        items, loads = _items_and_loads(data, normal_load, None, scalar_load_per_table=True)
+        raw = _core._predict(items, loads, _renames(columns), json.dumps(model))
+        out = {"pred_Fx_N": raw["wrench"][:, 0], "pred_Fy_N": raw["wrench"][:, 1],
+               "pred_Mz_Nm": raw["wrench"][:, 2], "pred_twist_vx": raw["twist"][:, 0],
+               "pred_twist_vy": raw["twist"][:, 1], "pred_twist_omegaR": raw["twist"][:, 2],
+               "wrench_misfit_deg": raw["misfit_deg"]}
+        try:
+            import pandas as pd  # type: ignore[import-untyped]  # optional
+        except ImportError:
+            return {**out, "scores": dict(raw["scores"])}
+        frame_index = getattr(data, "index", None) if hasattr(data, "iloc") else None
+        index = frame_index if frame_index is not None and len(frame_index) == len(
+            out["pred_Fx_N"]) else None
+        frame = pd.DataFrame(out, index=index)
+        frame.attrs["scores"] = dict(raw["scores"])
+        return frame
+
     @property
     def names(self) -> list[str]:
         return list(self.parameters)
@@ -267,6 +307,8 @@ def identify(
     profile_smoothing: int = 0,
     profile_clip: bool = False,
     outliers: bool = True,
+    resamples: int = 5,
+    admissible_law: bool = False,
     columns: Optional[Union[str, Mapping[str, Any]]] = None,
     source: Optional[str] = None,
 ) -> IdentificationResult:
@@ -312,7 +354,22 @@ def identify(
     request.alpha = _args.number("alpha", alpha)
     request.speed_inside_integrals = _flag("speed_inside_integrals", speed_inside_integrals)
     request.outliers = _flag("outliers", outliers)
+    request.resamples = _args.integer("resamples", resamples)
+    request.admissible_law = _flag("admissible_law", admissible_law)
     renames = _renames(columns)
+    if not isinstance(normal_load, (list, tuple)):
+        request.normal_load = _args.optional_number("normal_load", normal_load)
+    items, loads = _items_and_loads(data, normal_load, source)
+    raw = _core._identify(items, loads, renames, request)
+    return IdentificationResult(raw)
+
+
+def _items_and_loads(
+    data: Any, normal_load: Any, source: Optional[str], scalar_load_per_table: bool = False
+) -> tuple[list[tuple[Optional[str], str, list[str], list[Any]]], list[float]]:
+    """The tables of ``data`` as the core reads them, (path or None, source name, column names,
+    columns) a table, and the loads given one a table (a single load too with
+    ``scalar_load_per_table``; else empty for one load or none)."""
     tables = list(data) if isinstance(data, (list, tuple)) else [data]
     if not tables:
         raise ValueError("data: an empty list; give a table, or several")
@@ -322,9 +379,8 @@ def identify(
         if len(loads) != len(tables):
             raise ValueError(f"normal_load: {len(loads)} values for {len(tables)} tables: give "
                              f"one load, or one a table in their order")
-    else:
-        request.normal_load = _args.optional_number("normal_load", normal_load)
-    # (path or None, source name, column names, columns) a table
+    elif normal_load is not None and scalar_load_per_table:
+        loads = [_args.number("normal_load", normal_load)] * len(tables)
     items: list[tuple[Optional[str], str, list[str], list[Any]]] = []
     for k, table in enumerate(tables):
         one = len(tables) == 1
@@ -338,8 +394,7 @@ def identify(
             name = f"<{kind}>" if one else f"<{kind} {k + 1}>"
         names, cols = _table_of(table)
         items.append((None, name, names, cols))
-    raw = _core._identify(items, loads, renames, request)
-    return IdentificationResult(raw)
+    return items, loads
 
 
 # The keys' meaning from the library's table (identify_request.hpp), shared with the app's --help.

@@ -43,7 +43,8 @@ std::vector<std::string> cells_of(const nb::handle& column) {
 // units in names, renames, near misses and bad cells are handled as for a file; errors name
 // the row (1-based) and its index.
 MeasuredData data_from_columns(const std::string& source, const std::vector<std::string>& names,
-                               const nb::list& columns, const ColumnRenames& renames) {
+                               const nb::list& columns, const ColumnRenames& renames,
+                               bool channels_optional = false) {
   CsvTable t;
   t.file = source;
   t.header = names;
@@ -61,7 +62,7 @@ MeasuredData data_from_columns(const std::string& source, const std::vector<std:
     t.rows[i].line = static_cast<int>(i + 1);
     for (std::vector<std::string>& c : cells) t.rows[i].cells.push_back(std::move(c[i]));
   }
-  return measured_data_from_table(t, renames, KeyStyle::python);
+  return measured_data_from_table(t, renames, KeyStyle::python, channels_optional);
 }
 
 std::vector<double> forces_of(const std::vector<Resultants<double>>& r) {
@@ -122,7 +123,7 @@ void put_results(nb::dict& out, const IdentifyRun& run) {
   nb::list steps;
   if (!r.loop) {
     out["json"] = fit_report_json(run.input, r.fit);
-    out["text"] = fit_report_text(run.input, r.fit);
+    out["text"] = fit_report_text_with_cautions(run.input, r.fit);
   } else {
     out["json"] = loop_report_json(run.input, *r.loop);
     out["text"] = loop_report_text(run.input, *r.loop);
@@ -157,13 +158,15 @@ ColumnRenames renames_of(const nb::object& renames) {
 
 // contensou.identify(): the data from a CSV path or named columns, the request as the app's.
 // One table of contensou.identify(): a CSV path, or a source name with column names and columns.
-MeasuredData read_table(const nb::tuple& item, const ColumnRenames& renames) {
+MeasuredData read_table(const nb::tuple& item, const ColumnRenames& renames,
+                        bool channels_optional = false) {
   const nb::object path = item[0];
   const std::string source = nb::cast<std::string>(item[1]);
   MeasuredData data =
       path.is_none() ? data_from_columns(source, nb::cast<std::vector<std::string>>(item[2]),
-                                         nb::cast<nb::list>(item[3]), renames)
-                     : read_measured_csv(nb::cast<std::string>(path), renames, KeyStyle::python);
+                                         nb::cast<nb::list>(item[3]), renames, channels_optional)
+                     : read_measured_csv(nb::cast<std::string>(path), renames, KeyStyle::python,
+                                         channels_optional);
   if (!source.empty()) data.source = source;
   return data;
 }
@@ -189,6 +192,41 @@ nb::dict identify(const nb::list& items, const std::vector<double>& loads,
   return out;
 }
 
+// IdentificationResult.predict(): the model of a report (its "model" object) at the rows of
+// one table or several, both ways (prediction.hpp): wrench (n, 3), unit twist (n, 3; NaN where
+// the row's measured wrench is incomplete), the misfit [deg] and the scores.
+nb::dict predict(const nb::list& items, const std::vector<double>& loads, const nb::object& renames,
+                 const std::string& model_json) {
+  const ColumnRenames column_renames = renames_of(renames);
+  std::vector<MeasuredData> tables;
+  for (const nb::handle item : items)
+    tables.push_back(read_table(nb::cast<nb::tuple>(item), column_renames, true));
+  const MeasuredData data = combine_measured(std::move(tables), loads);
+  const ModelSpec model = bind_to_data(model_from_json(model_json, "the report"), data);
+  const std::vector<RowPrediction> pred = predict_rows(model, data);
+  const std::size_t n = pred.size();
+  std::vector<double> twist(3 * n), misfit(n);
+  for (std::size_t i = 0; i < n; ++i) {
+    for (int c = 0; c < 3; ++c) twist[3 * i + c] = pred[i].twist[c];
+    misfit[i] = pred[i].wrench_misfit_rad * 180.0 / 3.14159265358979323846;
+  }
+  const PredictionScores sc = score_predictions(data, pred, model.radius_m);
+  nb::dict scores;
+  scores["rows"] = sc.rows;
+  scores["median_motion_angle_deg"] = sc.median_motion_angle_deg;
+  scores["mean_motion_angle_deg"] = sc.mean_motion_angle_deg;
+  scores["median_force_relative_error"] = sc.median_force_error;
+  scores["mean_force_relative_error"] = sc.mean_force_error;
+  scores["median_force_angle_deg"] = sc.median_force_angle_deg;
+  nb::dict out;
+  out["wrench"] = to_numpy(forces_of(wrenches_of(pred)), {n, 3});
+  out["twist"] = to_numpy(std::move(twist), {n, 3});
+  out["misfit_deg"] = to_numpy(std::move(misfit), {n});
+  out["scores"] = scores;
+  out["text"] = prediction_scores_text(sc);
+  return out;
+}
+
 // The request's keys as attributes (identify_request.hpp's table gives their meaning).
 void bind_request(nb::module_& m) {
   nb::class_<IdentifyRequest>(m, "_IdentifyRequest")
@@ -207,7 +245,9 @@ void bind_request(nb::module_& m) {
       .def_rw("loop", &IdentifyRequest::loop)
       .def_rw("alpha", &IdentifyRequest::alpha)
       .def_rw("speed_inside_integrals", &IdentifyRequest::speed_inside_integrals)
-      .def_rw("outliers", &IdentifyRequest::outliers);
+      .def_rw("outliers", &IdentifyRequest::outliers)
+      .def_rw("resamples", &IdentifyRequest::resamples)
+      .def_rw("admissible_law", &IdentifyRequest::admissible_law);
   std::vector<std::pair<std::string, std::string>> keys;
   for (const RequestKey& k : identify_request_keys()) keys.emplace_back(k.key, k.help);
   m.attr("_identify_keys") = keys;
@@ -220,6 +260,7 @@ void bind_identification(nb::module_& m) {
   FLAGS_minloglevel = google::GLOG_FATAL;
   bind_request(m);
   m.def("_identify", &identify, "items"_a, "loads"_a, "renames"_a.none(), "request"_a);
+  m.def("_predict", &predict, "items"_a, "loads"_a, "renames"_a.none(), "model_json"_a);
 }
 
 }  // namespace contensou::python

@@ -2,8 +2,10 @@
 # src/friction/CMakeLists.txt and by the fuzz project (tests/fuzz), so a new source file cannot
 # be missing from one of them. The AVX2/AVX-512 kernels are added by the library only.
 set(contensou_friction_sources
+  admissible_shape.cpp
   chebyshev_kernels.cpp
   contact_patch.cpp
+  coulomb_envelope.cpp
   csv.cpp
   exact_law.cpp
   exact_law_jacobian.cpp

@@ -275,6 +275,20 @@ struct Trial {
   LoopStep step;
 };
 
+// The catalogue's candidates for the model, less those the caller excluded (by name, or with
+// their detail).
+std::vector<Candidate> candidates_for(const MeasuredData& data, const ModelSpec& spec,
+                                      const std::vector<Covariate>& covariates,
+                                      const ClosedLoopOptions& loop) {
+  std::vector<Candidate> cands = catalogue(data, spec, covariates);
+  std::erase_if(cands, [&](const Candidate& c) {
+    const auto& x = loop.excluded;
+    return std::find(x.begin(), x.end(), label(c)) != x.end() ||
+           std::find(x.begin(), x.end(), describe(c.effect).name) != x.end();
+  });
+  return cands;
+}
+
 // Of the trials that pass the tests, the one with the lowest BIC (nullptr if none); any other
 // that passes within a BIC difference of 2, or whose score direction correlates above 0.9 with
 // the accepted one's and whose LR is significant, is named as an alternative the data do not
@@ -310,6 +324,19 @@ Trial* choose_among(std::vector<Trial>& trials, const std::vector<Candidate>& ca
                                     "): " + separating_measurement(b, c, data));
       }
       t.step.accepted = false;
+    }
+    if (&t == best) {
+      t.step.unconfirmed =
+          c.effect == Effect::slip_angle_offset
+              ? unconfirmed_slip_angle(t.ext.theta[kSlipAngleOffset], data, t.ext.spec.radius_m)
+              : unconfirmed_instrument(c, data);
+      if (!t.step.unconfirmed.empty()) {
+        t.step.ambiguous_with.push_back("a physical effect");
+        t.step.separation.push_back(label(c) +
+                                    " is an instrument's effect, but the data lack the "
+                                    "measurement that tells it from " +
+                                    t.step.unconfirmed);
+      }
     }
     say(loop, step_label(step) + label(c) + (t.step.accepted ? " accepted" : " rejected") + " (" +
                   t.step.verdict + ")");
@@ -413,7 +440,7 @@ ClosedLoopReport close_the_loop(const MeasuredData& data, const IdentificationOp
   report.base = st.fit;
   say(loop, "base law fitted: BIC " + std::to_string(st.fit.bic));
   for (int step = 1; step <= loop.max_steps; ++step) {
-    const std::vector<Candidate> cands = catalogue(data, st.spec, covariates);
+    const std::vector<Candidate> cands = candidates_for(data, st.spec, covariates, loop);
     if (cands.empty()) break;
     say(loop, step_label(step) + "scoring " + std::to_string(cands.size()) + " candidate effects");
     double speed_ref = 0.0;

@@ -60,10 +60,12 @@ ParameterBounds parameter_bounds(int index) {
   constexpr double inf = std::numeric_limits<double>::infinity();
   switch (index) {
     case kF0:
-    case kA:
     case kM0:
-    case kMShape:
       return {1e-12, inf};
+    case kA:
+      return {1e-12, 4.0};  // a = (2 A^1 / A^0)^2 <= 4 for any p >= 0 (theory.md section 4)
+    case kMShape:
+      return {4.0, inf};  // m = (2 A^2 / A^3)^2 >= 4 for any p >= 0
     case kKappa:
       return {0.05, 20.0};
     case kSpeedRef:
@@ -94,6 +96,54 @@ ParameterBounds parameter_bounds(int index) {
       return {-0.19, 0.19};
     default:
       return {-inf, inf};
+  }
+}
+
+ParameterBounds parameter_bounds(const ModelSpec& spec, int index) {
+  if (!spec.admissible_shape && (index == kA || index == kMShape))
+    return {1e-12, std::numeric_limits<double>::infinity()};
+  return parameter_bounds(index);
+}
+
+const char* bound_meaning(int index, bool upper) {
+  switch (index) {
+    case kA:
+      return upper ? "a = 4 is the most any non-negative pressure gives (all of it on the rim): "
+                     "the data's sliding force weakens with spin faster than any patch's"
+                   : "a at 0: the sliding force does not weaken with spin at all (no patch of "
+                     "finite size: the pressure gathered at the centre)";
+    case kMShape:
+      return upper ? ""
+                   : "m = 4 is the least any non-negative pressure gives (all of it on the "
+                     "rim): the data's torque falls with sliding more slowly than any "
+                     "patch's";
+    case kF0:
+    case kM0:
+      return "the scale at zero: the data carry no such force or torque";
+    case kKx:
+    case kKy:
+      return "|k| = 0.95: at |k| = 1 the shifted pressure p (1 + kx x/R + ky y/R) turns negative "
+             "at the rim";
+    case kKappa:
+      return "kappa at the end of [0.05, 20]: friction across 20 times weaker or stronger than "
+             "along is no tread's; another effect is being absorbed";
+    case kSpeedDrop:
+      return upper ? "beta = 0.95: friction would vanish at high slip speed"
+                   : "beta = -0.9: friction nearly doubles with slip speed, beyond any rubber's "
+                     "or metal's";
+    case kSpeedRef:
+      return "w_s = 1 mm/s: the fall is over before the slowest row, so f is the friction at "
+             "rest, extrapolated below every row";
+    case kSlipAngleOffset:
+      return "|delta| = 0.2 rad (11 degrees): beyond a rig's misalignment";
+    case kShapeBlend:
+    case kProfileW1:
+    case kProfileW2:
+    case kProfileW3:
+    case kProfileW4:
+      return upper ? "at its upper end" : "a weight at zero: no pressure in that part of the patch";
+    default:
+      return "at the end of its range";
   }
 }
 

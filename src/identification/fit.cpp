@@ -8,6 +8,15 @@
 #include "fit_problem.hpp"
 
 namespace contensou {
+
+namespace {
+// Why a and m have the bounds they have, for an error on a fixed value.
+std::string shape_bound_reason(int i) {
+  if (i == kA) return " (a = (2 A^1 / A^0)^2 <= 4 for any non-negative pressure)";
+  if (i == kMShape) return " (m = (2 A^2 / A^3)^2 >= 4 for any non-negative pressure)";
+  return "";
+}
+}  // namespace
 using namespace detail;  // NOLINT: this file implements part of fit_problem.hpp
 
 namespace {
@@ -21,6 +30,8 @@ ModelSpec base_spec_for(const MeasuredData& data, const IdentificationOptions& o
   if (o.normal_load_n) require_positive("normal load", *o.normal_load_n);
   ModelSpec s = base_model_spec(o.radius_m, o.normal_load_n);
   s.regularization_speed = o.regularization_speed;
+  s.admissible_shape = o.admissible_shape;
+  s.joint_admissibility = o.joint_admissibility && o.admissible_shape;
   // Rows with their own load (an Fz column): each at rho = N_i / N_ref, N_ref the load given (or
   // the rows' mean), at which F0 and M0 are reported.
   if (const std::optional<LoadFromData> rows = normal_load_from_data(data)) {
@@ -44,6 +55,7 @@ ModelSpec base_spec_for(const MeasuredData& data, const IdentificationOptions& o
     // 1e-6 of the profile is far below any measurement noise and keeps a tabulated profile's
     // series short (its PCHIP is only C1).
     s.profile_model = make_exact_model(patch, 1e-6);
+    s.profile = shape;
     s.exact_laws = std::make_shared<ExactLawCache>(o.radius_m, s.profile_model, s.exact_tolerance);
   }
   double f0 = 0.0, m0 = 0.0;
@@ -58,11 +70,11 @@ ModelSpec base_spec_for(const MeasuredData& data, const IdentificationOptions& o
     if (i < 0 || i > kKx)
       throw InvalidArgument("fix", name, "unknown parameter (use F0_N, a, M0_Nm, m or kx)");
     require_finite(name.c_str(), value);
-    const ParameterBounds b = parameter_bounds(i);
+    const ParameterBounds b = parameter_bounds(s, i);
     if (!(value >= b.lower && value <= b.upper))
       throw InvalidArgument("fix " + name, format_value(value),
                             "must lie in [" + format_value(b.lower) + ", " + format_value(b.upper) +
-                                "], the fit's bounds for it");
+                                "], the fit's bounds for it" + shape_bound_reason(i));
     s.free[i] = false;
     s.value[i] = value;
   }
@@ -97,6 +109,9 @@ FitReport fit_model(const MeasuredData& data, const ModelSpec& spec, const Noise
   report_parameters(spec, sol.theta, undetermined, est, cov, report);
   if (!spec.exact_only) report.law = fractional_law_of(spec, sol.theta.data());
   report_quality(setup, sol, report);
+  auto model = std::make_shared<ModelSpec>(spec);
+  model->value = sol.theta;
+  report.model = std::move(model);
   if (estimate) *estimate = sol.theta;
   return report;
 }

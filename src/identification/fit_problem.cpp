@@ -129,14 +129,64 @@ void check_force_scale(const MeasuredData& data, double radius_m) {
             " m): check the units of the force columns (kN read as N, say) and of the radius");
 }
 
+// The bounds of the active parameters under the spec (parameter_bounds).
+std::vector<ParameterBounds> active_bounds(const ModelSpec& spec, const std::vector<int>& active) {
+  std::vector<ParameterBounds> out;
+  for (int i : active) out.push_back(parameter_bounds(spec, i));
+  return out;
+}
+
 // Bounds that keep the model physical, on the packed active parameters.
-void set_bounds(ceres::Problem& problem, double* packed, const std::vector<int>& active) {
-  for (std::size_t j = 0; j < active.size(); ++j) {
-    const ParameterBounds b = parameter_bounds(active[j]);
+void set_bounds(ceres::Problem& problem, double* packed,
+                const std::vector<ParameterBounds>& bounds) {
+  for (std::size_t j = 0; j < bounds.size(); ++j) {
+    const ParameterBounds b = bounds[j];
     const int jj = static_cast<int>(j);
     if (std::isfinite(b.lower)) problem.SetParameterLowerBound(packed, jj, b.lower);
     if (std::isfinite(b.upper)) problem.SetParameterUpperBound(packed, jj, b.upper);
   }
+}
+
+// The law's shape held inside the laws a non-negative pressure gives jointly
+// (admissible_shape.hpp, theory.md section 4.1): with t = sqrt(a)/2, r = 2/sqrt(m) and
+// q = M0 / (F0 R), the conditions g1 = t - r <= 0, g2 = q - r <= 0 and
+// g3 = (1 - q)^2 - (1 - t) q (1 - r) / t <= 0 (divided by t, so that it keeps its scale as a
+// goes to 0; a <= 4 and m >= 4 are the bounds). Each residual is
+// W max(0, g_i): zero inside, and with W = 1e4 sqrt(n) so stiff that an optimum pressed against
+// the edge stays within about 1e-8 of it. It is removed before the covariance.
+struct ShapePenalty {
+  const std::vector<int>* active;
+  const std::array<double, K>* theta_const;
+  double radius, weight;
+  template <class T>
+  bool operator()(T const* const* p, T* r) const {
+    const auto value = [&](int i) {
+      for (std::size_t j = 0; j < active->size(); ++j)
+        if ((*active)[j] == i) return p[0][j];
+      return T((*theta_const)[static_cast<std::size_t>(i)]);
+    };
+    using std::sqrt;
+    const T t = sqrt(value(kA)) / 2.0, rr = 2.0 / sqrt(value(kMShape));
+    const T q = value(kM0) / (value(kF0) * radius);
+    const T g[3] = {t - rr, q - rr, (1.0 - q) * (1.0 - q) - (1.0 - t) * q * (1.0 - rr) / t};
+    for (int k = 0; k < 3; ++k) r[k] = g[k] > T(0.0) ? weight * g[k] : T(0.0);
+    return true;
+  }
+};
+
+// Adds the penalty when the law takes part and its shape is to be admissible (a, m, M0 or F0
+// free); returns its block, or nullptr.
+ceres::ResidualBlockId add_shape_penalty(ceres::Problem& problem, const FitSetup& s,
+                                         double* packed) {
+  const ModelSpec& spec = s.spec;
+  if (!spec.joint_admissibility || spec.exact_only ||
+      !(spec.free[kA] || spec.free[kMShape] || spec.free[kM0] || spec.free[kF0]))
+    return nullptr;
+  auto* cost = new ceres::DynamicAutoDiffCostFunction<ShapePenalty, 8>(new ShapePenalty{
+      &s.active, &s.theta_const, spec.radius_m, 1e4 * std::sqrt(static_cast<double>(s.n))});
+  cost->AddParameterBlock(static_cast<int>(s.active.size()));
+  cost->SetNumResiduals(3);
+  return problem.AddResidualBlock(cost, nullptr, packed);
 }
 
 // After a failed solve: the first row whose residuals or derivatives are not finite at the
@@ -190,12 +240,12 @@ class StopCallback : public ceres::IterationCallback {
 class BoundWatch : public ceres::IterationCallback {
  public:
   static constexpr int kPinnedIterations = 3;
-  BoundWatch(const std::vector<double>& packed, const std::vector<int>& active)
-      : packed_(packed), active_(active), run_(active.size(), 0) {}
+  BoundWatch(const std::vector<double>& packed, const std::vector<ParameterBounds>& bounds)
+      : packed_(packed), bounds_(bounds), run_(bounds.size(), 0) {}
   ceres::CallbackReturnType operator()(const ceres::IterationSummary& it) override {
     if (it.iteration == 0 || !it.step_is_successful) return ceres::SOLVER_CONTINUE;
     bool pinned = false;
-    for (std::size_t j = 0; j < active_.size(); ++j) {
+    for (std::size_t j = 0; j < bounds_.size(); ++j) {
       run_[j] = at_bound(j) ? run_[j] + 1 : 0;
       pinned = pinned || run_[j] >= kPinnedIterations;
     }
@@ -203,29 +253,29 @@ class BoundWatch : public ceres::IterationCallback {
   }
   // Ceres keeps a bound by clipping the step to it: a parameter on its bound equals it.
   bool at_bound(std::size_t j) const {
-    const ParameterBounds b = parameter_bounds(active_[j]);
-    return packed_[j] == b.lower || packed_[j] == b.upper;
+    return packed_[j] == bounds_[j].lower || packed_[j] == bounds_[j].upper;
   }
+  bool at_lower(std::size_t j) const { return packed_[j] == bounds_[j].lower; }
 
  private:
   const std::vector<double>& packed_;
-  const std::vector<int>& active_;
+  const std::vector<ParameterBounds>& bounds_;
   std::vector<int> run_;
 };
 
 // The parameters on their bounds whose gradient g_j (of the cost) points out of the box: at a
 // lower bound g_j > 0, at an upper bound g_j < 0 (the cost would rise going inside). Those
 // the data hold on their bounds (the Karush-Kuhn-Tucker condition); the others are free to go.
-std::vector<int> held_on_bounds(ceres::Problem& problem, const std::vector<double>& packed,
-                                const std::vector<int>& active, const BoundWatch& watch) {
+std::vector<int> held_on_bounds(ceres::Problem& problem, std::size_t active,
+                                const BoundWatch& watch) {
   double cost = 0.0;
   std::vector<double> gradient;
   ceres::Problem::EvaluateOptions o = evaluate_options();
   if (!problem.Evaluate(o, &cost, nullptr, &gradient, nullptr)) return {};
   std::vector<int> held;
-  for (std::size_t j = 0; j < active.size(); ++j) {
+  for (std::size_t j = 0; j < active; ++j) {
     if (!watch.at_bound(j)) continue;
-    const bool lower = packed[j] == parameter_bounds(active[j]).lower;
+    const bool lower = watch.at_lower(j);
     if (lower ? gradient[j] > 0.0 : gradient[j] < 0.0) held.push_back(static_cast<int>(j));
   }
   return held;
@@ -239,22 +289,22 @@ std::vector<int> held_on_bounds(ceres::Problem& problem, const std::vector<doubl
 // parameters held there by their gradient stay on it (SubsetManifold) while the others are
 // solved; and a last solve with all free follows if the bound no longer holds one of them.
 void solve_bounded(ceres::Solver::Options opt, ceres::Problem& problem, std::vector<double>& packed,
-                   const std::vector<int>& active, ceres::Solver::Summary& summary) {
-  BoundWatch watch(packed, active);
+                   const std::vector<ParameterBounds>& bounds, ceres::Solver::Summary& summary) {
+  BoundWatch watch(packed, bounds);
   opt.update_state_every_iteration = true;
   opt.callbacks.push_back(&watch);
   ceres::Solve(opt, &problem, &summary);
   opt.callbacks.pop_back();
   if (summary.termination_type != ceres::USER_SUCCESS) return;
-  const std::vector<int> held = held_on_bounds(problem, packed, active, watch);
-  const int n = static_cast<int>(active.size());
+  const std::vector<int> held = held_on_bounds(problem, bounds.size(), watch);
+  const int n = static_cast<int>(bounds.size());
   if (!held.empty() && static_cast<int>(held.size()) < n) {
     problem.SetManifold(packed.data(), new ceres::SubsetManifold(n, held));
     ceres::Solve(opt, &problem, &summary);
     problem.SetManifold(packed.data(), nullptr);
     if (!summary.IsSolutionUsable()) return;
   }
-  if (held.empty() || held_on_bounds(problem, packed, active, watch) != held)
+  if (held.empty() || held_on_bounds(problem, bounds.size(), watch) != held)
     ceres::Solve(opt, &problem, &summary);
 }
 
@@ -435,8 +485,13 @@ Solution solve(const FitSetup& s) {
   if (!s.noise.given && s.noise.start && s.noise.start->model == NoiseModel::affine &&
       s.noise.model == NoiseModel::affine)
     sol.slope = s.noise.start->slope;
+  // The start within the bounds (a profile given with m < 4, say, starts at m = 4).
+  const std::vector<ParameterBounds> bounds = active_bounds(s.spec, s.active);
   sol.packed.resize(s.active.size());
-  for (std::size_t j = 0; j < s.active.size(); ++j) sol.packed[j] = sol.theta[s.active[j]];
+  for (std::size_t j = 0; j < s.active.size(); ++j) {
+    sol.packed[j] = std::clamp(sol.theta[s.active[j]], bounds[j].lower, bounds[j].upper);
+    sol.theta[s.active[j]] = sol.packed[j];
+  }
   // The model at the start values, outside Ceres: a parameter outside its domain (a fixed
   // kappa < 0, say) is reported by name here instead of as a failed solve, and so is a row
   // whose kinematics the model cannot evaluate (speeds far beyond any rig).
@@ -464,7 +519,8 @@ Solution solve(const FitSetup& s) {
                        s.noise.loss_scale,
                        testing::Seams::of(s.noise).failing_point};
     add_points(*sol.problem, s.data, s.spec, s.active, s.theta_const, sol.packed.data(), wt, s.use);
-    set_bounds(*sol.problem, sol.packed.data(), s.active);
+    sol.shape_penalty = add_shape_penalty(*sol.problem, s, sol.packed.data());
+    set_bounds(*sol.problem, sol.packed.data(), bounds);
     ceres::Solver::Options opt;
     opt.linear_solver_type = ceres::DENSE_QR;
     opt.max_num_iterations = s.noise.solver_iterations;
@@ -476,7 +532,7 @@ Solution solve(const FitSetup& s) {
     StopCallback stop_callback(s.noise.stop);
     if (s.noise.stop) opt.callbacks.push_back(&stop_callback);
     throw_if_stopped(s.noise.stop);
-    solve_bounded(opt, *sol.problem, sol.packed, s.active, sol.summary);
+    solve_bounded(opt, *sol.problem, sol.packed, bounds, sol.summary);
     throw_if_stopped(s.noise.stop);  // the solve was aborted (or is over): not a result
     // Never go on (covariance, report) from a failed solve.
     if (!sol.summary.IsSolutionUsable())
@@ -488,6 +544,8 @@ Solution solve(const FitSetup& s) {
     const double change = estimate_noise_scales(s, sol.prediction, sol.scale, sol.slope);
     if (round > 0 && change < 1e-3) break;
   }
+  if (sol.shape_penalty) sol.problem->RemoveResidualBlock(sol.shape_penalty);
+  sol.shape_penalty = nullptr;
   return sol;
 }
 

@@ -88,6 +88,9 @@ struct Solution {
   std::array<double, kChannels> slope{};  // b_c of affine noise
   std::vector<Resultants<double>> prediction;
   ceres::Solver::Summary summary;
+  // The admissibility penalty of the law's shape (add_shape_penalty; nullptr: none), removed
+  // before the covariance.
+  ceres::ResidualBlockId shape_penalty = nullptr;
 };
 
 // Builds the problem, solves, estimates the noise scales; repeated (warm-started) until the

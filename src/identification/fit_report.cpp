@@ -66,6 +66,23 @@ std::string speed_note(const ModelSpec& spec, const std::array<double, K>& theta
   return buf;
 }
 
+// A free estimate on a bound of the fit is named with what the bound means, and no interval
+// reaches past the bounds: on a bound it is one-sided, from the bound.
+void mark_bound(const ModelSpec& spec, int i, ParameterEstimate& e) {
+  const ParameterBounds b = parameter_bounds(spec, i);
+  if (e.ci95) {
+    (*e.ci95)[0] = std::max((*e.ci95)[0], b.lower);
+    (*e.ci95)[1] = std::min((*e.ci95)[1], b.upper);
+  }
+  if (!spec.free[i]) return;
+  const double tol = 1e-9 * std::max(1.0, std::abs(e.value));
+  const bool lower = std::isfinite(b.lower) && e.value <= b.lower + tol;
+  const bool upper = std::isfinite(b.upper) && e.value >= b.upper - tol;
+  if (!lower && !upper) return;
+  e.on_bound = lower ? "lower" : "upper";
+  e.bound_meaning = bound_meaning(i, upper);
+}
+
 ParameterEstimate estimate_of(int i, double value) {
   ParameterEstimate e;
   e.name = parameter_info(i).name;
@@ -97,6 +114,7 @@ void report_parameters(const ModelSpec& spec, const std::array<double, K>& theta
     } else {
       e.determined = false;
     }
+    mark_bound(spec, i, e);
     e.note = dependence_note(spec, i, e);
     report.parameters.push_back(e);
   }

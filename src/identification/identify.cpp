@@ -2,7 +2,9 @@
 
 #include <algorithm>
 #include <cmath>
+#include <random>
 
+#include "contensou/identification/prediction.hpp"
 #include "contensou/identification/sweeps.hpp"
 
 namespace contensou {
@@ -90,6 +92,100 @@ bool put_back_fitting_values(const MeasuredData& data, Identification& r) {
   return !r.put_back.empty();
 }
 
+// The name of an accepted step as the stability and the exclusions use it.
+std::string step_label(const LoopStep& st) {
+  return st.detail.empty() || st.kind == Effect::shape || st.kind == Effect::profile_correction
+             ? st.effect
+             : st.effect + " (" + st.detail + ")";
+}
+
+std::vector<std::string> kept_effects(const ClosedLoopReport& loop) {
+  std::vector<std::string> out;
+  for (const LoopStep& st : loop.steps)
+    if (st.accepted && !st.removed && st.kind != Effect::noise_growth)
+      out.push_back(step_label(st));
+  return out;
+}
+
+// About 80 % of the rows: whole sweeps drawn at random when there are at least five and they
+// leave 70 % or more of the rows, else rows drawn one by one.
+MeasuredData subsample(const MeasuredData& rows, double radius_m, unsigned seed) {
+  if (sweeps_of(rows, radius_m).size() >= 5) {
+    MeasuredData part = holdout_split(rows, radius_m, 0.2, "", seed).fit;
+    if (static_cast<double>(part.points.size()) >= 0.7 * static_cast<double>(rows.points.size()))
+      return part;
+  }
+  std::mt19937_64 rng(seed);
+  MeasuredData part = rows;
+  part.points.clear();
+  for (const MeasuredPoint& p : rows.points)
+    if (rng() % 5 != 0) part.points.push_back(p);
+  return part;
+}
+
+// The loop again on `resamples` subsamples (holdout_split's fit part at 20 %, seeds 1..k): how
+// often each effect of `loop` is accepted there.
+std::vector<EffectStability> stability_of(const MeasuredData& rows, const ClosedLoopReport& loop,
+                                          const IdentifyOptions& o) {
+  std::vector<EffectStability> out;
+  for (const std::string& e : kept_effects(loop)) out.push_back({e, 0, 0, true});
+  if (out.empty()) return out;
+  ClosedLoopOptions quiet = *o.loop;
+  quiet.progress = nullptr;
+  for (int k = 1; k <= o.resamples; ++k) {
+    if (o.loop->progress)
+      o.loop->progress("resample " + std::to_string(k) + " of " + std::to_string(o.resamples));
+    std::vector<std::string> kept;
+    try {
+      const MeasuredData part = subsample(rows, o.fit.radius_m, static_cast<unsigned>(k));
+      kept = kept_effects(close_the_loop_on_sample(
+          part, stratified_sample(part, o.fit.radius_m, o.selection_rows), o.fit, quiet));
+    } catch (const Interrupted&) {
+      throw;
+    } catch (const std::exception&) {
+      continue;  // a subsample the loop cannot fit says nothing either way: not counted
+    }
+    for (EffectStability& s : out) {
+      ++s.resamples;
+      s.accepted_in += std::find(kept.begin(), kept.end(), s.effect) != kept.end();
+    }
+  }
+  for (EffectStability& s : out) s.stable = s.accepted_in >= kStableShare * s.resamples - 1e-9;
+  return out;
+}
+
+// The loop's effects under resampling; the unstable ones left out by running the loop again
+// without them (the stability kept in the report).
+void resample_the_loop(const IdentifyOptions& o, Identification& r) {
+  // On a large file, the subsamples are drawn from the rows the steps chose the model on.
+  const std::vector<char> chosen = stratified_sample(r.fitted, o.fit.radius_m, o.selection_rows);
+  MeasuredData rows = r.fitted;
+  rows.points.clear();
+  for (std::size_t i = 0; i < r.fitted.points.size(); ++i)
+    if (i >= chosen.size() || chosen[i]) rows.points.push_back(r.fitted.points[i]);
+  // Rounds: the effects not yet checked, the unstable ones left out and the loop run again
+  // without them (its new effects checked in the next round; three rounds at most).
+  IdentifyOptions current = o;
+  std::vector<EffectStability> stability;
+  for (int round = 0; round < 3; ++round) {
+    std::vector<std::string> unstable;
+    for (const EffectStability& s : stability_of(rows, *r.loop, current)) {
+      const bool seen = std::any_of(stability.begin(), stability.end(),
+                                    [&](const EffectStability& e) { return e.effect == s.effect; });
+      if (seen) continue;
+      stability.push_back(s);
+      if (!s.stable) unstable.push_back(s.effect);
+    }
+    if (unstable.empty()) break;
+    std::vector<std::string>& x = current.loop->excluded;
+    x.insert(x.end(), unstable.begin(), unstable.end());
+    r.loop = close_the_loop_on_sample(r.fitted,
+                                      stratified_sample(r.fitted, o.fit.radius_m, o.selection_rows),
+                                      o.fit, *current.loop);
+  }
+  r.loop->stability = std::move(stability);
+}
+
 }  // namespace
 
 Identification identify(const MeasuredData& data, const IdentifyOptions& options) {
@@ -125,6 +221,7 @@ Identification identify(const MeasuredData& data, const IdentifyOptions& options
       r.fitted = clean_rows(data, r.outliers, r.origin);
       refit_on_every_row(r.fitted, options.fit, *options.loop, *r.loop);
     }
+    if (options.resamples > 0 && r.fitted.points.size() >= 10) resample_the_loop(options, r);
     r.fit = r.loop->base;
   } else {
     r.fit = fit_fractional_law(r.fitted, options.fit);

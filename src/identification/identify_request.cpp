@@ -43,6 +43,14 @@ const std::vector<RequestKey>& identify_request_keys() {
        "closed loop: slip-speed friction at the local slip speed "
        "inside the exact integrals (else at an effective speed)"},
       {"outliers", "find gross errors (glitched rows) and leave them out of the fit"},
+      {"admissible_law",
+       "hold the law's a, m and M0 / (F0 R) together to what a non-negative pressure on the patch "
+       "gives (a m <= 16 and the torque ratio's range; a <= 4 and m >= 4 always hold): the law is "
+       "then one some patch produces"},
+      {"resamples",
+       "closed loop: run the loop again on this many subsamples of about 80 % of the rows "
+       "(whole sweeps), in [0, 100]; an effect accepted in fewer than 80 % of them is reported "
+       "unstable and left out of the model (0: no resampling)"},
   };
   return keys;
 }
@@ -86,7 +94,11 @@ void check_fix(const std::string& key, const std::string& name, double value) {
   if (!(value >= b.lower && value <= b.upper))
     throw InvalidArgument(key + " " + name, format_value(value),
                           "must lie in [" + format_value(b.lower) + ", " + format_value(b.upper) +
-                              "]" + (i == kKx ? " (|kx| >= 1 makes the pressure negative)" : ""));
+                              "]" +
+                              (i == kKx       ? " (|kx| >= 1 makes the pressure negative)"
+                               : i == kA      ? " (a <= 4 for any non-negative pressure)"
+                               : i == kMShape ? " (m >= 4 for any non-negative pressure)"
+                                              : ""));
 }
 
 }  // namespace
@@ -127,6 +139,8 @@ void validate(const IdentifyRequest& r) {
   if (!(r.alpha >= 1e-12 && r.alpha <= 0.5))
     throw InvalidArgument(key("alpha"), format_value(r.alpha), "must lie in [1e-12, 0.5]");
   for (const auto& [name, value] : r.fix) check_fix(key("fix"), name, value);
+  if (r.resamples < 0 || r.resamples > 100)
+    throw InvalidArgument(key("resamples"), std::to_string(r.resamples), "must lie in [0, 100]");
 }
 
 namespace {
@@ -176,7 +190,9 @@ IdentifyOptions identify_options(const IdentifyRequest& r, ProfileChoice& profil
     f.noise_scale =
         std::array<double, kChannels>{r.noise_scale[0], r.noise_scale[1], r.noise_scale[2]};
   f.stop = r.stop;
+  f.joint_admissibility = r.admissible_law;
   o.leave_out_outliers = r.outliers;
+  o.resamples = r.loop ? r.resamples : 0;
   if (r.loop) {
     o.loop = ClosedLoopOptions{};
     o.loop->alpha = r.alpha;

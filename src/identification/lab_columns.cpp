@@ -442,8 +442,8 @@ void require_columns(const LabHeader& in, const LabColumns& cols, const ColumnRe
                            did_you_mean(in, si_column_name(q)) + " (or give its name: " +
                            rename_option(quantity_name(q), "NAME", in.style) + ")");
   refuse_near_misses(in, cols, renames);
-  if (!cols[MeasuredQuantity::Fx].present() && !cols[MeasuredQuantity::Fy].present() &&
-      !cols[MeasuredQuantity::Mz].present())
+  if (!in.channels_optional && !cols[MeasuredQuantity::Fx].present() &&
+      !cols[MeasuredQuantity::Fy].present() && !cols[MeasuredQuantity::Mz].present())
     throw ParseError(in.file, in.header_line, 0, "no measured channel (need Fx_N, Fy_N or Mz_Nm)");
 }
 

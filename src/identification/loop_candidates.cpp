@@ -3,9 +3,13 @@
 // loop_candidates.hpp.
 #include "loop_candidates.hpp"
 
+#include "contensou/identification/data_checks.hpp"
+
 #include <Eigen/QR>
 #include <algorithm>
+#include <array>
 #include <cmath>
+#include <cstdio>
 
 namespace contensou {
 using namespace detail;  // NOLINT: this file implements loop_candidates.hpp
@@ -27,14 +31,44 @@ bool slot_holds(const ModelSpec& s, const Covariate& c) {
   return false;
 }
 
-// The rig's kinematics, the patch's growth and friction that follows a recorded variable.
+// Rows that read the rig's kinematics and channels alone: at rest (v = omega = 0) with the
+// channel measured, pure sliding (omega = 0, v != 0), pure spin (v = 0) in each sense.
+struct RigEvidence {
+  std::array<int, kChannels> rest{};
+  int pure_sliding = 0, spin_positive = 0, spin_negative = 0;
+};
+
+RigEvidence rig_evidence(const MeasuredData& data) {
+  RigEvidence e;
+  for (const MeasuredPoint& p : data.points) {
+    const Kinematics<double>& k = p.kinematics;
+    const bool still = k.vx == 0.0 && k.vy == 0.0;
+    if (still && k.omega == 0.0)
+      for (int c = 0; c < kChannels; ++c) e.rest[c] += p.force[c].has_value();
+    e.pure_sliding += k.omega == 0.0 && !still;
+    e.spin_positive += still && k.omega > 0.0;
+    e.spin_negative += still && k.omega < 0.0;
+  }
+  return e;
+}
+
+constexpr int kEvidenceRows = 3;
+
+// The rig's kinematics, the patch's growth and friction that follows a recorded variable. A
+// slip-angle offset is a candidate only when the force is turned from -v where sliding
+// dominates (data_checks.hpp: the median angle's interval excludes 0), a spin offset only with
+// pure-sliding rows or pure-spin rows in both senses: without them neither has its evidence.
 void conditions_catalogue(const MeasuredData& data, const ModelSpec& s,
                           const std::vector<Covariate>& covariates, std::vector<Candidate>& out) {
   bool longitudinal = false;
   for (const MeasuredPoint& p : data.points) longitudinal = longitudinal || p.kinematics.vx != 0.0;
-  if (!s.free[kSlipAngleOffset] && longitudinal && data.count(1) > 0)
+  if (!s.free[kSlipAngleOffset] && longitudinal && data.count(1) > 0 &&
+      check_data(data, s.radius_m).angle_offset_shown())
     out.push_back({Effect::slip_angle_offset, "", {kSlipAngleOffset}, kSlipAngleOffset});
-  if (!s.free[kSpinOffset]) out.push_back({Effect::spin_offset, "", {kSpinOffset}, kSpinOffset});
+  const RigEvidence e = rig_evidence(data);
+  if (!s.free[kSpinOffset] &&
+      (e.pure_sliding >= kEvidenceRows || (e.spin_positive > 0 && e.spin_negative > 0)))
+    out.push_back({Effect::spin_offset, "", {kSpinOffset}, kSpinOffset});
   const bool load_varies =
       std::any_of(covariates.begin(), covariates.end(),
                   [](const Covariate& c) { return c.kind == Covariate::Kind::load; });
@@ -210,6 +244,54 @@ std::string separating_measurement(const Candidate& a, const Candidate& b,
   const Candidate& first = a.effect == Effect::friction_dependence ? b : a;
   return effect_in_words(first.effect, first.detail) + ": " + describe(first.effect).separate +
          " would show it";
+}
+
+std::string unconfirmed_slip_angle(double delta_rad, const MeasuredData& data, double radius_m) {
+  const DataChecks checks = check_data(data, radius_m);
+  const double delta = delta_rad * 180.0 / 3.14159265358979323846;
+  const double half = 0.5 * (checks.median_angle_high_deg - checks.median_angle_low_deg);
+  if (checks.sliding_rows > 0 &&
+      std::abs(delta - checks.median_angle_deg) <= std::max(1.0, 3 * half))
+    return "";
+  char b[400];
+  std::snprintf(b, sizeof b,
+                "what the offset of %.2f deg stands in for: where sliding dominates the force is "
+                "turned by a median %.2f deg only (anisotropy, or the pressure's shape); pure "
+                "sliding in several directions would decide",
+                delta, checks.median_angle_deg);
+  return b;
+}
+
+std::string unconfirmed_instrument(const Candidate& c, const MeasuredData& data) {
+  const RigEvidence e = rig_evidence(data);
+  const auto channel = [&](const std::string& name) {
+    for (int k = 0; k < kChannels; ++k)
+      if (name == kChannelColumns[k]) return k;
+    return 0;
+  };
+  if (c.effect == Effect::channel_offset) {
+    if (e.rest[channel(c.detail)] >= kEvidenceRows) return "";
+    return c.detail == "Mz_Nm"
+               ? "a torque through an arm (the force applied, or the torque taken, about a point "
+                 "off the assumed centre: it follows the force, which keeps nearly one direction "
+                 "in these rows); rows at rest (v = omega = 0) would read a zero drift alone"
+               : "a force from outside the contact that keeps its direction in the body's frame "
+                 "(a pusher, a cable, a slope); rows at rest (v = omega = 0) would read a zero "
+                 "drift alone";
+  }
+  if (c.effect != Effect::channel_crosstalk) return "";
+  const bool into_torque = c.detail.rfind("Mz_Nm", 0) == 0;
+  const bool from_torque = c.detail.find("<- Mz_Nm") != std::string::npos;
+  if (into_torque || from_torque) {
+    if (e.rest[channel(c.detail.substr(0, c.detail.find(' ')))] >= kEvidenceRows) return "";
+    return "the centre of pressure (or the point the torque is taken about) off the patch's "
+           "centre, whose arm turns force into torque the same way; a static load at a known "
+           "point with no motion (the load cell's calibration) would decide";
+  }
+  if (e.pure_sliding >= kEvidenceRows) return "";
+  return "friction that differs with direction (anisotropy) or a patch turned on the body; pure "
+         "sliding along x and along y without spin would decide (a crosstalk turns the force "
+         "there, anisotropy does not)";
 }
 
 }  // namespace detail

@@ -63,6 +63,16 @@ double direction_correlation(const Eigen::VectorXd& a, const Eigen::VectorXd& b)
 // "effect (detail)".
 std::string label(const Candidate& c);
 
+// An instrument effect (a channel's offset or crosstalk) whose separating measurement the data
+// lack: the physical effect it cannot be told from, in words with the measurement that would
+// decide ("" when the data hold that measurement, or for a physical effect).
+std::string unconfirmed_instrument(const Candidate& c, const MeasuredData& data);
+
+// A slip-angle offset delta [rad] fitted where the force's own turn (data_checks.hpp: the
+// median angle to -v where sliding dominates) does not match it: what it stands in for, in
+// words ("" when they agree within max(1 deg, 3 half-widths of the median's interval)).
+std::string unconfirmed_slip_angle(double delta_rad, const MeasuredData& data, double radius_m);
+
 // What data would tell two candidate effects apart, in a sentence.
 std::string separating_measurement(const Candidate& a, const Candidate& b,
                                    const MeasuredData& data);

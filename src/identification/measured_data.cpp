@@ -82,13 +82,14 @@ void read_recorded(const CsvTable& t, const LabColumns& cols, std::size_t first,
 }  // namespace
 
 MeasuredData measured_data_from_table(const CsvTable& t, const ColumnRenames& renames,
-                                      KeyStyle style) {
+                                      KeyStyle style, bool channels_optional) {
   // Every check of the header (names, units, renames, required and misspelt columns) is
   // lab_columns'; the table is read here only for its cells' numbers.
   const std::vector<std::string> first_row =
       t.rows.empty() ? std::vector<std::string>{} : t.rows.front().cells.strings();
-  const LabHeader header{t.header,      t.rows.empty() ? nullptr : &first_row,    t.file,
-                         t.header_line, t.rows.empty() ? 0 : t.rows.front().line, style};
+  const LabHeader header{t.header,         t.rows.empty() ? nullptr : &first_row,    t.file,
+                         t.header_line,    t.rows.empty() ? 0 : t.rows.front().line, style,
+                         channels_optional};
   const LabColumns cols = resolve_measured_columns(header, renames);
   MeasuredData data;
   data.source = t.file;
@@ -129,8 +130,8 @@ MeasuredData measured_data_from_table(const CsvTable& t, const ColumnRenames& re
 }
 
 MeasuredData read_measured_csv(const std::string& path, const ColumnRenames& renames,
-                               KeyStyle style) {
-  return measured_data_from_table(read_csv(path), renames, style);
+                               KeyStyle style, bool channels_optional) {
+  return measured_data_from_table(read_csv(path), renames, style, channels_optional);
 }
 
 namespace {

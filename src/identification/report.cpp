@@ -1,6 +1,8 @@
 // The identification report as JSON (moved from the app so that the Python package writes the
 // same report).
 #include "contensou/identification/report.hpp"
+
+#include "contensou/identification/model_file.hpp"
 #include "contensou/identification/report_text.hpp"
 
 #include <cmath>
@@ -13,6 +15,56 @@
 
 namespace contensou {
 namespace {
+
+nlohmann::json scores_json(const PredictionScores& p) {
+  const auto num = [](double v) { return std::isfinite(v) ? nlohmann::json(v) : nlohmann::json(); };
+  return {{"rows", p.rows},
+          {"median_motion_angle_deg", num(p.median_motion_angle_deg)},
+          {"mean_motion_angle_deg", num(p.mean_motion_angle_deg)},
+          {"median_force_relative_error", num(p.median_force_error)},
+          {"mean_force_relative_error", num(p.mean_force_error)},
+          {"median_force_angle_deg", num(p.median_force_angle_deg)}};
+}
+
+nlohmann::json checks_json(const DataChecks& c) {
+  const auto num = [](double v) { return std::isfinite(v) ? nlohmann::json(v) : nlohmann::json(); };
+  return {
+      {"rows", c.rows},
+      {"coupling_rows", c.coupling_rows},
+      {"torque_ratio_rows", c.ratio_rows},
+      {"above_centred_patch_torque", c.above_axisymmetric},
+      {"above_any_patch_torque", c.above_any_patch},
+      {"torque_sign_rows", c.sign_rows},
+      {"torque_drives_spin", c.drives_spin},
+      {"force_angle_rows", c.angle_rows},
+      {"force_angle_outside", c.angle_outside},
+      {"sliding_rows", c.sliding_rows},
+      {"median_force_angle_deg", num(c.median_angle_deg)},
+      {"median_force_angle_ci95_deg", {num(c.median_angle_low_deg), num(c.median_angle_high_deg)}},
+      {"margin", kCheckMargin},
+      {"findings", c.findings}};
+}
+
+nlohmann::json held_out_json(const std::vector<HeldOutResult>& results) {
+  nlohmann::json out = nlohmann::json::array();
+  for (const HeldOutResult& h : results) {
+    nlohmann::json steps = nlohmann::json::array();
+    for (const HeldOutStep& st : h.steps)
+      steps.push_back({{"effect", st.effect},
+                       {"detail", st.detail},
+                       {"accepted", st.accepted},
+                       {"error_before", st.error_before},
+                       {"error_after", st.error_after}});
+    out.push_back({{"name", h.name},
+                   {"rows", h.rows},
+                   {"base_error", h.base_error},
+                   {"final_error", h.final_error},
+                   {"base", scores_json(h.base_scores)},
+                   {"final", scores_json(h.final_scores)},
+                   {"steps", steps}});
+  }
+  return out;
+}
 
 nlohmann::json model_json(const std::string& name, const std::vector<std::string>& effects,
                           const FitReport& fit) {
@@ -30,6 +82,8 @@ nlohmann::json model_json(const std::string& name, const std::vector<std::string
     e["determined"] = p.determined || p.fixed;
     e["std_error"] = std::isfinite(p.std_error) ? nlohmann::json(p.std_error) : nlohmann::json();
     if (!p.note.empty()) e["note"] = p.note;
+    e["on_bound"] = p.on_bound.empty() ? nlohmann::json() : nlohmann::json(p.on_bound);
+    if (!p.on_bound.empty()) e["bound_meaning"] = p.bound_meaning;
     params[p.name] = e;
   }
   m["params"] = params;
@@ -76,6 +130,7 @@ nlohmann::json model_json(const std::string& name, const std::vector<std::string
   m["error"] = fit.error;
   m["converged"] = fit.converged;
   m["warnings"] = fit_warnings(fit);
+  m["cautions"] = shape_cautions(fit);
   nlohmann::json corr = nlohmann::json::object();
   corr["names"] = fit.correlation_names;
   nlohmann::json rows = nlohmann::json::array();
@@ -149,6 +204,9 @@ nlohmann::json fit_report(const ReportInput& info, const FitReport& base) {
   r["error_definition"] =
       "root mean square over measured channels of (channel rms / channel's largest |value|)";
   r["warnings"] = fit_warnings(base);
+  r["held_out"] = held_out_json(info.held_out);
+  r["data_checks"] = checks_json(info.checks);
+  if (base.model) r["model"] = nlohmann::json::parse(model_to_json(*base.model));
   return r;
 }
 
@@ -188,6 +246,8 @@ nlohmann::json loop_report(const ReportInput& info, const ClosedLoopReport& loop
          {"retries", st.retries},
          {"ambiguous_with", st.ambiguous_with},
          {"separation", st.separation},
+         {"instrument_unconfirmed",
+          st.unconfirmed.empty() ? nlohmann::json() : nlohmann::json(st.unconfirmed)},
          {"parameters", params},
          {"lr", st.lr},
          {"lr_dof", st.lr_dof},
@@ -218,7 +278,16 @@ nlohmann::json loop_report(const ReportInput& info, const ClosedLoopReport& loop
   r["noise_model"] = noise_model_name(loop.noise_model);
   r["structure_remains"] = loop.structure_remains;
   r["summary"] = loop_summary(loop);
+  nlohmann::json stability = nlohmann::json::array();
+  for (const EffectStability& e : loop.stability)
+    stability.push_back({{"effect", e.effect},
+                         {"accepted_in", e.accepted_in},
+                         {"resamples", e.resamples},
+                         {"stable", e.stable}});
+  r["stability"] = stability;
   r["warnings"] = fit_warnings(loop.final_fit);
+  if (loop.final_fit.model)
+    r["model"] = nlohmann::json::parse(model_to_json(*loop.final_fit.model));
   return r;
 }
 
@@ -273,6 +342,7 @@ ReportInput describe_run(const std::string& file, const MeasuredData& data, doub
   in.profile = profile.description;
   in.profile_rms_residual_pa = profile.rms_residual_pa;
   in.profile_max_residual_pa = profile.max_residual_pa;
+  if (radius_m > 0.0 && std::isfinite(radius_m)) in.checks = check_data(data, radius_m);
   return in;
 }
 

@@ -1,5 +1,6 @@
 #include "contensou/identification/report_text.hpp"
 
+#include "contensou/friction/admissible_shape.hpp"
 #include "contensou/identification/identify.hpp"
 
 #include <algorithm>
@@ -57,7 +58,9 @@ std::string parameters_text(const FitReport& fit) {
     else if (!p.determined)
       ci = "not determined by the data";
     else if (p.ci95)
-      ci = "[" + fmt("%.6g", (*p.ci95)[0]) + ", " + fmt("%.6g", (*p.ci95)[1]) + "]";
+      ci = "[" + fmt("%.6g", (*p.ci95)[0]) + (p.on_bound == "lower" ? " (bound)" : "") + ", " +
+           fmt("%.6g", (*p.ci95)[1]) + (p.on_bound == "upper" ? " (bound)" : "") + "]";
+    if (!p.on_bound.empty() && !p.ci95) ci = "on its " + p.on_bound + " bound";
     char line[160];
     std::snprintf(line, sizeof line, "%-10s  %-13.6g  %-28s  %s\n", p.name.c_str(), p.value,
                   ci.c_str(), p.unit.c_str());
@@ -270,6 +273,41 @@ std::string final_correction(const FitReport& fit, const std::string& step_detai
 
 }  // namespace
 
+namespace {
+
+// What an instrument effect did to the channels, without naming a cause: "a constant in
+// Mz_Nm", "Fy_N picks up a share of Fx_N".
+std::string instrument_words(const LoopStep& st) {
+  if (st.kind == Effect::channel_offset) return "a constant in " + st.detail;
+  if (st.kind == Effect::slip_angle_offset) return "the sliding direction read turned";
+  const std::size_t arrow = st.detail.find(" <- ");
+  if (arrow == std::string::npos) return st.effect + " (" + st.detail + ")";
+  return st.detail.substr(0, arrow) + " picks up a share of " + st.detail.substr(arrow + 4);
+}
+
+// An accepted step in words: an instrument's effect without its evidence names its physical
+// alternative too.
+std::string accepted_in_words(const LoopStep& st) {
+  if (!st.unconfirmed.empty())
+    return instrument_words(st) + ": an instrument's fault, or " + st.unconfirmed +
+           " (these rows cannot tell which)";
+  return effect_in_words(st.kind, variable_in_words(st.detail));
+}
+
+// ". Unstable under resampling, so not accepted: X (3 of 5), ..." or "".
+std::string unstable_in_words(const ClosedLoopReport& loop) {
+  std::vector<std::string> unstable;
+  for (const EffectStability& e : loop.stability)
+    if (!e.stable)
+      unstable.push_back(e.effect + " (" + std::to_string(e.accepted_in) + " of " +
+                         std::to_string(e.resamples) + ")");
+  return unstable.empty()
+             ? ""
+             : ". Unstable under resampling, so not accepted: " + join(unstable, ", ", ", ");
+}
+
+}  // namespace
+
 std::string loop_summary(const ClosedLoopReport& loop) {
   std::vector<std::string> shown, not_needed, failed;
   const auto step_name = [](const LoopStep& st) {
@@ -287,7 +325,7 @@ std::string loop_summary(const ClosedLoopReport& loop) {
     if (st.accepted && !st.removed && st.kind == Effect::profile_correction)
       shown.push_back(effect_in_words(st.kind, final_correction(loop.final_fit, st.detail)));
     else if (st.accepted && !st.removed)
-      shown.push_back(effect_in_words(st.kind, variable_in_words(st.detail)));
+      shown.push_back(accepted_in_words(st));
     else if (last_failed[name])
       failed.push_back(name);
     else
@@ -311,6 +349,7 @@ std::string loop_summary(const ClosedLoopReport& loop) {
                                 : "the data show that " + join(shown, "; ", "; and ");
   if (!not_needed.empty()) s += ". Tried and not needed: " + join(not_needed, ", ", ", ");
   if (!failed.empty()) s += ". Not decided (the fit failed): " + join(failed, ", ", ", ");
+  s += unstable_in_words(loop);
   s += ". The fit is limited by " + limit_text(loop.final_fit, loop.structure_remains);
   return s + "." + identified_profile_caveat(loop);
 }
@@ -358,6 +397,37 @@ std::vector<std::string> fit_warnings(const FitReport& fit) {
   return w;
 }
 
+std::vector<std::string> shape_cautions(const FitReport& fit) {
+  std::vector<std::string> w;
+  for (const ParameterEstimate& p : fit.parameters)
+    if (!p.on_bound.empty())
+      w.push_back(p.name + " = " + fmt("%.6g", p.value) + " ends on its " + p.on_bound +
+                  " bound: " + p.bound_meaning +
+                  "; its interval is one-sided, from the bound, and the fit is held there by the "
+                  "bound rather than by the data");
+  const FractionalLaw<double>& law = fit.law;
+  if (law.F0 > 0.0 && law.M0 > 0.0 && law.radius > 0.0 && law.a > 0.0 && law.m > 0.0) {
+    const ShapeAdmissibility a = shape_admissibility(law.a, law.m, law.M0 / (law.F0 * law.radius));
+    if (!a.admissible)
+      w.push_back("no non-negative pressure on the patch gives this law: " + a.reason);
+    else if (!a.edge.empty())
+      w.push_back("the law is held on the edge of the laws a non-negative pressure gives (" +
+                  a.edge + "): the data push it further, where no patch goes");
+  }
+  return w;
+}
+
+namespace {
+
+// The cautions of a fit as the report's first lines ("" when there are none).
+std::string cautions_text(const std::string& which, const FitReport& fit) {
+  std::string s;
+  for (const std::string& c : shape_cautions(fit)) s += "CAUTION (" + which + "): " + c + "\n";
+  return s;
+}
+
+}  // namespace
+
 std::string fit_report_text(const ReportInput& input, const FitReport& fit) {
   std::string s = input_text(input) + parameters_text(fit) + channels_text(fit);
   s += "\nfit: chi2 = " + fmt("%.4g", fit.chi2) + " on " + std::to_string(fit.degrees_of_freedom) +
@@ -373,15 +443,45 @@ std::string fit_report_text(const ReportInput& input, const FitReport& fit) {
   return s;
 }
 
+std::string fit_report_text_with_cautions(const ReportInput& input, const FitReport& fit) {
+  std::string s = cautions_text("the law", fit) + data_checks_text(input.checks) + "\n" +
+                  fit_report_text(input, fit);
+  for (const HeldOutResult& h : input.held_out) s += held_out_text(h);
+  return s;
+}
+
+namespace {
+
+std::string stability_text(const ClosedLoopReport& loop) {
+  if (loop.stability.empty()) return "";
+  std::string s =
+      "\nstability (the loop run again on subsamples of about 80 % of the rows; an "
+      "effect stays when accepted in at least " +
+      fmt("%.0f", 100 * kStableShare) + " % of them):\n";
+  for (const EffectStability& e : loop.stability)
+    s += "  " + e.effect + ": accepted in " + std::to_string(e.accepted_in) + " of " +
+         std::to_string(e.resamples) +
+         (e.stable ? "" : ": UNSTABLE, not accepted (the model above is the loop without it)") +
+         "\n";
+  return s;
+}
+
+}  // namespace
+
 std::string loop_report_text(const ReportInput& input, const ClosedLoopReport& loop) {
-  std::string s = "base model: the fractional law (seed eqs. 5-7)\n" +
-                  fit_report_text(input, loop.base) + steps_text(loop) + legend_text() +
-                  accepted_text(loop);
+  std::string s = cautions_text("final model", loop.final_fit);
+  if (!loop.accepted_effects.empty()) s += cautions_text("base law", loop.base);
+  s += data_checks_text(input.checks) + "\n";
+  s += "base model: the fractional law (seed eqs. 5-7)\n" + fit_report_text(input, loop.base) +
+       steps_text(loop) + legend_text() + accepted_text(loop);
   if (!loop.accepted_effects.empty())
     s += std::string("\nfinal model (") +
          (loop.final_spec.uses_exact() ? "exact integrals over the profile" : "fractional law") +
          "):\n" + fit_report_text(input, loop.final_fit);
-  return s + "\nin plain words: " + loop_summary(loop) + "\n";
+  s += stability_text(loop);
+  s += "\nin plain words: " + loop_summary(loop) + "\n";
+  for (const HeldOutResult& h : input.held_out) s += held_out_text(h);
+  return s;
 }
 
 }  // namespace contensou

@@ -108,8 +108,8 @@ TEST(IdentifyRequest, BadValuesAreRefusedNamingTheKeyAndTheRange) {
       {[](IdentifyRequest& q) { q.fix["kx"] = 1.5; },
        "fix kx = 1.5: must lie in [-0.95, 0.95] (|kx| >= 1 makes the pressure negative)",
        "--fix kx = 1.5: must lie in [-0.95, 0.95]"},
-      {[](IdentifyRequest& q) { q.fix["a"] = -1.0; }, "fix a = -1: must lie in [1e-12, inf]",
-       "--fix a = -1"},
+      {[](IdentifyRequest& q) { q.fix["a"] = -1.0; },
+       "fix a = -1: must lie in [1e-12, 4] (a <= 4 for any non-negative pressure)", "--fix a = -1"},
       {[](IdentifyRequest& q) { q.fix["b1"] = 0.1; }, "unknown parameter (use F0_N",
        "--fix = b1=0.1: unknown parameter"},
       // Noise scales that would make chi^2 overflow (1e-300 N) or that no force reaches.

@@ -321,3 +321,38 @@ def test_good_rows_the_final_model_fits_are_put_back():
     assert "put back: 2 values" in r.text
     assert r.accepted_effects.count("friction_dependence") == 2
     assert "friction follows the load (Fz_N)" in r.text and "friction follows T_tread" in r.text
+
+
+def test_predict_both_ways_matches_the_app_and_keeps_rows_without_forces(
+        loop_result, identify_app, tmp_path):
+    """result.predict(df): the final model at any rows (forces optional), the same numbers as
+    `contensou-identify predict --model REPORT.json`; on the fitted rows the forces are the
+    fit's own predictions (an independent path: the report's model rebuilt from its JSON)."""
+    df = pd.read_csv(DATA, comment="#")
+    pred = loop_result.predict(df)
+    assert list(pred.columns[:6]) == ["pred_Fx_N", "pred_Fy_N", "pred_Mz_Nm", "pred_twist_vx",
+                                      "pred_twist_vy", "pred_twist_omegaR"]
+    assert len(pred) == len(df) and (pred.index == df.index).all()
+    fitted = pred[["pred_Fx_N", "pred_Fy_N", "pred_Mz_Nm"]].to_numpy()[loop_result.rows]
+    np.testing.assert_allclose(fitted, loop_result.prediction, rtol=1e-9, atol=1e-9)
+    unit = pred[["pred_twist_vx", "pred_twist_vy", "pred_twist_omegaR"]].to_numpy()
+    np.testing.assert_allclose(np.linalg.norm(unit, axis=1)[np.isfinite(unit[:, 0])], 1.0,
+                               rtol=1e-12)
+    scores = pred.attrs["scores"]
+    assert scores["rows"] > 0 and np.isfinite(scores["median_motion_angle_deg"])
+    # Rows without forces: predicted, not dropped; no motion is predicted for them.
+    bare = df[["vx_mps", "vy_mps", "omega_radps"]]
+    no_forces = loop_result.predict(bare)
+    np.testing.assert_allclose(no_forces[["pred_Fx_N", "pred_Fy_N", "pred_Mz_Nm"]].to_numpy(),
+                               pred[["pred_Fx_N", "pred_Fy_N", "pred_Mz_Nm"]].to_numpy())
+    assert no_forces["pred_twist_vx"].isna().all() and no_forces.attrs["scores"]["rows"] == 0
+    # The app's predict from the report file gives the same numbers.
+    report = tmp_path / "report.json"
+    report.write_text(loop_result.to_json())
+    out = tmp_path / "pred.csv"
+    subprocess.run([str(identify_app), "predict", "--model", str(report), str(DATA), "--out",
+                    str(out)], check=True, capture_output=True)
+    app = pd.read_csv(out)
+    for col in ["pred_Fx_N", "pred_Mz_Nm", "pred_twist_omegaR"]:
+        np.testing.assert_allclose(app[col].to_numpy(), pred[col].to_numpy(), rtol=1e-8,
+                                   atol=1e-12)

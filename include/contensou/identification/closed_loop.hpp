@@ -94,6 +94,10 @@ struct LoopStep {
   /// For each alternative in ambiguous_with, why it is one and which measurement would separate
   /// it from this one.
   std::vector<std::string> separation;
+  /// An instrument effect accepted without the measurement that separates it from a physical
+  /// one: that physical alternative and the measurement that would decide, in words ("": the
+  /// data hold the measurement, or the effect is physical). The report then names both.
+  std::string unconfirmed;
   FitReport fit_after;   ///< the extended fit (kept for pictures)
   FitReport fit_before;  ///< the fit of the model it extends
 };
@@ -114,11 +118,28 @@ struct ClosedLoopOptions {
   /// default (noise_model "auto").
   bool choose_noise_model = false;
   std::function<void(const std::string&)> progress;  ///< called with a line per stage
+  /// Effects never proposed, by name ("channel_offset") or with their detail
+  /// ("channel_offset (Mz_Nm)"): those identify() found unstable under resampling.
+  std::vector<std::string> excluded;
 
  private:
   detail::TestSeams seams_;
   friend struct testing::Seams;
 };
+
+/// How an accepted effect fared when the loop was run again on subsamples of the rows
+/// (identify(): IdentifyOptions::resamples).
+struct EffectStability {
+  std::string effect;   ///< "effect" or "effect (detail)", as the steps name it
+  int accepted_in = 0;  ///< the subsamples whose loop accepted it too
+  int resamples = 0;    ///< the subsamples
+  /// Accepted in at least kStableShare of the subsamples; an unstable effect is left out of the
+  /// final model (the loop run again without it) and reported as unstable.
+  bool stable = true;
+};
+
+/// The share of subsamples that must accept an effect for it to stay in the model.
+inline constexpr double kStableShare = 0.8;
 
 /// What the closed loop found.
 struct ClosedLoopReport {
@@ -138,6 +159,9 @@ struct ClosedLoopReport {
   /// on every row; the steps' statistics are the sample's.
   std::size_t selection_rows = 0,
               rows = 0;  ///< the rows of the data (0 when every row was used)
+  /// Each effect of a first loop's final model under resampling (empty when not resampled);
+  /// the unstable ones are not in this report's model.
+  std::vector<EffectStability> stability;
 };
 
 /// A loop step whose extended fit ends worse than the model it extends (which it nests): its

@@ -36,6 +36,7 @@
 
 #include "contensou/friction/exact_resultants.hpp"
 #include "contensou/friction/fractional_law.hpp"
+#include "contensou/friction/pressure_profile.hpp"
 #include "contensou/identification/exact_law_cache.hpp"
 #include "contensou/identification/measured_data.hpp"
 
@@ -135,8 +136,11 @@ struct ParameterBounds {
   /// Whether both bounds are finite.
   bool closed() const { return std::isfinite(lower) && std::isfinite(upper); }
 };
-/// The bounds of parameter `index` (a ModelParameter).
+/// The bounds of parameter `index` (a ModelParameter). The law's shapes are those a
+/// non-negative pressure on the patch can produce (theory.md section 4): a in (0, 4], m >= 4.
 ParameterBounds parameter_bounds(int index);
+/// What a parameter that ends on its lower (or `upper`) bound means, in words.
+const char* bound_meaning(int index, bool upper);
 /// The crosstalk parameter g_{channel <- source} (channels 0 Fx, 1 Fy, 2 Mz; source != channel).
 int crosstalk_parameter(int channel, int source);
 
@@ -151,6 +155,9 @@ struct ModelSpec {
       mk_ratio = 0.375;  ///< Mk / M0 (FractionalLaw::Mk)
   /// The exact integrals over the given profile (unset: the parametric profile).
   std::optional<ExactModel<double>> profile_model;
+  /// The given profile's shape (no shift), from which profile_model was made: what the model's
+  /// file records (model_file.hpp).
+  std::optional<PressureProfile> profile;
   /// The parametric profile's Bernstein degree: 2 (weights w1, w2) or 4 (w1 to w4, the loop's
   /// profile_detail step).
   int profile_degree = 2;
@@ -166,7 +173,14 @@ struct ModelSpec {
       profile_m = 64.0 / 9.0,        ///< the profile's asymptote-matched m
       profile_m0_ratio = 2.0 / 3.0;  ///< the profile's asymptote-matched M0 / (F0 R)
   bool exact_only = false;           ///< the law is replaced by the exact integrals (lambda = 1)
-  bool speed_in_exact = false;       ///< f(w) at the local slip speed inside the exact integrals
+  /// The law's a and m within what a non-negative pressure gives (a <= 4, m >= 4: theory.md
+  /// section 4); false opens them to (0, inf).
+  bool admissible_shape = true;
+  /// Also a, m and M0 / (F0 R) together (a m <= 16, the torque ratio's range), by a stiff
+  /// penalty in the fit (fit_problem.cpp). Off by default: where a channel leaves M0 or m
+  /// undetermined, the penalty can move the determined parameters instead.
+  bool joint_admissibility = false;
+  bool speed_in_exact = false;  ///< f(w) at the local slip speed inside the exact integrals
   std::array<bool, kModelParameters> free{};     ///< parameters being estimated
   std::array<double, kModelParameters> value{};  ///< their values (start or fixed)
   double exact_tolerance = 1e-6;       ///< of the exact laws, relative to f N: far below any noise
@@ -186,6 +200,10 @@ struct ModelSpec {
   /// (as given) or 2 (corrected).
   int law_degree() const { return profile_model ? (profile_corrected ? 2 : 0) : profile_degree; }
 };
+
+/// The bounds under a spec: parameter_bounds(index), with a and m open to (0, inf) when
+/// spec.admissible_shape is false (the seed's own fits, whose m = 1.72 no patch gives).
+ParameterBounds parameter_bounds(const ModelSpec& spec, int index);
 
 /// A spec of radius `radius_m` [m] and load `normal_load_n` [N] with every parameter at its null
 /// value, the law's five (F0, a, M0, m, kx) free and the parametric profile's exact laws.

@@ -20,6 +20,7 @@
 #include <array>
 #include <limits>
 #include <map>
+#include <memory>
 #include <optional>
 #include <string>
 #include <vector>
@@ -87,6 +88,14 @@ struct IdentificationOptions {
   double loss_scale = 2.0;             ///< robust loss threshold, in noise scales
   int noise_iterations = 6;            ///< fit / scatter / refit rounds when s_c is estimated
   double regularization_speed = 1e-6;  ///< eps of the law [m/s]
+  /// The law's a and m within what a non-negative pressure gives, a <= 4 and m >= 4 (theory.md
+  /// section 4; ModelSpec::admissible_shape). false reproduces fits such as the seed's Table 3,
+  /// whose m = 1.72 no patch gives.
+  bool admissible_shape = true;
+  /// Hold a, m and M0 / (F0 R) to what a non-negative pressure gives together, not only a and
+  /// m on their own (ModelSpec::joint_admissibility): the law is then one some patch produces.
+  /// Off by default; contensou-identify --admissible-law.
+  bool joint_admissibility = false;
   /// Polled between the solver's iterations and the closed loop's stages (and by the exact laws'
   /// builds): the fit or the loop throws Interrupted once it returns true (error.hpp).
   StopRequest stop{};
@@ -106,7 +115,13 @@ struct ParameterEstimate {
   bool derived = false;    ///< computed from the profile, not estimated
   /// Standard error (NaN when not determined).
   double std_error = std::numeric_limits<double>::quiet_NaN();
-  std::optional<std::array<double, 2>> ci95;  ///< the 95 % interval (none when not determined)
+  /// The 95 % interval (none when not determined), clipped to the parameter's bounds.
+  std::optional<std::array<double, 2>> ci95;
+  /// "lower" or "upper" when the estimate ends on that bound of the fit (parameter_bounds),
+  /// else "": its interval is then one-sided, from the bound.
+  std::string on_bound;
+  /// What the bound means (bound_meaning), when on_bound is set.
+  std::string bound_meaning;
   /// What a parameter of a friction_dependence slot follows, and the dependence in the variable's
   /// units ("f (1 + b1 z), z = T [degC] over 293.15 to 313.15 K: (1/f) df/dX = -0.0042 1/K");
   /// "" for the others.
@@ -151,6 +166,9 @@ struct FitReport {
   /// The fitted law (base model); default-constructed when the exact integrals replace the law
   /// (ModelSpec::exact_only).
   FractionalLaw<double> law;
+  /// The model fitted, at its estimates (ModelSpec::value): what predicts new rows
+  /// (prediction.hpp) and what the report's "model" records (model_file.hpp).
+  std::shared_ptr<const ModelSpec> model;
   // At each data point (all points of the data, also those a subset fit did not use):
   std::vector<Resultants<double>> prediction;  ///< the model at each data point
   std::vector<double> psi;  ///< psi = |v| / (|omega| R) at each point (sliding_spin_ratio)

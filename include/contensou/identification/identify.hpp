@@ -24,6 +24,10 @@ struct IdentifyOptions {
   /// use a stratified sample of about this many (sweeps.hpp: stratified_sample); the gross errors
   /// are judged, and the reported fits made, on every row. 0: every row always.
   std::size_t selection_rows = 4000;
+  /// With the loop: how many subsamples (about 80 % of the rows each, whole sweeps drawn at
+  /// random) the loop is run again on; an effect accepted in fewer than kStableShare of them is
+  /// unstable, reported as such and left out (the loop run once more without it). 0: none.
+  int resamples = 0;
 };
 
 /// The result of identify(): the gross errors left out, the data fitted and the fits.

@@ -42,6 +42,11 @@ struct IdentifyRequest {
   /// exact integrals (else at an effective speed).
   bool speed_inside_integrals = true;
   bool outliers = true;  ///< outliers: find gross errors and leave them out
+  /// resamples: the loop run again on this many subsamples of about 80 % of the rows, in
+  /// [0, 100]; an effect accepted in fewer than 80 % of them is reported unstable and left out.
+  int resamples = 5;
+  /// admissible_law: hold a, m and M0 / (F0 R) together to what a non-negative pressure gives.
+  bool admissible_law = false;
   /// Called with a line per stage of the closed loop (ClosedLoopOptions::progress).
   std::function<void(const std::string&)> progress;
   StopRequest stop{};  ///< polled by the fit and the loop (IdentificationOptions::stop)

@@ -120,6 +120,7 @@ struct LabHeader {
   int header_line = 0;                        ///< 1-based
   int first_row_line = 0;                     ///< 1-based
   KeyStyle style = KeyStyle::command_line;    ///< how messages name a rename
+  bool channels_optional = false;  ///< a table without Fx, Fy, Mz is read (rows to predict)
 };
 
 /// Resolves the columns. Throws ParseError naming file, line and column for: a unit this reader

@@ -87,14 +87,17 @@ struct MeasuredData {
 /// naming file, line and column for a missing or unreadable file (read_csv), a malformed or
 /// non-finite cell, a missing required column or an empty kinematic cell, an Fz value that is
 /// not positive, a unit this reader does not convert, text in a numeric recorded column, a file
-/// without data rows and a file without any channel.
+/// without data rows and a file without any channel (unless `channels_optional`: rows to predict,
+/// whose forces are not needed).
 MeasuredData read_measured_csv(const std::string& path, const ColumnRenames& renames = {},
-                               KeyStyle style = KeyStyle::command_line);
+                               KeyStyle style = KeyStyle::command_line,
+                               bool channels_optional = false);
 
 /// The same from a table already in memory (read_csv's, or a DataFrame's columns written as
 /// cells, with `rows_numbered` set): the same columns, units, renames and refusals.
 MeasuredData measured_data_from_table(const CsvTable& table, const ColumnRenames& renames = {},
-                                      KeyStyle style = KeyStyle::command_line);
+                                      KeyStyle style = KeyStyle::command_line,
+                                      bool channels_optional = false);
 
 /// Several files fitted together (a test programme split over files, runs at several loads): the
 /// points of each in turn, each keeping its file (MeasuredPoint::source, into `sources`) and line;

@@ -10,7 +10,9 @@
 
 #include "contensou/friction/pressure_profile.hpp"
 #include "contensou/identification/closed_loop.hpp"
+#include "contensou/identification/data_checks.hpp"
 #include "contensou/identification/fit.hpp"
+#include "contensou/identification/held_out.hpp"
 #include "contensou/identification/key_style.hpp"
 #include "contensou/identification/outliers.hpp"
 #include "contensou/identification/profile_choice.hpp"
@@ -45,6 +47,10 @@ struct ReportInput {
   std::string profile;            ///< how the pressure profile was given ("" if none)
   std::optional<double> profile_rms_residual_pa;  ///< a smoothing fit's rms residual [Pa]
   std::optional<double> profile_max_residual_pa;  ///< a smoothing fit's largest residual [Pa]
+  /// What the rows can determine, checked before any fit (data_checks.hpp; describe_run).
+  DataChecks checks;
+  /// The identification judged on rows its fits never saw (held out, or other files).
+  std::vector<HeldOutResult> held_out;
 };
 
 /// The report of a fit alone: input, base, steps (empty), accepted_effects, final (= base),

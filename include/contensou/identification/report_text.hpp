@@ -24,6 +24,14 @@ inline constexpr int kFewDegreesOfFreedomPerScale = 10;
 /// a radius that cannot match the torque (M0 / (F0 R) above 1.05 or below 0.05).
 std::vector<std::string> fit_warnings(const FitReport& fit);
 
+/// What makes a fit physically doubtful, for the report's first lines (empty if nothing):
+/// each parameter that ends on a bound of the fit, with what the bound means, and a law whose
+/// a, m and M0 / (F0 R) no non-negative pressure on the patch gives (admissible_shape.hpp).
+std::vector<std::string> shape_cautions(const FitReport& fit);
+
+/// fit_report_text with the fit's cautions (shape_cautions) as its first lines.
+std::string fit_report_text_with_cautions(const ReportInput& input, const FitReport& fit);
+
 /// The loop's outcome in plain words: what the data show, what was tried and not needed, what
 /// was not decided because its fit failed, what limits the fit.
 std::string loop_summary(const ClosedLoopReport& loop);
@@ -32,7 +40,8 @@ std::string loop_summary(const ClosedLoopReport& loop);
 /// whiteness and trace, warnings.
 std::string fit_report_text(const ReportInput& input, const FitReport& fit);
 
-/// The closed loop: the base fit as above, the steps with a legend, the accepted effects, the
+/// The closed loop: the cautions of the final model (and of the base law when effects were
+/// added) first, then the base fit as above, the steps with a legend, the accepted effects, the
 /// final model (when an effect was accepted) and a summary in plain words.
 std::string loop_report_text(const ReportInput& input, const ClosedLoopReport& loop);
 
