@@ -214,17 +214,18 @@ ModelSpec model_from_json(const std::string& text, const std::string& source) {
   if (format != kModelFileFormat)
     throw InvalidArgument(source + ": format", format.dump(),
                           std::string("must be \"") + kModelFileFormat + "\"");
-  ModelSpec s = base_model_spec(r.number(j, "radius_m"), r.optional(j, "normal_load_N"));
-  require_positive("radius_m", s.radius_m);
+  const double radius = r.number(j, "radius_m");
+  require_positive((source + ": radius_m").c_str(), radius);
+  ModelSpec s = base_model_spec(radius, r.optional(j, "normal_load_N"));
   s.reference_load_n = r.optional(j, "reference_load_N");
   const Json& k = r.member(j, "law_constants", "");
   s.c = r.number(k, "c", "law_constants.");
   s.a_k = r.number(k, "a_k", "law_constants.");
   s.mk_ratio = r.number(k, "mk_ratio", "law_constants.");
-  s.profile_degree = static_cast<int>(r.number(j, "profile_degree"));
-  if (s.profile_degree != 2 && s.profile_degree != 4)
-    throw InvalidArgument(source + ": profile_degree", std::to_string(s.profile_degree),
-                          "must be 2 or 4");
+  const double degree = r.number(j, "profile_degree");
+  if (degree != 2.0 && degree != 4.0)
+    throw InvalidArgument(source + ": profile_degree", format_value(degree), "must be 2 or 4");
+  s.profile_degree = static_cast<int>(degree);
   s.profile_corrected = r.flag(j, "profile_corrected");
   s.exact_only = r.flag(j, "exact_only");
   s.speed_in_exact = r.flag(j, "speed_in_exact");

@@ -144,6 +144,10 @@ TEST(Prediction, BadModelFilesAreRefusedByName) {
   EXPECT_THROW(model_from_json(broken("\"radius_m\"", "\"radius\""), "m.json"), InvalidArgument);
   EXPECT_THROW(model_from_json(broken("\"exact_only\":false", "\"exact_only\":3"), "m"),
                InvalidArgument);
+  EXPECT_THROW(model_from_json(broken("\"profile_degree\":2", "\"profile_degree\":1e300"), "m"),
+               InvalidArgument);
+  EXPECT_THROW(model_from_json(broken("\"radius_m\":0.05", "\"radius_m\":-1"), "m"),
+               InvalidArgument);
   // A whole report holding the model under "model" is read too.
   EXPECT_NO_THROW(model_from_json("{\"input\": {}, \"model\": " + good + "}", "report.json"));
 }
