@@ -357,13 +357,17 @@ def provenance() -> dict:
 
 def write_json_atomically(path, payload: dict) -> None:
     """Writes JSON to a unique temporary file in path's folder, then os.replace()s it."""
+    write_text_atomically(path, json.dumps(payload, indent=1, allow_nan=False) + "\n")
+
+
+def write_text_atomically(path, text: str) -> None:
+    """Writes text to a unique temporary file in path's folder, then os.replace()s it."""
     path = Path(path)
     path.parent.mkdir(parents=True, exist_ok=True)
     fd, tmp = tempfile.mkstemp(prefix=f".{path.name}.", suffix=".tmp", dir=path.parent)
     try:
         with os.fdopen(fd, "w") as f:
-            json.dump(payload, f, indent=1, allow_nan=False)
-            f.write("\n")
+            f.write(text)
             f.flush()
             os.fsync(f.fileno())
         os.chmod(tmp, 0o644)  # mkstemp makes it 0600; an ordinary file is what a reader expects

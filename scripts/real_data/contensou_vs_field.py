@@ -21,10 +21,8 @@ from __future__ import annotations
 
 import argparse
 import json
-import os
 import subprocess
 import sys
-import tempfile
 import time
 from pathlib import Path
 
@@ -45,10 +43,10 @@ def write_rows(path: Path, data: bm.Diagram, rows) -> None:
     """Rows of a diagram as the measured-diagram CSV (SI names; Mz = (Mz / R) R)."""
     t, w = data.twists[rows], data.wrenches[rows]
     r = bm.RADIUS_M
-    with open(path, "w") as f:
-        f.write(",".join(bm.DATA_COLUMNS) + "\n")
-        for a, b in zip(t, w):
-            f.write(f"{a[0]:.12g},{a[1]:.12g},{a[2] / r:.12g},{b[0]:.12g},{b[1]:.12g},{b[2] * r:.12g}\n")
+    lines = [",".join(bm.DATA_COLUMNS)] + [
+        f"{a[0]:.12g},{a[1]:.12g},{a[2] / r:.12g},{b[0]:.12g},{b[1]:.12g},{b[2] * r:.12g}"
+        for a, b in zip(t, w)]
+    bm.write_text_atomically(path, "\n".join(lines) + "\n")
 
 
 def identify(train_csv: Path, report: Path, options=()) -> str:
@@ -113,7 +111,7 @@ def whole_file_runs(diagrams: dict, work: Path) -> dict:
     for name, d in diagrams.items():
         report = work / f"{name}.json"
         text = identify(d.path, report)
-        (work / f"{name}.txt").write_text(text)
+        bm.write_text_atomically(work / f"{name}.txt", text)
         j = json.loads(report.read_text())
         runs[name] = {"text": text, "accepted": j["accepted_effects"],
                       "stability": j.get("stability", []), "summary": j.get("summary", ""),
@@ -133,12 +131,7 @@ def table(title: str, results: dict) -> str:
 
 
 def write_atomically(path: Path, text: str) -> None:
-    path.parent.mkdir(parents=True, exist_ok=True)
-    fd, tmp = tempfile.mkstemp(dir=path.parent, prefix=f".{path.name}.", suffix=".tmp")
-    with os.fdopen(fd, "w") as f:
-        f.write(text)
-    os.chmod(tmp, 0o644)
-    os.replace(tmp, path)
+    bm.write_text_atomically(path, text)
 
 
 def main(argv=None) -> int:

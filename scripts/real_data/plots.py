@@ -43,11 +43,10 @@ def meridian(report: Path, work: Path, direction_deg: float,
     theta = np.radians(np.linspace(0.5, 89.5, 90))
     phi = np.radians(direction_deg)
     rows = work / f"meridian_{direction_deg:.0f}.csv"
-    with open(rows, "w") as f:
-        f.write("vx_mps,vy_mps,omega_radps\n")
-        for t in theta:
-            v = speed * np.cos(t)
-            f.write(f"{v * np.cos(phi):.12g},{v * np.sin(phi):.12g},{speed * np.sin(t) / bm.RADIUS_M:.12g}\n")
+    lines = ["vx_mps,vy_mps,omega_radps"] + [
+        f"{speed * np.cos(t) * np.cos(phi):.12g},{speed * np.cos(t) * np.sin(phi):.12g},"
+        f"{speed * np.sin(t) / bm.RADIUS_M:.12g}" for t in theta]
+    bm.write_text_atomically(rows, "\n".join(lines) + "\n")
     out = work / f"meridian_{direction_deg:.0f}_pred.csv"
     subprocess.run([str(bm.ROOT / "build" / "apps" / "contensou-identify"), "predict", "--model",
                     str(report), str(rows), "--out", str(out)], check=True, capture_output=True)

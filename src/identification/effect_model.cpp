@@ -141,7 +141,9 @@ const char* bound_meaning(int index, bool upper) {
     case kProfileW2:
     case kProfileW3:
     case kProfileW4:
-      return upper ? "at its upper end" : "a weight at zero: no pressure in that part of the patch";
+      return upper ? "a weight at its upper end (20 times the centre's pressure)"
+                   : "a weight at zero: the pressure vanishes around that radius (at the rim for "
+                     "the last weight), as a real contact's often does";
     default:
       return "at the end of its range";
   }

@@ -2,6 +2,7 @@
 #include "contensou/identification/held_out.hpp"
 
 #include <cstdio>
+#include <stdexcept>
 
 #include "contensou/identification/model_file.hpp"
 
@@ -34,20 +35,23 @@ std::string fmt(const char* f, double v) {
 
 HeldOutResult judge_on_rows(const FitReport& base, const ClosedLoopReport* loop,
                             const MeasuredData& rows, const std::string& name) {
+  if (!base.model || (loop && !loop->final_fit.model))
+    throw std::invalid_argument("judge_on_rows: a fit without its model (fit_model sets it)");
+  const double R = base.model->radius_m;
   HeldOutResult r;
   r.name = name;
   r.rows = static_cast<int>(rows.points.size());
   const FitReport& final_fit = loop ? loop->final_fit : base;
-  r.base_error = prediction_error(rows, wrenches_on(base, rows));
-  r.final_error = prediction_error(rows, wrenches_on(final_fit, rows));
+  r.base_error = prediction_error(rows, wrenches_on(base, rows), R);
+  r.final_error = prediction_error(rows, wrenches_on(final_fit, rows), R);
   r.base_scores = scores_on(base, rows);
   r.final_scores = loop ? scores_on(final_fit, rows) : r.base_scores;
   if (!loop) return r;
   for (const LoopStep& st : loop->steps) {
     if (!st.fit_before.model || !st.fit_after.model) continue;
     r.steps.push_back({st.effect, st.detail, st.accepted && !st.removed,
-                       prediction_error(rows, wrenches_on(st.fit_before, rows)),
-                       prediction_error(rows, wrenches_on(st.fit_after, rows))});
+                       prediction_error(rows, wrenches_on(st.fit_before, rows), R),
+                       prediction_error(rows, wrenches_on(st.fit_after, rows), R)});
   }
   return r;
 }

@@ -3,6 +3,7 @@
 
 #include <Eigen/Geometry>
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdio>
 #include <map>
@@ -123,6 +124,25 @@ double mean(const std::vector<double>& v) {
   return s / static_cast<double>(v.size());
 }
 
+// The model at row i, or an error naming the row and its kinematics (speeds far beyond any rig,
+// or kinematic columns in the wrong unit, make it overflow).
+Resultants<double> wrench_at(const ModelSpec& spec, const MeasuredData& data, std::size_t i,
+                             const PointConditions& c) {
+  const Kinematics<double>& k = data.points[i].kinematics;
+  std::string why;
+  try {
+    const Resultants<double> r = evaluate_model(spec, spec.value.data(), k, c);
+    if (r.vector().allFinite()) return r;
+    why = "the model is not finite there";
+  } catch (const std::invalid_argument& e) {
+    why = std::string("the model cannot be evaluated there (") + e.what() + ")";
+  }
+  throw InvalidArgument(point_location(data, i),
+                        "vx = " + format_value(k.vx) + " m/s, vy = " + format_value(k.vy) +
+                            " m/s, omega = " + format_value(k.omega) + " rad/s",
+                        why + ": check the units of the kinematic columns");
+}
+
 }  // namespace
 
 std::vector<RowPrediction> predict_rows(const ModelSpec& spec, const MeasuredData& data,
@@ -140,12 +160,19 @@ std::vector<RowPrediction> predict_rows(const ModelSpec& spec, const MeasuredDat
   for (std::size_t i = 0; i < data.points.size(); ++i) {
     const MeasuredPoint& p = data.points[i];
     const PointConditions c = conditions_of(spec, p);
-    out[i].wrench = evaluate_model(spec, spec.value.data(), p.kinematics, c);
+    out[i].wrench = wrench_at(spec, data, i, c);
     const std::optional<Eigen::Vector3d> wm = measured_wrench(p, R);
     if (!wm) continue;
     const double speed = scaled_twist(p, R).norm();
     const WrenchMap w{spec, c, speed > 0.0 ? speed : fallback_speed};
-    out[i].twist = motion_of(w, *wm, grid, options.angle_tolerance, &out[i].wrench_misfit_rad);
+    try {
+      out[i].twist = motion_of(w, *wm, grid, options.angle_tolerance, &out[i].wrench_misfit_rad);
+    } catch (const std::invalid_argument& e) {
+      throw InvalidArgument(point_location(data, i), "speed " + format_value(w.speed) + " m/s",
+                            std::string("the model cannot be evaluated at this row's speed in "
+                                        "every direction (") +
+                                e.what() + "): check the units of the kinematic columns");
+    }
   }
   return out;
 }
@@ -178,25 +205,29 @@ PredictionScores score_predictions(const MeasuredData& data,
   return s;
 }
 
-double prediction_error(const MeasuredData& data, const std::vector<Resultants<double>>& model) {
+double prediction_error(const MeasuredData& data, const std::vector<Resultants<double>>& model,
+                        double radius_m) {
   if (model.size() != data.points.size())
     throw InvalidArgument(
         "predictions", std::to_string(model.size()),
         "must be one a row of the data (" + std::to_string(data.points.size()) + ")");
+  require_positive("radius", radius_m);
+  std::array<double, kChannels> ss{}, peak{};
+  std::array<int, kChannels> n{};
+  for (std::size_t i = 0; i < model.size(); ++i)
+    for (int c = 0; c < kChannels; ++c)
+      if (const std::optional<double>& y = data.points[i].force[c]) {
+        ss[c] += std::pow(*y - model[i].vector()(c), 2);
+        peak[c] = std::max(peak[c], std::abs(*y));
+        ++n[c];
+      }
+  const double force = std::max({peak[0], peak[1], peak[2] / radius_m});
   double err2 = 0.0;
   int channels = 0;
   for (int c = 0; c < kChannels; ++c) {
-    double ss = 0.0, peak = 0.0;
-    int n = 0;
-    for (std::size_t i = 0; i < model.size(); ++i) {
-      const std::optional<double>& y = data.points[i].force[c];
-      if (!y) continue;
-      ss += std::pow(*y - model[i].vector()(c), 2);
-      peak = std::max(peak, std::abs(*y));
-      ++n;
-    }
-    if (n == 0 || !(peak > 0.0)) continue;
-    err2 += ss / n / (peak * peak);
+    const double magnitude = std::max(peak[c], 1e-3 * force * (c == 2 ? radius_m : 1.0));
+    if (n[c] == 0 || !(magnitude > 0.0)) continue;
+    err2 += ss[c] / n[c] / (magnitude * magnitude);
     ++channels;
   }
   return channels > 0 ? std::sqrt(err2 / channels) : kNaN;

@@ -399,8 +399,13 @@ std::vector<std::string> fit_warnings(const FitReport& fit) {
 
 std::vector<std::string> shape_cautions(const FitReport& fit) {
   std::vector<std::string> w;
+  // A profile's weight at zero (a pressure that vanishes at the rim, say) or the blend at an
+  // end is an ordinary shape, marked in the table but no caution.
+  const auto ordinary = [](const std::string& name) {
+    return name.rfind("profile_w", 0) == 0 || name == "shape_blend";
+  };
   for (const ParameterEstimate& p : fit.parameters)
-    if (!p.on_bound.empty())
+    if (!p.on_bound.empty() && !ordinary(p.name))
       w.push_back(p.name + " = " + fmt("%.6g", p.value) + " ends on its " + p.on_bound +
                   " bound: " + p.bound_meaning +
                   "; its interval is one-sided, from the bound, and the fit is held there by the "

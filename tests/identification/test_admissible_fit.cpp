@@ -135,3 +135,23 @@ TEST(AdmissibleFit, ALawInadmissibleOnlyJointlyIsHeldOnTheEdge) {
   const FitReport free = fit_fractional_law(diagrams_of(law), open);
   EXPECT_NEAR(free.parameter("a")->value * free.parameter("m")->value, 24.0, 1.5);
 }
+
+// A parametric profile's weight at zero is an ordinary shape (the pressure vanishes at the rim):
+// marked in the table, no caution; a pressure shift on its bound is cautioned with its meaning.
+TEST(AdmissibleFit, AProfileWeightAtZeroIsNoCaution) {
+  FitReport fit;
+  ParameterEstimate w;
+  w.name = "profile_w2";
+  w.on_bound = "lower";
+  w.bound_meaning = bound_meaning(kProfileW2, false);
+  fit.parameters = {w};
+  EXPECT_TRUE(shape_cautions(fit).empty()) << ::testing::PrintToString(shape_cautions(fit));
+  ParameterEstimate k;
+  k.name = "kx";
+  k.value = 0.95;
+  k.on_bound = "upper";
+  k.bound_meaning = bound_meaning(kKx, true);
+  fit.parameters.push_back(k);
+  ASSERT_EQ(shape_cautions(fit).size(), 1u);
+  EXPECT_TRUE(contains(shape_cautions(fit), "kx = 0.95 ends on its upper bound: |k| = 0.95"));
+}

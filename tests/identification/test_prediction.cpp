@@ -199,7 +199,19 @@ TEST(Prediction, TheErrorOnAFitsOwnRowsIsTheFits) {
   const FitReport fit = fit_fractional_law(d, o);
   ASSERT_TRUE(fit.model);
   const std::vector<RowPrediction> p = predict_rows(*fit.model, d);
-  EXPECT_NEAR(prediction_error(d, wrenches_of(p)), fit.error, 1e-9 * fit.error);
+  EXPECT_NEAR(prediction_error(d, wrenches_of(p), kR), fit.error, 1e-9 * fit.error);
+  // A channel measured as zero (Fy of a longitudinal sweep) is scaled by the floor, 1e-3 of the
+  // force scale, as in the fit: a prediction of 1e-3 F there adds an error of 1/sqrt(3).
+  MeasuredData zero = d;
+  std::vector<Resultants<double>> exact;
+  double force = 0.0;
+  for (MeasuredPoint& q : zero.points) {
+    force = std::max({force, std::abs(*q.force[0]), std::abs(*q.force[2]) / kR});
+    q.force[1] = 0.0;
+  }
+  for (const MeasuredPoint& q : zero.points)
+    exact.push_back({*q.force[0], 1e-3 * force, *q.force[2]});
+  EXPECT_NEAR(prediction_error(zero, exact, kR), 1.0 / std::sqrt(3.0), 1e-12);
   EXPECT_THROW(predict_rows(*fit.model, d, {5, 1e-7}), InvalidArgument);
   EXPECT_THROW(score_predictions(d, {}, kR), InvalidArgument);
   const std::string csv = predictions_csv(d, p);

@@ -67,8 +67,12 @@ PredictionScores score_predictions(const MeasuredData& data,
 
 /// The fit's error measure (FitReport::error) of predictions `model` (one a row) on the rows of
 /// `data`: the root mean square over the measured channels of (the channel's rms residual / its
-/// largest |value| in these rows). NaN when no channel is measured.
-double prediction_error(const MeasuredData& data, const std::vector<Resultants<double>>& model);
+/// magnitude), the magnitude its largest |value| in these rows but at least 1e-3 of the rows'
+/// force scale (the largest |Fx|, |Fy|, |Mz| / R; times R for Mz), as the fit's: a channel
+/// measured near zero (Fx of a lateral sweep) does not blow the measure up. R = radius_m [m].
+/// NaN when no channel is measured.
+double prediction_error(const MeasuredData& data, const std::vector<Resultants<double>>& model,
+                        double radius_m);
 
 /// The wrenches of predictions (RowPrediction::wrench), one a row.
 std::vector<Resultants<double>> wrenches_of(const std::vector<RowPrediction>& predictions);

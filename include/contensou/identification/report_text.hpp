@@ -25,7 +25,8 @@ inline constexpr int kFewDegreesOfFreedomPerScale = 10;
 std::vector<std::string> fit_warnings(const FitReport& fit);
 
 /// What makes a fit physically doubtful, for the report's first lines (empty if nothing):
-/// each parameter that ends on a bound of the fit, with what the bound means, and a law whose
+/// each parameter that ends on a bound of the fit (but a profile weight at zero or the blend at
+/// an end, ordinary shapes), with what the bound means, and a law whose
 /// a, m and M0 / (F0 R) no non-negative pressure on the patch gives (admissible_shape.hpp).
 std::vector<std::string> shape_cautions(const FitReport& fit);
 
