@@ -55,6 +55,33 @@ def meridian(report: Path, work: Path, direction_deg: float,
     return np.hypot(w[:, 0], w[:, 1]), np.abs(w[:, 2]) / bm.RADIUS_M
 
 
+def patch_meridian(report: Path, direction_deg: float,
+                   speed: float) -> tuple[np.ndarray, np.ndarray] | None:
+    """The rigid patch of the motion (the report's model.motion_patch; None without one): its |F|
+    and |Mz| / R [N] along the meridian of meridian(), from its exact integrals (the Python
+    package: p = rho^n as the exact Chebyshev series in rho^2 that power_profile holds)."""
+    import json
+
+    import contensou as c
+
+    patch = json.loads(report.read_text()).get("model", {}).get("motion_patch")
+    if not patch:
+        return None
+    n = int(patch["exponent"])
+    rho = np.sqrt(np.linspace(0.0, 1.0, 2 * n + 8))
+    profile = c.smoothed_profile(list(rho), list(rho ** n), n // 2 + 1)[0]
+    profile.kx, profile.ky = patch["kx"], patch["ky"]
+    a = patch["contact_radius_ratio"] * patch["radius_m"]
+    surface = c.LimitSurface(c.ContactPatch.from_normal_load(a, patch["force_scale_N"], profile,
+                                                             1.0), 1e-8)
+    theta = np.radians(np.linspace(0.5, 89.5, 90))
+    phi = np.radians(direction_deg)
+    w = np.array([-np.asarray(surface.dissipation_with_derivatives(
+        [speed * np.cos(t) * np.cos(phi), speed * np.cos(t) * np.sin(phi),
+         speed * np.sin(t) / bm.RADIUS_M]).gradient) for t in theta])
+    return np.hypot(w[:, 0], w[:, 1]), np.abs(w[:, 2]) / bm.RADIUS_M
+
+
 def save(fig, path: Path) -> Path:
     path.parent.mkdir(parents=True, exist_ok=True)
     fd, tmp = tempfile.mkstemp(dir=path.parent, prefix=f".{path.stem}.", suffix=".png")
@@ -67,8 +94,8 @@ def save(fig, path: Path) -> Path:
 
 
 def limit_surfaces(diagrams: dict, work: Path, path: Path) -> Path:
-    """Each set: measured (|F|, |Mz| / R), the identified model's meridians in four sliding
-    directions, and the limit surface of a ring of pressure at the rim scaled to the model's own
+    """Each set: measured (|F|, |Mz| / R), the identified law's meridians in four sliding
+    directions, the rigid patch's that gives the motion from the force, and the limit surface of a ring of pressure at the rim scaled to the model's own
     sliding force (its meridian's end at pure sliding): the support function of a centred
     patch, a mixture of rings of radius up to R, is at most the rim ring's, so every centred
     patch with that sliding force lies inside the dashed curve."""
@@ -84,7 +111,11 @@ def limit_surfaces(diagrams: dict, work: Path, path: Path) -> Path:
         for k, direction in enumerate((0, 90, 180, 270)):
             f, m = meridian(report, work / "whole", direction, speed)
             sliding.append(f[0])
-            ax.plot(f, m, color="C0", lw=1.4, label="identified model (4 directions)" if k == 0 else None)
+            ax.plot(f, m, color="C0", lw=1.4, label="identified law (4 directions)" if k == 0 else None)
+            pm = patch_meridian(report, direction, speed)
+            if pm is not None:
+                ax.plot(pm[0], pm[1], color="C2", lw=1.2,
+                        label="rigid patch of the motion" if k == 0 else None)
         scale = float(np.mean(sliding))
         ax.plot(scale * P, scale * Q, color="C3", ls="--", lw=1.2,
                 label="rim ring, same sliding force")

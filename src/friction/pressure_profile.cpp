@@ -336,6 +336,32 @@ PressureProfile tabulated_profile(std::vector<double> rho, std::vector<double> p
   return out;
 }
 
+PressureProfile power_profile(int n) {
+  if (n < 0 || n > kMaxPowerProfileExponent || n % 2 != 0)
+    throw InvalidArgument(
+        "n", std::to_string(n),
+        "must be an even exponent in [0, " + std::to_string(kMaxPowerProfileExponent) + "]");
+  // t^k in z = 2 t - 1: k times c <- c (1 + z) / 2, with z T_0 = T_1 and
+  // z T_j = (T_(j+1) + T_(j-1)) / 2 (j >= 1).
+  std::vector<double> c{1.0};
+  for (int k = 0; k < n / 2; ++k) {
+    std::vector<double> next(c.size() + 1, 0.0);
+    for (std::size_t j = 0; j < c.size(); ++j) {
+      next[j] += 0.5 * c[j];
+      if (j == 0) {
+        next[1] += 0.5 * c[0];
+      } else {
+        next[j + 1] += 0.25 * c[j];
+        next[j - 1] += 0.25 * c[j];
+      }
+    }
+    c = std::move(next);
+  }
+  PressureProfile p;
+  p.shape = ChebyshevShape{std::move(c)};
+  return p;
+}
+
 PressureProfile seed_tire_profile() {
   PressureProfile p =
       cosine_series_profile(0.848, {0.685, 0.398, -0.831, 0.230, 0.161, -0.027, -0.133, 0.101});

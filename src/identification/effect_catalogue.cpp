@@ -39,6 +39,19 @@ constexpr std::array<EffectDescriptor, kEffects> kCatalogue = {{
     {E::pressure_shift_y, "pressure_shift_y", "lateral pressure shift ky (camber, asymmetric load)",
      "ky = 0", "the pressure centre is shifted sideways",
      "pure-spin rows in both spin directions (Fx from ky changes sign with omega)"},
+    {E::centre_offset, "centre_offset",
+     "the patch's centre at x_c (or y_c) = R centre_x off the body's centre, where the torque is "
+     "taken: the patch slides with v + omega z x c and adds x_c Fy - y_c Fx to Mz (a body that "
+     "touches off its centre: the physical alternative to a torque offset or crosstalk)",
+     "centre_x = 0", "the contact's centre is off the body's centre along {}",
+     "a static load at a known point with no motion (the torque sensor's calibration), or pure "
+     "spin (v = 0): an off-centre patch slides there and shows a force, an offset does not"},
+    {E::contact_radius, "contact_radius",
+     "the contact a centred disk of radius c_R R, c_R in [0.1, 1] (the given radius an upper "
+     "bound): spin enters as omega c_R R, the torque scales with c_R",
+     "c_R = 1", "the contact is smaller than the body (it touches within a smaller radius)",
+     "rows across psi = omega R / |v| from 0.1 to 10 (where the spin weakens the sliding force "
+     "tells the contact's size), or a print of the contact"},
     {E::speed_dependence, "speed_dependence",
      "f(w) = f (1 - beta (1 - e^(-w/w_s))) at the local slip speed w inside the exact integrals "
      "(`--effective-speed`: outside them, at the effective slip speed w = (v^2 + (2u/3)^2)^(1/2)); "

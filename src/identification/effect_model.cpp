@@ -41,7 +41,10 @@ constexpr ParameterInfo kInfo[kModelParameters] = {{"F0_N", "N", 0.0},
                                                    {"friction_b1_2", "1", 0.0},
                                                    {"friction_b2_2", "1", 0.0},
                                                    {"friction_b1_3", "1", 0.0},
-                                                   {"friction_b2_3", "1", 0.0}};
+                                                   {"friction_b2_3", "1", 0.0},
+                                                   {"centre_x", "1", 0.0},
+                                                   {"centre_y", "1", 0.0},
+                                                   {"contact_ratio", "1", 1.0}};
 }  // namespace
 
 const ParameterInfo& parameter_info(int index) {
@@ -58,6 +61,10 @@ int parameter_index_by_name(const std::string& name) {
 
 ParameterBounds parameter_bounds(int index) {
   constexpr double inf = std::numeric_limits<double>::infinity();
+  if (index >= kDependence1 && index <= kDependence3Curve)  // b1, b2 of each slot in turn
+    return (index - kDependence1) % 2 == 0 ? ParameterBounds{-0.8, 0.8}
+                                           // with |b2| <= 0.19: the factor stays above
+                                           : ParameterBounds{-0.19, 0.19};  // 0.01 for |z| <= 1
   switch (index) {
     case kF0:
     case kM0:
@@ -82,18 +89,15 @@ ParameterBounds parameter_bounds(int index) {
       return {-0.95, 0.95};
     case kShapeBlend:
       return {0.0, 1.0};
+    case kCentreX:
+    case kCentreY:
+      return {-0.9, 0.9};  // the patch's centre inside the body
+    case kContactRatio:
+      return {0.1, 1.0};  // the given radius an upper bound
     case kSlipAngleOffset:
       return {-0.2, 0.2};  // 11 degrees: beyond, a rig is not misaligned but mislabelled
     case kPatchGrowth:
       return {-0.5, 2.0};
-    case kDependence1:
-    case kDependence2:
-    case kDependence3:
-      return {-0.8, 0.8};  // with |b2| <= 0.19: the factor stays above 0.01 for |z| <= 1
-    case kDependence1Curve:
-    case kDependence2Curve:
-    case kDependence3Curve:
-      return {-0.19, 0.19};
     default:
       return {-inf, inf};
   }
@@ -136,6 +140,14 @@ const char* bound_meaning(int index, bool upper) {
              "rest, extrapolated below every row";
     case kSlipAngleOffset:
       return "|delta| = 0.2 rad (11 degrees): beyond a rig's misalignment";
+    case kCentreX:
+    case kCentreY:
+      return "the patch's centre 0.9 R off the body's: at the edge of the body, no rigid "
+             "patch's; another effect is being absorbed";
+    case kContactRatio:
+      return upper ? "the contact as large as the body: the given radius"
+                   : "a contact of a tenth of the body's radius: the torque carries no patch's "
+                     "size";
     case kShapeBlend:
     case kProfileW1:
     case kProfileW2:

@@ -131,7 +131,7 @@ void weighted_jacobian(const MeasuredData& data, const ModelSpec& spec,
   for (int i = 0; i < K; ++i)
     if (spec.free[i] || spec.value[i] != parameter_info(i).null_value || i <= kKx ||
         (i >= kKy && i <= kXMzFy) || i == kShapeBlend ||
-        (i >= kSlipAngleOffset && i <= kFrictionScale))
+        (i >= kSlipAngleOffset && i <= kFrictionScale) || i >= kCentreX)
       active.push_back(i);
   std::vector<double> packed(active.size());
   for (std::size_t j = 0; j < active.size(); ++j) packed[j] = theta[active[j]];

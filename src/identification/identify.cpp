@@ -4,7 +4,9 @@
 #include <cmath>
 #include <random>
 
+#include "contensou/friction/error.hpp"
 #include "contensou/identification/prediction.hpp"
+#include "contensou/identification/rigid_patch.hpp"
 #include "contensou/identification/sweeps.hpp"
 
 namespace contensou {
@@ -186,6 +188,26 @@ void resample_the_loop(const IdentifyOptions& o, Identification& r) {
   r.loop->stability = std::move(stability);
 }
 
+// The rigid patch of the motion on the fitted rows, attached to the model reported (none on
+// data without three rows that carry all three channels, motion and force).
+void attach_motion_patch(const IdentifyOptions& o, Identification& r) {
+  FitReport& final_fit = r.loop ? r.loop->final_fit : r.fit;
+  if (!final_fit.model) return;
+  int pairs = 0;
+  for (const MeasuredPoint& p : r.fitted.points)
+    pairs += p.force[0] && p.force[1] && p.force[2] &&
+             (p.kinematics.vx != 0.0 || p.kinematics.vy != 0.0 || p.kinematics.omega != 0.0);
+  if (pairs < 3) return;
+  try {
+    auto model = std::make_shared<ModelSpec>(*final_fit.model);
+    model->motion_patch = fit_rigid_patch(r.fitted, o.fit.radius_m);
+    final_fit.model = std::move(model);
+  } catch (const InvalidArgument&) {
+    // Forces that do not oppose the motion on the whole: no patch gives them, none is attached
+    // (the law's own inversion remains).
+  }
+}
+
 }  // namespace
 
 Identification identify(const MeasuredData& data, const IdentifyOptions& options) {
@@ -227,6 +249,7 @@ Identification identify(const MeasuredData& data, const IdentifyOptions& options
     r.fit = fit_fractional_law(r.fitted, options.fit);
     r.fit.trace = trace_residual(r.fitted, r.fit, options.fit.radius_m, covariates_of(r.fitted));
   }
+  if (options.motion_patch) attach_motion_patch(options, r);
   return r;
 }
 

@@ -95,6 +95,18 @@ void conditions_catalogue(const MeasuredData& data, const ModelSpec& s,
                      s.dependence[j]});
 }
 
+// The contact's own geometry, the physical alternatives to the rig's torque effects: its centre
+// off the body's (with a torque channel) and a contact smaller than the body (with spin too).
+void contact_catalogue(const MeasuredData& data, const ModelSpec& s, std::vector<Candidate>& out) {
+  if (data.count(2) == 0) return;
+  if (!s.free[kCentreX]) out.push_back({Effect::centre_offset, "x", {kCentreX}, kCentreX});
+  if (!s.free[kCentreY]) out.push_back({Effect::centre_offset, "y", {kCentreY}, kCentreY});
+  const bool spin = std::any_of(data.points.begin(), data.points.end(),
+                                [](const MeasuredPoint& p) { return p.kinematics.omega != 0.0; });
+  if (spin && !s.free[kContactRatio])
+    out.push_back({Effect::contact_radius, "", {kContactRatio}, kContactRatio});
+}
+
 }  // namespace
 
 namespace detail {
@@ -128,6 +140,7 @@ std::vector<Candidate> catalogue(const MeasuredData& data, const ModelSpec& s,
                      crosstalk_parameter(c, d)});
     }
   }
+  contact_catalogue(data, s, out);
   conditions_catalogue(data, s, covariates, out);
   return out;
 }
@@ -225,6 +238,10 @@ std::string separating_measurement(const Candidate& a, const Candidate& b,
   if (either(Effect::channel_offset))
     return "rows at rest (v = omega = 0) and sweeps with both signs of v and omega separate them: "
            "an offset does not change sign with the motion";
+  if (either(Effect::centre_offset))
+    return "pure spin (v = 0) in both senses, or a static load at a known point, separates them: "
+           "a patch off the centre slides under pure spin and pushes back, a rig's effect does "
+           "not";
   if (either(Effect::speed_dependence))
     return "a second sweep at another spin speed u = |omega| R separates them: the slip speed "
            "changes, the ratio psi does not";

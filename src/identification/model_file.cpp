@@ -1,6 +1,7 @@
 // The identified model as JSON and back (model_file.hpp).
 #include "contensou/identification/model_file.hpp"
 
+#include <cmath>
 #include <nlohmann/json.hpp>
 
 #include "contensou/friction/error.hpp"
@@ -64,6 +65,18 @@ Json dependence_json(const ModelSpec& spec) {
   return out;
 }
 
+Json patch_json(const std::optional<RigidPatch>& p) {
+  if (!p) return Json();
+  return {{"radius_m", p->radius_m},
+          {"contact_radius_ratio", p->contact_radius_ratio},
+          {"exponent", p->exponent},
+          {"kx", p->kx},
+          {"ky", p->ky},
+          {"force_scale_N", p->force_scale_n},
+          {"median_angle_deg", p->median_angle_deg},
+          {"rows", p->rows}};
+}
+
 }  // namespace
 
 std::string model_to_json(const ModelSpec& s, int indent) {
@@ -88,6 +101,7 @@ std::string model_to_json(const ModelSpec& s, int indent) {
   for (int i = 0; i < kModelParameters; ++i) params[parameter_info(i).name] = s.value[i];
   j["parameters"] = params;
   j["dependence"] = dependence_json(s);
+  j["motion_patch"] = patch_json(s.motion_patch);
   return j.dump(indent, ' ', false, Json::error_handler_t::replace);
 }
 
@@ -199,6 +213,32 @@ void attach_profile(ModelSpec& s, const PressureProfile& shape) {
   s.exact_laws = std::make_shared<ExactLawCache>(s.radius_m, s.profile_model, s.exact_tolerance);
 }
 
+// The rigid patch of the motion (absent or null: none), validated (rigid_patch.hpp).
+std::optional<RigidPatch> read_patch(const Reader& r, const Json& j) {
+  if (!j.contains("motion_patch") || j.at("motion_patch").is_null()) return std::nullopt;
+  const Json& m = j.at("motion_patch");
+  RigidPatch p;
+  p.radius_m = r.number(m, "radius_m", "motion_patch.");
+  p.contact_radius_ratio = r.number(m, "contact_radius_ratio", "motion_patch.");
+  const double n = r.number(m, "exponent", "motion_patch.");
+  if (!(n >= 0.0 && n <= kMaxPowerProfileExponent) || n != std::floor(n))
+    throw InvalidArgument(
+        r.source() + ": motion_patch.exponent", format_value(n),
+        "must be an even integer in [0, " + std::to_string(kMaxPowerProfileExponent) + "]");
+  p.exponent = static_cast<int>(n);
+  p.kx = r.number(m, "kx", "motion_patch.");
+  p.ky = r.number(m, "ky", "motion_patch.");
+  p.force_scale_n = r.number(m, "force_scale_N", "motion_patch.");
+  p.median_angle_deg = m.value("median_angle_deg", 0.0);
+  p.rows = m.value("rows", 0);
+  try {
+    validate(p);
+  } catch (const InvalidArgument& e) {
+    throw InvalidArgument(r.source() + ": motion_patch", "invalid", e.what());
+  }
+  return p;
+}
+
 }  // namespace
 
 ModelSpec model_from_json(const std::string& text, const std::string& source) {
@@ -245,6 +285,7 @@ ModelSpec model_from_json(const std::string& text, const std::string& source) {
   for (int slot = 0;
        slot < kDependenceSlots && dep.is_array() && slot < static_cast<int>(dep.size()); ++slot)
     s.dependence[slot] = read_covariate(r, dep.at(slot));
+  s.motion_patch = read_patch(r, j);
   return s;
 }
 

@@ -143,6 +143,22 @@ Resultants<double> wrench_at(const ModelSpec& spec, const MeasuredData& data, st
                         why + ": check the units of the kinematic columns");
 }
 
+// The motion a measured scaled wrench ws causes on the rigid patch's surface, and the angle
+// left between the patch's wrench there and the measured one.
+RowPrediction patch_motion(const LimitSurface& surface, double R, const Eigen::Vector3d& ws,
+                           const Resultants<double>& model_wrench) {
+  RowPrediction out;
+  out.wrench = model_wrench;
+  const Eigen::Vector3d w(ws.x(), ws.y(), ws.z() * R);
+  out.twist = rigid_patch_motion(surface, R, w);
+  if (!out.twist.allFinite()) return out;
+  const Eigen::Vector3d back =
+      rigid_patch_wrench(surface, Eigen::Vector3d(out.twist.x(), out.twist.y(), out.twist.z() / R));
+  const Eigen::Vector3d bs(back.x(), back.y(), back.z() / R);
+  out.wrench_misfit_rad = std::atan2(bs.cross(ws).norm(), bs.dot(ws));
+  return out;
+}
+
 }  // namespace
 
 std::vector<RowPrediction> predict_rows(const ModelSpec& spec, const MeasuredData& data,
@@ -155,6 +171,10 @@ std::vector<RowPrediction> predict_rows(const ModelSpec& spec, const MeasuredDat
                           "must lie in (0, 0.1) rad");
   const double R = spec.radius_m;
   const std::vector<Eigen::Vector3d> grid = fibonacci_sphere(options.grid_directions);
+  // The motion from the force: the rigid patch's limit surface when the model carries one.
+  const std::optional<LimitSurface> patch =
+      spec.motion_patch ? std::optional<LimitSurface>(limit_surface_of(*spec.motion_patch))
+                        : std::nullopt;
   const double fallback_speed = typical_speed(data, R);
   std::vector<RowPrediction> out(data.points.size());
   for (std::size_t i = 0; i < data.points.size(); ++i) {
@@ -163,6 +183,10 @@ std::vector<RowPrediction> predict_rows(const ModelSpec& spec, const MeasuredDat
     out[i].wrench = wrench_at(spec, data, i, c);
     const std::optional<Eigen::Vector3d> wm = measured_wrench(p, R);
     if (!wm) continue;
+    if (patch) {
+      out[i] = patch_motion(*patch, R, *wm, out[i].wrench);
+      continue;
+    }
     const double speed = scaled_twist(p, R).norm();
     const WrenchMap w{spec, c, speed > 0.0 ? speed : fallback_speed};
     try {

@@ -431,6 +431,15 @@ std::string cautions_text(const std::string& which, const FitReport& fit) {
   return s;
 }
 
+// The rigid patch that gives the motion from the force, when the model carries one.
+std::string motion_patch_text(const FitReport& fit) {
+  if (!fit.model || !fit.model->motion_patch) return "";
+  return "\nthe motion from the force (predict): the normal of the limit surface of a rigid "
+         "Coulomb patch chosen by the measured directions (a non-negative pressure, so its "
+         "surface exists; the force from the motion stays the law's): " +
+         rigid_patch_text(*fit.model->motion_patch) + "\n";
+}
+
 }  // namespace
 
 std::string fit_report_text(const ReportInput& input, const FitReport& fit) {
@@ -450,7 +459,7 @@ std::string fit_report_text(const ReportInput& input, const FitReport& fit) {
 
 std::string fit_report_text_with_cautions(const ReportInput& input, const FitReport& fit) {
   std::string s = cautions_text("the law", fit) + data_checks_text(input.checks) + "\n" +
-                  fit_report_text(input, fit);
+                  fit_report_text(input, fit) + motion_patch_text(fit);
   for (const HeldOutResult& h : input.held_out) s += held_out_text(h);
   return s;
 }
@@ -483,7 +492,7 @@ std::string loop_report_text(const ReportInput& input, const ClosedLoopReport& l
     s += std::string("\nfinal model (") +
          (loop.final_spec.uses_exact() ? "exact integrals over the profile" : "fractional law") +
          "):\n" + fit_report_text(input, loop.final_fit);
-  s += stability_text(loop);
+  s += stability_text(loop) + motion_patch_text(loop.final_fit);
   s += "\nin plain words: " + loop_summary(loop) + "\n";
   for (const HeldOutResult& h : input.held_out) s += held_out_text(h);
   return s;

@@ -416,3 +416,16 @@ TEST(Patch, DefaultConstructedIsInvalidUntilSet) {
   EXPECT_EQ(seed.friction, 0.3);
   EXPECT_NEAR(seed.normal_load(), 4535.0, 1.0);
 }
+
+// rho^n against its closed forms: the values (pow) and the moments 1/(n + j + 1).
+TEST(Profiles, PowerProfileIsRhoToTheNWithItsMoments) {
+  for (int n : {0, 2, 4, 16, 64, 256}) {
+    const contensou::PressureProfile p = contensou::power_profile(n);
+    for (double rho : {0.0, 0.3, 0.7, 0.95, 1.0})
+      EXPECT_NEAR(contensou::shape_value(p, rho), std::pow(rho, n), 1e-13) << n << " " << rho;
+    for (int j : {1, 2, 3})
+      EXPECT_NEAR(contensou::moment(p, j), 1.0 / (n + j + 1), 1e-13 / (n + j + 1)) << n << j;
+  }
+  for (int bad : {-2, 3, 258})
+    EXPECT_THROW(contensou::power_profile(bad), contensou::InvalidArgument) << bad;
+}

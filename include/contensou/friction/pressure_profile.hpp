@@ -81,6 +81,14 @@ PressureProfile hertz_profile();
 /// p = sum_k a_k cos(pi k w rho), no shift. Throws InvalidArgument for a non-finite or
 /// non-positive w, or an empty or non-finite a.
 PressureProfile cosine_series_profile(double w, std::vector<double> a);
+/// The largest exponent power_profile takes: rho^256 already puts 90 % of the load beyond
+/// rho = 0.99 (a ring at the rim), and its series has 129 terms.
+inline constexpr int kMaxPowerProfileExponent = 256;
+/// p = rho^n for an even n in [0, kMaxPowerProfileExponent], no shift: the radial power law, from
+/// uniform (n = 0) to a ring at the rim (n large), with moments A^j = 1/(n + j + 1). Held
+/// exactly as the Chebyshev series of t^(n/2) in t = rho^2 (n/2 + 1 terms; a polynomial, so no
+/// representation error). Throws InvalidArgument for an odd or out-of-range n.
+PressureProfile power_profile(int n);
 /// Validates rho (strictly increasing, from the centre, 0, to the rim, 1, knots at least
 /// kMinProfileKnotStep apart, 2 to kMaxProfilePoints points; a first rho within 1e-9 of 0 is
 /// the centre and a last within 1e-9 of 1 the rim) and p (finite, with an interpolant that

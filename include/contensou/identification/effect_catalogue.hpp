@@ -17,6 +17,8 @@ enum class Effect {
   profile_correction,         ///< the given profile times a quadratic in rho^2
   anisotropy,                 ///< lateral friction kappa f, kappa != 1
   pressure_shift_y,           ///< lateral pressure shift ky
+  centre_offset,              ///< the patch's centre off the body's, x_c or y_c
+  contact_radius,             ///< a contact smaller than the body, radius c_R R, c_R < 1
   speed_dependence,           ///< friction falling with the slip speed, f(w)
   channel_offset,             ///< a constant in one measured channel
   channel_crosstalk,          ///< one channel picks up a share of another
@@ -28,7 +30,7 @@ enum class Effect {
   noise_growth,               ///< the noise grows with the value, sigma = a + b |y|
 };
 /// The number of effects (enumerators of Effect).
-inline constexpr int kEffects = 14;
+inline constexpr int kEffects = 16;
 
 /// One entry of the catalogue: an effect and its texts.
 struct EffectDescriptor {

@@ -17,7 +17,11 @@
 /// over the data (T1(z) = z, T2(z) = 2 z^2 - 1; s = 1, a fixed scale whose derivative gives
 /// the score of any X);
 /// at the rig's kinematics: vy + vx tan(delta) (a slip-angle offset delta of the rig) and
-/// omega + omega_0 (a spin offset).
+/// omega + omega_0 (a spin offset); on a patch whose centre sits at c = (x_c, y_c) = R (centre_x,
+/// centre_y) off the body's (its sliding velocity v + omega z x c, its torque about the body's
+/// centre Mz + x_c Fy - y_c Fx) and whose radius is c_R R (contact_ratio c_R <= 1: the given
+/// radius an upper bound; spin enters as omega c_R R and the torque scales with c_R, as the
+/// patch's growth's R_i).
 /// Friction falling with slip speed: f(w) = f (1 - beta (1 - exp(-w / w_s))) (beta = 0: none);
 /// at the effective speed w_eff = (v^2 + (2u/3)^2)^(1/2) (the mean local slip speed of a
 /// spinning uniform patch), or, with speed_in_exact, at the local slip speed w inside the
@@ -39,6 +43,7 @@
 #include "contensou/friction/pressure_profile.hpp"
 #include "contensou/identification/exact_law_cache.hpp"
 #include "contensou/identification/measured_data.hpp"
+#include "contensou/identification/rigid_patch.hpp"
 
 namespace contensou {
 
@@ -78,6 +83,9 @@ enum ModelParameter : int {
   kDependence2Curve,  ///< friction_b2_2: b2 of the second slot (null 0)
   kDependence3,       ///< friction_b1_3: b1 of the third slot (null 0)
   kDependence3Curve,  ///< friction_b2_3: b2 of the third slot (null 0)
+  kCentreX,           ///< centre_x: the patch's centre off the body's, x_c / R (null 0)
+  kCentreY,           ///< centre_y: the same along y, y_c / R (null 0)
+  kContactRatio,      ///< contact_ratio: the contact's radius over the body's, c (null 1)
   kModelParameters    ///< the number of parameters
 };
 
@@ -193,6 +201,10 @@ struct ModelSpec {
   /// Derivatives with respect to the rig's kinematics and the patch's growth are wanted at their
   /// null values too (the score test's Jacobian): the kinematics are differentiated always.
   bool differentiate_kinematics = false;
+  /// The rigid patch that gives the motion from the force (rigid_patch.hpp: a limit surface
+  /// that exists by construction, which the fitted law need not have); unset: the law's own
+  /// inversion (prediction.hpp). The force from the motion is the law's either way.
+  std::optional<RigidPatch> motion_patch;
 
   /// Whether the exact integrals take part: exact_only, or the shape blend free or non-zero.
   bool uses_exact() const { return exact_only || free[kShapeBlend] || value[kShapeBlend] != 0.0; }

@@ -163,9 +163,10 @@ Resultants<T> friction_part(const ModelSpec& s, const T* th, const Kinematics<K>
 // Whether the rig's kinematics or the patch's growth take part (else the measured kinematics
 // are used as doubles: the model's cost without them).
 inline bool kinematics_vary(const ModelSpec& s, const PointConditions& c) {
-  return s.differentiate_kinematics || s.free[kSlipAngleOffset] ||
-         s.value[kSlipAngleOffset] != 0.0 || s.free[kSpinOffset] || s.value[kSpinOffset] != 0.0 ||
-         (c.load_ratio != 1.0 && (s.free[kPatchGrowth] || s.value[kPatchGrowth] != 0.0));
+  const auto used = [&](int i) { return s.free[i] || s.value[i] != parameter_info(i).null_value; };
+  return s.differentiate_kinematics || used(kSlipAngleOffset) || used(kSpinOffset) ||
+         used(kCentreX) || used(kCentreY) || used(kContactRatio) ||
+         (c.load_ratio != 1.0 && used(kPatchGrowth));
 }
 
 }  // namespace detail
@@ -181,11 +182,16 @@ Resultants<T> evaluate_model(const ModelSpec& s, const T* th, const Kinematics<d
     y = detail::friction_part(s, th, k, phi, T(1.0));
   } else {
     // The rig's kinematics: vy + vx tan(delta), omega + omega_0; the patch R g with
-    // g = rho^q, so u = omega R g and the torque arm scales with g.
-    const T g = c.load_ratio == 1.0 ? T(1.0) : pow(T(c.load_ratio), th[kPatchGrowth]);
-    const Kinematics<T> kt{T(k.vx), T(k.vy) + T(k.vx) * tan(th[kSlipAngleOffset]),
-                           (T(k.omega) + th[kSpinOffset]) * g};
+    // g = c_R rho^q, so u = omega R g and the torque arm scales with g; its centre at
+    // (x_c, y_c): sliding v + omega z x c there, torque Mz + x_c Fy - y_c Fx about the body's.
+    const T g =
+        (c.load_ratio == 1.0 ? T(1.0) : pow(T(c.load_ratio), th[kPatchGrowth])) * th[kContactRatio];
+    const T omega = T(k.omega) + th[kSpinOffset];
+    const T xc = th[kCentreX] * s.radius_m, yc = th[kCentreY] * s.radius_m;
+    const Kinematics<T> kt{T(k.vx) - omega * yc,
+                           T(k.vy) + T(k.vx) * tan(th[kSlipAngleOffset]) + omega * xc, omega * g};
     y = detail::friction_part(s, th, kt, phi, g);
+    y.Mz += xc * y.Fy - yc * y.Fx;
   }
   // Rig: offsets and crosstalk.
   const T base[3] = {y.Fx, y.Fy, y.Mz};

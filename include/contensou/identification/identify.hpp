@@ -28,6 +28,10 @@ struct IdentifyOptions {
   /// random) the loop is run again on; an effect accepted in fewer than kStableShare of them is
   /// unstable, reported as such and left out (the loop run once more without it). 0: none.
   int resamples = 0;
+  /// Identify the rigid patch that gives the motion from the force (rigid_patch.hpp) on the
+  /// fitted rows with all three channels, and attach it to the final model (its
+  /// ModelSpec::motion_patch). Skipped, without a word, on data with fewer than 3 such rows.
+  bool motion_patch = true;
 };
 
 /// The result of identify(): the gross errors left out, the data fitted and the fits.

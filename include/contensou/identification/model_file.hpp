@@ -14,7 +14,14 @@
 ///    "exact_tolerance": 1e-6, "regularization_speed_mps": 1e-6,
 ///    "parameters": {"F0_N": 2.6, "a": 1.1, ...every parameter of effect_model.hpp...},
 ///    "dependence": [null | {"kind": "load" | "time" | "order" | "recorded", "name": "T",
-///                           "unit": "K", "mid": 300, "half_range": 10}, ...]}
+///                           "unit": "K", "mid": 300, "half_range": 10}, ...],
+///    "motion_patch": null | {"radius_m": 0.0525, "contact_radius_ratio": 1, "exponent": 2,
+///                            "kx": 0.2, "ky": 0, "force_scale_N": 2.46,
+///                            "median_angle_deg": 16.4, "rows": 300}}
+/// ~~~
+/// (motion_patch: the rigid patch of the motion from the force, rigid_patch.hpp; a file without
+/// the member, as earlier versions wrote, has none)
+/// ~~~
 /// ~~~
 #pragma once
 
