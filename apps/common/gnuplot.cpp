@@ -145,6 +145,7 @@ bool run_gnuplot(const OutputDir& out, const std::string& name, const std::strin
     std::error_code ec;
     const bool whole = ok && picture_is_whole(dir + "/" + tmp, final_name);
     if (ok && !whole && incomplete.empty()) incomplete = dir + "/" + final_name;
+    if (whole) out.intend(final_name);  // journalled before the rename: a kill leaves it ours
     if (whole) std::filesystem::rename(dir + "/" + tmp, dir + "/" + final_name, ec);
     if (whole && !ec) out.record(final_name);
     if (!whole || ec) {

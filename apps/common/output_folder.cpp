@@ -11,6 +11,7 @@
 #include <filesystem>
 #include <fstream>
 #include <optional>
+#include <set>
 #include <sstream>
 #include <stdexcept>
 
@@ -47,15 +48,24 @@ bool escapes(const std::string& relative) {
 }
 
 // A manifest's or journal's entries: "SIZE MTIME_NS PATH" for a file, "folder PATH" for a
-// folder, after comment lines; entries that would leave the folder are ignored.
-void read_entries(const std::string& path, std::map<std::string, Entry>& entries) {
-  std::ifstream in(path);
+// folder, "pending PATH" for a file about to be renamed into place (a journal's: the run may have
+// been killed after the rename, before the file's own line), after comment lines; entries that
+// would leave the folder are ignored. A pending file that is there and has no line of its own is
+// recovered: recorded with its stamp now (the lock says no run is writing it).
+void read_entries(const std::string& dir, const std::string& name,
+                  std::map<std::string, Entry>& entries) {
+  std::ifstream in(dir + "/" + name);
+  std::set<std::string> pending;
   std::string line;
   while (std::getline(in, line)) {
     if (line.empty() || line[0] == '#') continue;
     std::istringstream fields(line);
     Entry e;
     std::string relative;
+    if (line.rfind("pending ", 0) == 0) {
+      if (!escapes(line.substr(8))) pending.insert(line.substr(8));
+      continue;
+    }
     if (line.rfind("folder ", 0) == 0) {
       relative = line.substr(7);
     } else if (fields >> e.size >> e.mtime_ns) {
@@ -63,8 +73,13 @@ void read_entries(const std::string& path, std::map<std::string, Entry>& entries
     } else {
       continue;
     }
-    if (!escapes(relative)) entries[relative] = e;
+    if (!escapes(relative)) {
+      entries[relative] = e;
+      pending.erase(relative);
+    }
   }
+  for (const std::string& relative : pending)
+    if (const std::optional<Entry> now = stamp_of(dir + "/" + relative)) entries[relative] = *now;
 }
 
 std::string entry_line(const std::string& relative, const Entry& e) {
@@ -174,8 +189,8 @@ OutputFolder::OutputFolder(const std::string& dir) : dir_(dir) {
     throw std::runtime_error(dir + ": cannot create the output folder (" + ec.message() + ")");
   // Under the lock: read what earlier runs recorded, check the folder holds nothing else.
   lock_fd_ = open_locked(dir);
-  read_entries(dir + "/" + kManifestName, earlier_);
-  read_entries(dir + "/" + kJournalName, earlier_);  // a killed run's journal
+  read_entries(dir, kManifestName, earlier_);
+  read_entries(dir, kJournalName, earlier_);  // a killed run's journal
   const std::vector<std::string> foreign = foreign_files(dir, earlier_);
   if (!foreign.empty()) {
     ::close(lock_fd_);
@@ -207,8 +222,17 @@ void OutputFolder::append_to_journal(const std::string& relative, const Entry& e
 }
 
 void OutputFolder::write(const std::string& relative, std::string_view text) {
+  intend(relative);
   write_file_atomically(dir_ + "/" + relative, text);
   record(relative);
+}
+
+void OutputFolder::intend(const std::string& relative) {
+  if (escapes(relative)) throw std::logic_error("output outside its folder: " + relative);
+  const std::string line = "pending " + relative + "\n";
+  if (::write(journal_fd_, line.data(), line.size()) != static_cast<ssize_t>(line.size()))
+    throw std::runtime_error(dir_ + "/" + kJournalName + ": cannot write (" +
+                             std::string(std::strerror(errno)) + ")");
 }
 
 void OutputFolder::record(const std::string& relative) {
@@ -286,6 +310,10 @@ void OutputDir::write(const std::string& name, std::string_view text) const {
 
 void OutputDir::record(const std::string& name) const {
   folder_->record(relative(name));
+}
+
+void OutputDir::intend(const std::string& name) const {
+  folder_->intend(relative(name));
 }
 
 void OutputDir::remove(const std::string& name) const {

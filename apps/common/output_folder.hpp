@@ -10,7 +10,9 @@
 //  - One run at a time: DIR/.contensou.lock (flock) is held from the constructor on; a second run
 //    into the same folder is refused at once.
 //  - Each file (and sub-folder) the run writes is appended to DIR/.contensou-journal as soon as it
-//    is in place, so a run killed half-way leaves a record of what it wrote.
+//    is in place, so a run killed half-way leaves a record of what it wrote; before a file is
+//    renamed into place its name is journalled as pending, and the next run records a pending
+//    file that is there (a kill between the rename and the record leaves no foreign file).
 //  - commit(), once the run has written everything, removes the files and folders an earlier run
 //    recorded (its manifest, or the journal of a killed run) that this run did not write again,
 //    each only if unchanged since (same size and modification time) and folders only if empty;
@@ -41,8 +43,12 @@ class OutputFolder {
 
   // Writes DIR/relative whole (write_file_atomically) and records it.
   void write(const std::string& relative, std::string_view text);
-  // Records DIR/relative, put in place by other means (a picture renamed after gnuplot).
+  // Records DIR/relative, put in place by other means (a picture renamed after gnuplot): call
+  // intend(relative) before the rename, so that a kill between the two leaves it recorded.
   void record(const std::string& relative);
+  // Journals that DIR/relative is about to be renamed into place ("pending PATH"): the next run
+  // recovers such a file if this one is killed before record().
+  void intend(const std::string& relative);
   // Removes DIR/relative, a file this run wrote (a log it no longer needs), from the folder and
   // from the record.
   void remove(const std::string& relative);
@@ -84,6 +90,7 @@ class OutputDir {
   std::string relative(const std::string& name) const;
   void write(const std::string& name, std::string_view text) const;
   void record(const std::string& name) const;
+  void intend(const std::string& name) const;
   void remove(const std::string& name) const;
   // The sub-folder `name`, created and recorded.
   OutputDir sub(const std::string& name) const;

@@ -13,6 +13,7 @@
 #include "contensou/friction/exact_model.hpp"
 #include "contensou/friction/file_output.hpp"
 #include "contensou/friction/fractional_law.hpp"
+#include "contensou/friction/printable_text.hpp"
 #include "contensou/version.hpp"
 #include "embedded_binaries.hpp"
 #include "fmu_model.hpp"
@@ -26,7 +27,11 @@ namespace contensou::fmu {
 
 namespace {
 
+// The text of an XML attribute: &, <, >, " and newlines escaped; a character XML 1.0 cannot
+// carry at all (a control character, a byte that is not UTF-8) refused (the options are checked
+// before, so this names only a text the exporter made itself).
 std::string xml(const std::string& s) {
+  require_printable("XML text", s);
   std::string out;
   for (char c : s) {
     switch (c) {
@@ -343,6 +348,8 @@ FmuExport export_law_fmu(const ContactPatch& patch, const std::string& path,
                          const LawFmuOptions& options) {
   if (options.model_name.empty())
     throw InvalidArgument("model_name", "empty", "must name the model");
+  require_printable("model_name", options.model_name);
+  require_printable("profile name", options.profile_text);
   check_fmi_version(options.fmi_version);
   const auto start = std::chrono::steady_clock::now();
   const LawResource r = law_resource(patch, options);

@@ -141,8 +141,14 @@ std::string unusual_parameters(const GearConfig& given) {
   GearConfig g = given, reference;
   std::vector<std::pair<double, std::string>> far;
   for (const std::string& name : gear_parameter_names()) {
-    const double a = std::abs(*gear_parameter(g, name)),
-                 b = std::abs(*gear_parameter(reference, name));
+    const double given_value = *gear_parameter(g, name),
+                 default_value = *gear_parameter(reference, name);
+    if (given_value < 0.0 && default_value > 0.0) {  // a damping that feeds energy, say: first
+      far.emplace_back(1e9, name + " = " + format_value(given_value) +
+                                " (negative; the default is " + format_value(default_value) + ")");
+      continue;
+    }
+    const double a = std::abs(given_value), b = std::abs(default_value);
     if (a == b || !(a > 0.0 && b > 0.0)) continue;
     const double decades = std::abs(std::log10(a / b));
     if (decades >= 2.0)
@@ -151,8 +157,10 @@ std::string unusual_parameters(const GearConfig& given) {
   std::sort(far.rbegin(), far.rend());
   std::string out;
   for (std::size_t i = 0; i < std::min<std::size_t>(far.size(), 3); ++i)
-    out += (i ? ", " : "") + far[i].second + " (1e" +
-           std::to_string(static_cast<int>(far[i].first)) + "x off the default)";
+    out += (i ? ", " : "") + far[i].second +
+           (far[i].first >= 1e9
+                ? std::string()
+                : " (1e" + std::to_string(static_cast<int>(far[i].first)) + "x off the default)");
   return out;
 }
 
@@ -161,8 +169,8 @@ void check_step(int flag, const char* what, double t, const GearConfig& config) 
   if (flag >= 0) return;
   char* name = CVodeGetReturnFlagName(flag);
   const std::string meaning =
-      flag == CV_TOO_MUCH_WORK ? "too many steps before the next output (raise solver.max_steps, "
-                                 "or the motion is far stiffer or faster than a landing gear's)"
+      flag == CV_TOO_MUCH_WORK ? "too many steps (the motion has become far stiffer or faster "
+                                 "than a landing gear's: a gear driven unstable, say)"
       : flag == CV_ERR_FAILURE || flag == CV_CONV_FAILURE
           ? "the step size fell to its minimum: the state grows without bound or jumps"
           : "the integrator stopped";
@@ -212,6 +220,9 @@ void check_options(const GearModel& model, const SolverOptions& options) {
   }
   if (options.max_steps < 1)
     throw InvalidArgument("solver.max_steps", std::to_string(options.max_steps), "must be >= 1");
+  if (options.max_total_steps < 0)
+    throw InvalidArgument("solver.max_total_steps", std::to_string(options.max_total_steps),
+                          "must be >= 0 (0: no bound)");
 }
 
 // CVODE on the problem's active states from x at t = 0: vectors, tolerances (relative_tolerance
@@ -370,16 +381,24 @@ struct Progress {
   bool root = false;     // a root found at root_t and not handled yet
   double root_t = 0.0;
   long steps_since_output = 0;
+  long total_steps = 0;
 };
 
 // CVODE steps (CV_ONE_STEP) until it passes tout or finds a root; solver.max_steps bounds the
-// steps between two outputs, as CVodeSetMaxNumSteps does in CV_NORMAL.
+// steps between two outputs, as CVodeSetMaxNumSteps does in CV_NORMAL, and
+// solver.max_total_steps those of the whole landing.
 void step_to(Cvode& cv, double tout, const GearModel& model, const SolverOptions& options,
              Progress& p) {
   while (!p.root && p.reached < tout) {
     if (++p.steps_since_output > options.max_steps)
       check_step(CV_TOO_MUCH_WORK, "CVode (solver.max_steps between outputs)", p.reached,
                  model.config);
+    if (options.max_total_steps > 0 && ++p.total_steps > options.max_total_steps)
+      check_step(CV_TOO_MUCH_WORK,
+                 ("CVode (solver.max_total_steps = " + std::to_string(options.max_total_steps) +
+                  " in one landing, which takes a few thousand)")
+                     .c_str(),
+                 p.reached, model.config);
     throw_if_stopped(options.stop);
     double returned = p.reached;
     const int flag = CVode(cv.mem, tout, cv.y, &returned, CV_ONE_STEP);
@@ -489,6 +508,7 @@ LandingStepper::LandingStepper(const GearModel& model, const SolverOptions& opti
   s.model = model;
   s.model.config.scenario.braking = false;  // the brake is the input's
   s.options = options;
+  s.options.max_total_steps = 0;  // a stepped run (the FMU) has no end; max_steps bounds a step
   validate(s.model.config);
   require_positive("solver.relative_tolerance", options.relative_tolerance);
   if (options.max_steps < 1)

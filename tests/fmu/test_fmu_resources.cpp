@@ -5,6 +5,7 @@
 #include <cstdio>
 #include <string>
 
+#include "contensou/fmu/fmu_export.hpp"
 #include "contensou/friction/error.hpp"
 #include "contensou/friction/exact_law.hpp"
 #include "contensou/friction/exact_model.hpp"
@@ -140,4 +141,34 @@ TEST(FmuResource, DamagedFallingTableIsRefused) {
 }
 
 }  // namespace
+}  // namespace contensou::fmu
+
+namespace contensou::fmu {
+
+// A name no XML reader accepts is refused by name before anything is written.
+TEST(FmuExport, NamesXmlCannotCarryAreRefusedAndNothingIsWritten) {
+  const std::string path = ::testing::TempDir() + "contensou_unprintable.fmu";
+  std::remove(path.c_str());
+  for (const std::string& name : {std::string("a\x01"
+                                              "b\x1b"
+                                              "c"),
+                                  std::string("tire\abell"), std::string("cut \xc3")}) {
+    LawFmuOptions o;
+    o.law = FmuLaw::fractional;
+    o.model_name = name;
+    try {
+      export_law_fmu(seed_tire_patch(), path, o);
+      ADD_FAILURE() << "exported";
+    } catch (const InvalidArgument& e) {
+      EXPECT_EQ(e.parameter(), "model_name") << e.what();
+    }
+    o.model_name = "contensou_law";
+    o.profile_text = name;
+    EXPECT_THROW(export_law_fmu(seed_tire_patch(), path, o), InvalidArgument);
+    std::FILE* written = std::fopen(path.c_str(), "rb");
+    EXPECT_EQ(written, nullptr);
+    if (written) std::fclose(written);
+  }
+}
+
 }  // namespace contensou::fmu

@@ -477,3 +477,29 @@ TEST(StabilityMap, AStopRequestStopsALandingAndTheMap) {
   EXPECT_THROW(simulate_landing(m, midway), Interrupted);
   EXPECT_EQ(polls.load(), 201);
 }
+
+// The step budget of a landing: one that needs more steps than solver.max_total_steps ends with
+// an error naming the budget and the input that is furthest from a landing gear's (a negative
+// torsional damping here), not after minutes; 0 is no bound, a negative budget is refused. (The
+// app's run that integrated on for minutes is tests/reliability/cases/shimmy.txt's.)
+TEST(LandingGear, ALandingPastItsStepBudgetEndsNamingIt) {
+  GearConfig c;
+  c.structure.torsional_damping_nms_per_rad = -100.0;
+  SolverOptions o;
+  o.record = false;
+  o.max_total_steps = 300;  // a landing takes about 1500
+  try {
+    simulate_landing(make_gear_model(c, ContactModel::coupled), o);
+    ADD_FAILURE() << "the landing ended within 300 steps";
+  } catch (const std::runtime_error& e) {
+    const std::string m = e.what();
+    EXPECT_NE(m.find("solver.max_total_steps = 300"), std::string::npos) << m;
+    EXPECT_NE(m.find("structure.torsional_damping_nms_per_rad = -100 (negative"), std::string::npos)
+        << m;
+  }
+  o.max_total_steps = 0;
+  EXPECT_GT(simulate_landing(make_gear_model(c, ContactModel::coupled), o).steps, 300);
+  o.max_total_steps = -1;
+  EXPECT_THROW(simulate_landing(make_gear_model(GearConfig{}, ContactModel::coupled), o),
+               contensou::InvalidArgument);
+}

@@ -217,6 +217,10 @@ def test_bad_export_options_are_refused(folder: Path) -> None:
         c.fmu.export(patch, folder / "bad.fmu", law="fractional")
     with pytest.raises(ValueError, match="tolerance"):
         c.fmu.export(c.seed_tire_patch(), folder / "bad.fmu", tolerance=1.0)
+    # Names no XML reader accepts: refused by name, not written into modelDescription.xml.
+    for name in ("tire\abell", "a\x01b\x1bc"):
+        with pytest.raises(ValueError, match="model_name .*control character"):
+            c.fmu.export(c.seed_tire_patch(), folder / "bad.fmu", model_name=name)
     assert not (folder / "bad.fmu").exists()
 
 

@@ -33,6 +33,10 @@ struct SolverOptions {
   double output_interval_s = 5e-4;   ///< [s] samples for the time history and the shimmy analysis
   bool record = true;                ///< keep the samples (the analysis runs either way)
   long max_steps = 1000000;          ///< steps between two outputs (at least 1)
+  /// Steps of one landing in all (at least 1; 0: no bound, as for a stepped run): a landing takes
+  /// a few thousand, and a gear driven unstable (a negative torsional damping, say) can need
+  /// millions of ever smaller steps; past this the landing fails with a message naming it.
+  long max_total_steps = 500000;
   /// CVODE's Newton matrix from gear_jacobian (structured, analytic where the law allows), or
   /// from CVODE's own difference quotients (one right-hand side per state) when false.
   bool analytic_jacobian = true;
