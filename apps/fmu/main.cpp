@@ -66,14 +66,16 @@ PressureProfile cosine_profile(const std::string& spec) {
   return cosine_series_profile(w, a);
 }
 
-// The profile and, for a measured one (a CSV file), its reference pressure.
-PressureProfile profile_of(const std::string& spec, std::optional<double>& file_pressure) {
+// The profile and, for a measured one (a CSV file), its reference pressure (of the table
+// clipped at zero with `clip`).
+PressureProfile profile_of(const std::string& spec, bool clip,
+                           std::optional<double>& file_pressure) {
   if (spec == "uniform") return uniform_profile();
   if (spec == "hertz") return hertz_profile();
   if (spec == "seed-tire") return seed_tire_profile();
   if (spec.rfind("cosine:", 0) == 0) return cosine_profile(spec);
   if (spec.size() > 4 && spec.substr(spec.size() - 4) == ".csv") {
-    MeasuredProfile m = read_profile_csv(spec);
+    MeasuredProfile m = read_profile_csv(spec, clip);
     file_pressure = m.reference_pressure_pa;
     return m.profile;
   }
@@ -98,10 +100,18 @@ void require_finite_options(const LawArguments& a) {
   for (double v : a.slip_speed) require_finite("--slip-speed-friction", v);
 }
 
-ContactPatch patch_of(const LawArguments& a) {
+// The patch of the options; `scaled` says how a CSV profile's pressures were scaled to carry
+// --load ("" when they are taken as the file gives them).
+ContactPatch patch_of(const LawArguments& a, std::string& scaled) {
   require_finite_options(a);
   std::optional<double> file_pressure;
-  PressureProfile profile = profile_of(a.profile, file_pressure);
+  PressureProfile profile = profile_of(a.profile, a.clip_negative, file_pressure);
+  if (file_pressure && a.pressure)
+    throw InvalidArgument(
+        "--pressure", format_value(*a.pressure) + " Pa",
+        "a CSV profile gives the pressures in Pa (its mean p* = " + format_value(*file_pressure) +
+            " Pa): --pressure would rescale the measured table. Leave it out, "
+            "or give --load N to carry another load with the table's shape");
   profile.kx = a.kx;
   profile.ky = a.ky;
   profile.clip_negative = profile.clip_negative || a.clip_negative;
@@ -129,6 +139,9 @@ ContactPatch patch_of(const LawArguments& a) {
     patch.kappa = a.kappa;
     patch.profile = profile;
   }
+  if (file_pressure && a.load)
+    scaled = ", the profile file's pressures x " +
+             format_value(patch.reference_pressure_pa / *file_pressure) + " to carry it";
   if (!a.slip_speed.empty())
     patch.slip_speed_friction = SlipSpeedFriction<double>{a.slip_speed[0], a.slip_speed[1],
                                                           a.slip_speed[2], a.slip_speed[3]};
@@ -200,7 +213,8 @@ int main(int argc, char** argv) {
   if (const std::optional<int> status = contensou::app::parse(app, argc, argv)) return *status;
   try {
     if (law->parsed()) {
-      const ContactPatch patch = patch_of(a);
+      std::string scaled;
+      const ContactPatch patch = patch_of(a, scaled);
       fmu::LawFmuOptions o;
       o.law = a.law == "exact" ? fmu::FmuLaw::exact : fmu::FmuLaw::fractional;
       o.tolerance = a.tolerance;
@@ -212,8 +226,8 @@ int main(int argc, char** argv) {
                            : "";
       const fmu::FmuExport e = fmu::export_law_fmu(patch, a.out, o);
       print(e, "law FMU");
-      std::printf("patch: R = %g m, N = %g N; %s law", patch.radius_m, normal_load(patch),
-                  a.law.c_str());
+      std::printf("patch: R = %g m, N = %g N%s; %s law", patch.radius_m, normal_load(patch),
+                  scaled.c_str(), a.law.c_str());
       if (o.law == fmu::FmuLaw::exact)
         std::printf(", tables in %.2f s, %zu bytes, within %.2g of f N and f N R", e.build_s,
                     e.table_bytes, e.error_bound);

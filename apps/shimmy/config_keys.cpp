@@ -105,6 +105,11 @@ void read_axis(const ConfigText& r, const std::string& key, const char* name,
     }
   }
   if (axis.parameter.empty()) r.fail_at_key(key + "." + name, "each axis needs a 'parameter'");
+  for (const char* end : {"from", "to"})
+    if (!a.contains(end))
+      r.fail_at_key(key + "." + name, std::string("each axis needs '") + end + "' (its " +
+                                          (end[0] == 'f' ? "first" : "last") +
+                                          " value, in the key's unit)");
 }
 
 void read_maps(const ConfigText& r, const std::string& key, const nlohmann::json& v,
@@ -193,7 +198,16 @@ std::array<ConfigKey, 9> app_keys() {
   method.write = write_solver_method;
   ConfigKey rtol{"solver.relative_tolerance", "number", "1",
                  "CVODE's relative tolerance (absolute: times each state's scale)"};
-  rtol.range = kPositive;
+  // The convergence check reruns each landing at 1/100 of it: 1e-12 keeps that within what
+  // CVODE can meet (require_relative_tolerance).
+  rtol.range = ParameterRange{ParameterRange::interval,
+                              1e-12,
+                              0.1,
+                              false,
+                              true,
+                              "must lie in [1e-12, 0.1): the convergence check runs at 1/100 of "
+                              "it, and CVODE cannot meet less than 1e-14 in double precision",
+                              "must lie in [1e-12, 0.1): a looser tolerance is no integration"};
   rtol.number = [](ShimmyConfig& c) -> double& { return c.solver.relative_tolerance; };
   ConfigKey interval{"solver.output_interval_s", "number", "s",
                      "time between samples of the histories and the analysis"};
@@ -228,6 +242,14 @@ void check_app_range(const ConfigKey& k, double v) {
   const std::string name(k.name);
   if (k.range.kind == ParameterRange::positive) require_positive(name.c_str(), v);
   if (k.range.kind == ParameterRange::finite) require_finite(name.c_str(), v);
+  if (k.range.kind != ParameterRange::interval) return;
+  if (k.range.finite_first) require_finite(name.c_str(), v);
+  if (!(k.range.lo_open ? v > k.range.lo : v >= k.range.lo))
+    throw InvalidArgument(name, format_value(v), std::string(k.range.rule));
+  if (!(v < k.range.hi))
+    throw InvalidArgument(
+        name, format_value(v),
+        std::string(k.range.rule_above.empty() ? k.range.rule : k.range.rule_above));
 }
 
 // A default value for the key table: numbers shortest, lists by their length.
@@ -324,7 +346,7 @@ void validate_keys(const ShimmyConfig& config) {
   }
   for (std::size_t k = 0; k < config.sweeps.size(); ++k) {
     try {
-      check_map_axis(config.gear, config.sweeps[k], "sweep");
+      check_sweep_axis(config.gear, config.sweeps[k]);
     } catch (const InvalidArgument& e) {
       throw InvalidArgument(
           "sweeps",
@@ -337,6 +359,9 @@ void validate_keys(const ShimmyConfig& config) {
 std::string valid_values(const ConfigKey& key) {
   if (key.gear) return describe_range(*key.gear);
   if (!key.values.empty()) return std::string(key.values);
+  if (key.range.kind == ParameterRange::interval)
+    return std::string(key.range.lo_open ? "(" : "[") + format_value(key.range.lo) + ", " +
+           format_value(key.range.hi) + ")";
   return key.range.kind == ParameterRange::positive ? "> 0" : "finite";
 }
 

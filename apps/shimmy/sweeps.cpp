@@ -168,6 +168,30 @@ bool any_finite(const std::vector<const BifurcationSweep*>& group, bool up_only,
   return false;
 }
 
+// Whether any up-sweep point has a linearisation (its eigenvalue is written when it has no
+// error, whether or not its run was valid).
+bool any_linearisation(const std::vector<const BifurcationSweep*>& group) {
+  for (const BifurcationSweep* s : group)
+    for (const SweepPoint& p : s->up)
+      if (p.error.empty() && std::isfinite(p.eigen_growth_per_s)) return true;
+  return false;
+}
+
+// Why a sweep has no point at all ("" if some point ran): its first point's error, and the count.
+std::string why_no_point(const BifurcationSweep& s) {
+  std::size_t failed = 0;
+  const SweepPoint* first = nullptr;
+  for (const bool up : {true, false})
+    for (const SweepPoint& p : up ? s.up : s.down) {
+      if (p.valid || p.error.empty()) return "";
+      ++failed;
+      if (first == nullptr) first = &p;
+    }
+  if (first == nullptr) return "";
+  return "no point of this sweep ran (" + std::to_string(failed) + " of " + std::to_string(failed) +
+         "; at " + format_value(first->value) + ": " + first->error + ")";
+}
+
 // A panel with nothing to draw, saying why.
 std::string empty_panel(const std::string& why) {
   return "set yrange [0:1]\nset label 1 '" + why +
@@ -227,9 +251,12 @@ void draw_linear(const OutputDir& out, const std::vector<const BifurcationSweep*
           << m << "'";
     first = false;
   }
+  const bool linear = any_linearisation(group);
+  const std::string none = empty_panel(
+      "no point has a quasi-steady braked slide to linearise (the CSV column error says why)");
   gp << "set ylabel 'growth rate of the linearisation [1/s]'\nset xzeroaxis lt -1\n"
-     << growth.str() << "\nset ylabel 'shimmy frequency [Hz]'\n"
-     << freq.str() << "\nset ylabel 'time to onset [s]'\n";
+     << (linear ? growth.str() + "\n" : none) << "set ylabel 'shimmy frequency [Hz]'\n"
+     << (linear ? freq.str() + "\n" : none) << "set ylabel 'time to onset [s]'\n";
   if (any_finite(group, true, [](const SweepPoint& p) { return p.onset_s; }))
     gp << onset.str() << "\n";
   else
@@ -320,6 +347,9 @@ void report_sweeps(const OutputDir& out, const std::vector<BifurcationSweep>& sw
     std::printf("%-13s %-40s %14s %16s %16s\n", to_string(s.contact), s.axis.parameter.c_str(),
                 boundaries.c_str(), text(j["limit_cycle_range_up"]).c_str(),
                 text(j["limit_cycle_range_down"]).c_str());
+    const std::string why = why_no_point(s);
+    if (!why.empty()) std::printf("%13s %s\n", "", why.c_str());
+    j["no_point_ran"] = why.empty() ? nlohmann::json() : nlohmann::json(why);
     summary["bifurcation"].push_back(std::move(j));
   }
   for (const std::string& p : order) {

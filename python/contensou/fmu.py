@@ -20,6 +20,7 @@ from typing import Union
 
 import numpy as np
 
+from . import _args
 from ._core import ContactPatch, seed_tire_profile
 from .friction import shape_values
 
@@ -87,6 +88,15 @@ def _profile_arguments(patch: ContactPatch, folder: Path) -> list[str]:
     return ["--profile", str(table), "--profile-name", name, *flags]
 
 
+def _fmi(version: object) -> str:
+    """The FMI version as contensou-fmu takes it: 2 or 3 (an int; "3" or True are refused)."""
+    if isinstance(version, bool) or not isinstance(version, (int, np.integer)):
+        _args.wrong_type("fmi_version", version, "the integer 2 or 3")
+    if version not in (2, 3):
+        raise ValueError(f"fmi_version = {version!r}: must be 2 (FMI 2.0) or 3 (FMI 3.0)")
+    return str(int(version))  # type: ignore[call-overload]
+
+
 def export(
     patch: ContactPatch,
     path: PathLike,
@@ -103,6 +113,12 @@ def export(
     (FMI 3.0). Raises ValueError with contensou-fmu's
     message for a bad patch or option, FileNotFoundError when contensou-fmu is not found.
     """
+    _args.instance("patch", patch, (ContactPatch,),
+                   "a ContactPatch (e.g. contensou.ContactPatch.from_normal_load(R, N, "
+                   "contensou.seed_tire_profile(), f))")
+    _args.instance("model_name", model_name, (str,), "a string")
+    _args.instance("law", law, (str,), '"exact" or "fractional"')
+    fmi = _fmi(fmi_version)
     patch.validate()
     with tempfile.TemporaryDirectory(prefix="contensou-fmu-") as folder:
         arguments = ["law", "--out", os.fspath(path), "--radius", repr(patch.radius_m)]
@@ -115,7 +131,7 @@ def export(
             arguments += ["--friction", repr(patch.friction)]
         arguments += ["--kappa", repr(patch.kappa), "--kx", repr(patch.profile.kx)]
         arguments += ["--ky", repr(patch.profile.ky), "--law", law, "--tolerance", repr(tolerance)]
-        arguments += ["--model-name", model_name, "--fmi", str(fmi_version)]
+        arguments += ["--model-name", model_name, "--fmi", fmi]
         _run(arguments)
     return Path(path)
 
@@ -123,7 +139,7 @@ def export(
 def export_gear(path: PathLike, *, fmi_version: int = 2) -> Path:
     """Writes the landing-gear FMU (Co-Simulation; parameters the shimmy demo's configuration
     keys; FMI 2.0, or 3.0 with ``fmi_version=3``) to ``path`` and returns the path."""
-    _run(["gear", "--out", os.fspath(path), "--fmi", str(fmi_version)])
+    _run(["gear", "--out", os.fspath(path), "--fmi", _fmi(fmi_version)])
     return Path(path)
 
 

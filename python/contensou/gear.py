@@ -285,6 +285,13 @@ AxisLike = Union[MapAxis, Sequence[Any], Mapping[str, Any]]
 
 def _axis(a: AxisLike) -> MapAxis:
     if isinstance(a, Mapping):
+        keys = ("parameter", "from", "to", "points")
+        missing = [k for k in keys if k not in a]
+        unknown = [str(k) for k in a if k not in keys]
+        if missing or unknown:
+            raise ValueError(f"axis {dict(a)!r}: " + (f"missing {', '.join(missing)}" if missing
+                             else f"unknown key {', '.join(unknown)}")
+                             + " (an axis is {parameter, from, to, points})")
         a = (a["parameter"], a["from"], a["to"], a["points"])
     try:
         parameter, start, stop, points = a
@@ -503,7 +510,7 @@ def bifurcation_sweep(
 
     cfg = _config(config)
     a = _axis(axis)
-    rows, boundary = _core._bifurcation_sweep(cfg._text(), _model(model), a, int(threads))
+    rows, boundary = _core._bifurcation_sweep(cfg._text(), _model(model), a, _check_threads(threads))
     df = pd.DataFrame([tuple(r) for r in rows], columns=_SWEEP_COLUMNS)
     df = df.rename(columns={"value": a.parameter})
     df.attrs["linear_boundary"] = boundary

@@ -257,7 +257,12 @@ def _table_of(data: Any) -> tuple[list[str], list[Any]]:
             )
         return list(COLUMNS[: a.shape[1]]), [np.ascontiguousarray(a[:, k]) for k in range(a.shape[1])]
     names = list(data.dtype.names) if isinstance(data, np.ndarray) else list(data.keys())
-    return [str(n) for n in names], [_cells(data, n) for n in names]
+    text = [str(n) for n in names]
+    for j, n in enumerate(text):
+        if n in text[:j]:
+            raise ValueError(f"duplicate column '{n}' (columns {text.index(n) + 1} and {j + 1}): "
+                             "which one holds the data? Rename one")
+    return text, [_cells(data, n) for n in names]
 
 
 def _renames(

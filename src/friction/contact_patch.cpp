@@ -159,12 +159,22 @@ void require_representable_scales(const ContactPatch& patch) {
                        std::log(patch.reference_pressure_pa) + std::log(A1);
   const double log_m = log_n + std::log(patch.radius_m) + (f > 0.0 ? std::log(f) : 0.0);
   const double most = std::log(1e300), least = std::log(1e-300);
+  const auto decade = [](double log_x) {
+    return "1e" + std::to_string(static_cast<int>(std::floor(log_x / std::log(10.0))));
+  };
+  // The load in range but not the torque scale: the friction (with R) is what leaves it.
+  if (log_n < most && log_n > least && !(log_m < most && log_m > least) && f > 0.0)
+    throw InvalidArgument(
+        "friction", format_value(f),
+        "gives a torque scale f N R of " + decade(log_m) + " N m at N = " +
+            format_value(std::exp(log_n)) + " N and R = " + format_value(patch.radius_m) +
+            " m; f N R must lie within 1e-300 ... 1e300 (a friction coefficient is of order 0.01 "
+            "to 2)");
   if (!(log_n < most && log_m < most && log_n > least && log_m > least))
     throw InvalidArgument(
         "radius_m, reference_pressure_pa",
         format_value(patch.radius_m) + " m, " + format_value(patch.reference_pressure_pa) + " Pa",
-        "give a load N = 2 pi R^2 p* A^1 of 1e" +
-            std::to_string(static_cast<int>(std::floor(log_n / std::log(10.0)))) +
+        "give a load N = 2 pi R^2 p* A^1 of " + decade(log_n) +
             " N; N and f N R must lie within 1e-300 ... 1e300: use other units");
 }
 

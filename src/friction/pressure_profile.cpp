@@ -438,7 +438,7 @@ ProfileTable read_profile_table(const std::string& path) {
   return out;
 }
 
-MeasuredProfile read_profile_csv(const std::string& path) {
+MeasuredProfile read_profile_csv(const std::string& path, bool clip_negative) {
   ProfileTable t = read_profile_table(path);
   // The pressures scaled by a power of two, 2^-e, so that the largest is below 1: exact, and
   // the interpolant is homogeneous in p, so the shape divided by the mean is the same to the
@@ -450,11 +450,13 @@ MeasuredProfile read_profile_csv(const std::string& path) {
   for (double& x : t.pressure_pa) x = std::ldexp(x, -e);
   MeasuredProfile out;
   out.profile = tabulated_profile(t.rho, t.pressure_pa);
+  out.profile.clip_negative = clip_negative;
   // Mean pressure = 2 integral_0^1 p rho d rho (theory.md section 4: N = pi R^2 p_mean).
   const double mean = 2.0 * moment(out.profile, 1), mean_pa = std::ldexp(mean, e);
   if (!(mean > 0.0 && std::isfinite(mean_pa)))
     throw ParseError(path, 0, 0,
-                     "the profile's mean pressure, " + format_value(mean_pa) +
+                     std::string("the profile's mean pressure") +
+                         (clip_negative ? " clipped at zero, " : ", ") + format_value(mean_pa) +
                          " Pa, is not positive and finite");
   auto& tab = std::get<TabulatedShape>(out.profile.shape);
   for (double& x : tab.p) x /= mean;

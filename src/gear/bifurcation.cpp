@@ -1,4 +1,5 @@
 #include "contensou/gear/bifurcation.hpp"
+#include "contensou/gear/landing_simulation.hpp"
 
 #include "cvode_handles.hpp"
 #include "parallel_cells.hpp"
@@ -281,7 +282,7 @@ std::vector<double> linear_boundaries(const std::vector<SweepPoint>& points) {
 void check_options(const SweepOptions& o) {
   require_positive("sweep settle_s", o.settle_s);
   require_positive("sweep longest_s", o.longest_s);
-  require_positive("sweep relative_tolerance", o.relative_tolerance);
+  require_relative_tolerance("sweep relative_tolerance", o.relative_tolerance);
   require_positive("sweep output_interval_s", o.output_interval_s);
   require_positive("sweep amplitude_threshold_rad", o.amplitude_threshold_rad);
   require_finite("sweep seed_rate_radps", o.seed_rate_radps);
@@ -306,7 +307,7 @@ std::vector<BifurcationSweep> bifurcation_sweeps(const std::vector<GearModel>& m
                                                  const std::function<void(int, int)>& progress) {
   check_options(options);
   for (const GearModel& m : models)
-    for (const MapAxis& a : axes) check_map_axis(m.config, a, "sweep");
+    for (const MapAxis& a : axes) check_sweep_axis(m.config, a);
   std::vector<BifurcationSweep> out(models.size() * axes.size());
   for (std::size_t m = 0; m < models.size(); ++m)
     for (std::size_t a = 0; a < axes.size(); ++a) {

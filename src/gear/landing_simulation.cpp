@@ -34,6 +34,13 @@ std::pair<double, double> analysis_window(const LandingScenario& s) {
   return {start, end};
 }
 
+void require_relative_tolerance(const std::string& name, double rtol) {
+  if (!(rtol >= kTightestRelativeTolerance && rtol < kLoosestRelativeTolerance))
+    throw InvalidArgument(name, format_value(rtol),
+                          "must lie in [1e-14, 0.1): CVODE cannot meet a tighter relative "
+                          "tolerance in double precision, and a looser one is no integration");
+}
+
 namespace {
 
 enum Root : int { kLoadOnset = 0, kFullLoad, kSpinUp, kSliding, kBrakeOn, kBrakeOff, kRoots };
@@ -203,7 +210,7 @@ ShimmyMetrics assess(const Window& window, double peak_torsion, double peak_late
 // The solver options a landing needs (the gear's own are validate()'s): positive tolerance and
 // interval, at most 1e6 samples, at least one step between outputs.
 void check_options(const GearModel& model, const SolverOptions& options) {
-  require_positive("solver.relative_tolerance", options.relative_tolerance);
+  require_relative_tolerance("solver.relative_tolerance", options.relative_tolerance);
   require_positive("solver.output_interval_s", options.output_interval_s);
   // The time history is kept in memory (and written by the apps): bounded, with the number.
   constexpr double kMostSamples = 1e6;
@@ -510,7 +517,7 @@ LandingStepper::LandingStepper(const GearModel& model, const SolverOptions& opti
   s.options = options;
   s.options.max_total_steps = 0;  // a stepped run (the FMU) has no end; max_steps bounds a step
   validate(s.model.config);
-  require_positive("solver.relative_tolerance", options.relative_tolerance);
+  require_relative_tolerance("solver.relative_tolerance", options.relative_tolerance);
   if (options.max_steps < 1)
     throw InvalidArgument("solver.max_steps", std::to_string(options.max_steps), "must be >= 1");
   s.problem = Problem{&s.model, initial_mode(s.model), active_states(s.model)};
@@ -547,7 +554,18 @@ void LandingStepper::advance_to(double t) {
   if (!(t > impl_->t))
     throw InvalidArgument("t", format_value(t),
                           "must be after the stepper's time " + format_value(impl_->t) + " s");
-  advance(*impl_, t);
+  const double from = impl_->t;
+  try {
+    advance(*impl_, t);
+  } catch (const Interrupted&) {
+    throw;  // asked for: not a failure of the step
+  } catch (const std::runtime_error& e) {
+    // The step itself is context the host needs (a communication step of 1e300 s, say).
+    const bool budget = impl_->progress.steps_since_output > impl_->options.max_steps;
+    throw std::runtime_error(std::string(e.what()) + "; in a step of " + format_value(t - from) +
+                             " s from t = " + format_value(from) + " s" +
+                             (budget ? ": take shorter steps, or raise solver.max_steps" : ""));
+  }
 }
 
 double LandingStepper::time() const {

@@ -20,6 +20,12 @@ void check_map_axis(const GearConfig& config, const MapAxis& a, const std::strin
     throw InvalidArgument(name + ".points", std::to_string(a.points), "must lie in 1..10000");
   require_finite((name + ".from").c_str(), a.from);
   require_finite((name + ".to").c_str(), a.to);
+  if (a.points > 1 && a.from == a.to)
+    throw InvalidArgument(name,
+                          a.parameter + " from " + format_value(a.from) + " to " +
+                              format_value(a.to) + " in " + std::to_string(a.points) + " points",
+                          "the ends are equal: every point would repeat one value; give two "
+                          "different ends (or points = 1)");
   // The cells lie between the ends: their difference must be finite too (-1e308 to 1e308
   // would give inf and nan cells).
   if (!std::isfinite(a.to - a.from))
@@ -38,6 +44,13 @@ void check_map_axis(const GearConfig& config, const MapAxis& a, const std::strin
           "leaves the key's valid values " + describe_range(*p) + " (" + e.what() + ")");
     }
   }
+}
+
+void check_sweep_axis(const GearConfig& config, const MapAxis& a) {
+  check_map_axis(config, a, "sweep");
+  if (a.points < 2)
+    throw InvalidArgument("sweep.points", std::to_string(a.points),
+                          "a sweep is a diagram along " + a.parameter + ": give at least 2 points");
 }
 
 void check_map_axes(const GearConfig& config, const MapAxis& x, const MapAxis& y) {

@@ -25,6 +25,7 @@ MeasuredData clean_rows(const MeasuredData& data, const std::vector<Outlier>& ou
   clean.column_notes = data.column_notes;
   clean.recorded = data.recorded;
   clean.columns_not_read = data.columns_not_read;
+  clean.missing_values = data.missing_values;
   origin.clear();
   for (std::size_t i = 0; i < data.points.size(); ++i) {
     MeasuredPoint p = data.points[i];

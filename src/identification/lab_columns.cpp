@@ -150,30 +150,16 @@ std::string read_instead(const LabHeader& in, int index, int q, const LabColumn&
          std::to_string(c.index + 1) + ")";
 }
 
-// Two columns for one quantity are an error, unless exactly one has the SI name: that one is
-// read and the other listed as not read (files that log a rate in rad/s and again in rpm).
-// The same name twice is an error (which of the two holds the channel?).
+// Two columns for one quantity are an error (the same name twice: which one holds the channel?).
+// A second column beside the one under the SI name is a twin (add_twin), not assigned here.
 void assign(LabColumns& out, int q, int index, const LabHeader& in) {
   LabColumn& c = out.column[q];
   const std::string header = trim(in.header[index]);
-  const std::string si = kQuantities[q].si_column;
   if (c.present() && header == c.header)
     throw ParseError(in.file, in.header_line, index + 1,
                      "duplicate column '" + header + "' (columns " + std::to_string(c.index + 1) +
                          " and " + std::to_string(index + 1) +
                          "): which one holds the channel? Rename one");
-  if (c.present() && !c.renamed && c.header == si) {
-    out.not_read.push_back(read_instead(in, index, q, c));
-    return;
-  }
-  if (c.present() && !c.renamed && header == si) {
-    LabColumn dropped = c;
-    c = LabColumn{};
-    c.index = index;
-    c.header = header;
-    out.not_read.push_back(read_instead(in, dropped.index, q, c));
-    return;
-  }
   if (c.present())
     throw ParseError(in.file, in.header_line, 0,
                      "two columns for " + std::string(kQuantities[q].name) + ": " +
@@ -331,6 +317,61 @@ void refuse_lost_channel(const LabHeader& in, int index, const HeaderCell& cell,
         std::string("holds a ") + dimension_name(u->dimension) + " (" + unit +
             ") that no channel reads: if it is Fx, Fy, Fz or Mz, " +
             ways_to_read(in, header, u->dimension == Dimension::moment ? "Mz" : "Fx"));
+}
+
+// The column under the SI name of quantity q other than `index`, if the header has one that
+// nothing else claims (-1 if none).
+int si_named_column(const LabHeader& in, const std::vector<Claim>& claims, int q, int index) {
+  for (std::size_t j = 0; j < in.header.size(); ++j)
+    if (static_cast<int>(j) != index && trim(in.header[j]) == kQuantities[q].si_column &&
+        (claims[j] == Claim::none || claims[j] == Claim::quantity))
+      return static_cast<int>(j);
+  return -1;
+}
+
+// A twin's unit ("kN" of "Fx [kN]"; "" is SI), or the refusal when it is no unit of the
+// quantity: Fx_raw beside Fx_N may hold anything (a raw count, a copy of Mz).
+void set_twin_unit(LabColumns::Twin& twin, const std::string& unit, const LabHeader& in, int line,
+                   std::vector<ParseError>& lost) {
+  const QuantitySpec& spec = kQuantities[twin.quantity];
+  const Unit* u = unit.empty() ? nullptr : find_unit(unit);
+  if (!unit.empty() && (u == nullptr || u->dimension != spec.dimension || u->offset_si != 0.0)) {
+    lost.push_back(column_error(
+        in, line, twin.index,
+        std::string("is a second ") + spec.name + " beside '" + spec.si_column + "' in '" + unit +
+            "', which is not a unit of " + spec.name + " (" + spec.name + ": " +
+            accepted_units(static_cast<MeasuredQuantity>(twin.quantity)) +
+            "): say what it holds. If it is " + spec.name + ", " + twin.remedy));
+    return;
+  }
+  twin.unit = unit;
+  twin.to_si = u == nullptr ? 1.0 : u->to_si;
+}
+
+// Column `index`, named as quantity q, beside q's column under the SI name: a twin whose rows
+// must repeat the read column's (its unit from the header, or from the units row later).
+void add_twin(LabColumns& out, const LabHeader& in, int q, int index, int si_index,
+              const std::string& unit, std::vector<ParseError>& lost) {
+  LabColumns::Twin twin;
+  twin.quantity = q;
+  twin.index = index;
+  twin.header = trim(in.header[static_cast<std::size_t>(index)]);
+  twin.remedy = ways_to_read(in, twin.header, kQuantities[q].name);
+  set_twin_unit(twin, unit, in, in.header_line, lost);
+  out.twins.push_back(twin);
+  out.not_read.push_back("'" + twin.header + "' (column " + std::to_string(index + 1) +
+                         "): " + kQuantities[q].name + " is read from '" +
+                         kQuantities[q].si_column + "' (column " + std::to_string(si_index + 1) +
+                         "); every row checked to hold the same value");
+}
+
+// The twins' units from the units row, where their header gives none.
+void twin_units_from_row(LabColumns& out, const LabHeader& in, std::vector<ParseError>& lost) {
+  for (LabColumns::Twin& twin : out.twins) {
+    if (!twin.unit.empty() || twin.index >= static_cast<int>(in.first_row->size())) continue;
+    const std::string text = trim((*in.first_row)[static_cast<std::size_t>(twin.index)]);
+    if (!text.empty()) set_twin_unit(twin, text, in, in.first_row_line, lost);
+  }
 }
 
 // The unit of a recorded column: the header's, else the units row's; converted when known.
@@ -537,13 +578,18 @@ LabColumns resolve(const LabHeader& in, const ColumnRenames& renames,
       out.not_read.push_back(read_instead(in, static_cast<int>(i), *q, out.column[*q]));
       continue;
     }
+    const int si_index = si_named_column(in, claims, *q, static_cast<int>(i));
+    if (si_index >= 0 && trim(in.header[i]) != kQuantities[*q].si_column) {
+      add_twin(out, in, *q, static_cast<int>(i), si_index, cell.unit, lost);
+      continue;
+    }
     assign(out, *q, static_cast<int>(i), in);
-    if (out.column[*q].index == static_cast<int>(i))
-      apply_unit(out.column[*q], *q, cell.unit, in, in.header_line);
+    apply_unit(out.column[*q], *q, cell.unit, in, in.header_line);
   }
   out.units_row = first_row_holds_units(out, in);
   if (out.units_row) release_by_units_row(out, in, claims);
   if (out.units_row) apply_units_row(out, in);
+  if (out.units_row) twin_units_from_row(out, in, lost);
   classify_other_columns(in, claims, out, lost);
   return out;
 }

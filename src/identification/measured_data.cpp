@@ -1,9 +1,12 @@
 #include "contensou/identification/measured_data.hpp"
 
 #include <algorithm>
+#include <array>
+#include <cctype>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
+#include <map>
 #include <sstream>
 #include <stdexcept>
 
@@ -21,9 +24,30 @@ int MeasuredData::count(int channel) const {
 
 namespace {
 
-// A cell of a column in SI (nullopt when empty or the column is absent).
-std::optional<double> si_value(const CsvTable& t, const CsvRow& row, const LabColumn& c) {
+// A missing value as labs and spreadsheets write it (case ignored): an empty cell, "-", "--",
+// "n/a", "na", "nan", "null", "none", "#n/a".
+bool is_missing_spelling(const std::string& cell) {
+  std::string c;
+  for (char ch : cell)
+    if (ch != ' ' && ch != '\t')
+      c += static_cast<char>(std::tolower(static_cast<unsigned char>(ch)));
+  constexpr std::array<const char*, 10> kSpellings = {"",    "-",    "--",   "n/a",  "na",
+                                                      "nan", "-nan", "null", "none", "#n/a"};
+  return std::any_of(kSpellings.begin(), kSpellings.end(), [&](const char* m) { return c == m; });
+}
+
+// The missing cells of each column (its 0-based index): how they were spelt, and how often.
+using MissingTally = std::map<int, std::map<std::string, int>>;
+
+// A cell of a column in SI (nullopt when missing, counted in `tally`, or the column is absent).
+std::optional<double> si_value(const CsvTable& t, const CsvRow& row, const LabColumn& c,
+                               MissingTally& tally) {
   if (!c.present()) return std::nullopt;
+  const std::string& text = row.cells[static_cast<std::size_t>(c.index)];
+  if (is_missing_spelling(text)) {
+    ++tally[c.index][text];
+    return std::nullopt;
+  }
   const std::optional<double> v = t.number(row, c.index);
   if (!v) return v;
   const double si = *v * c.to_si;
@@ -32,33 +56,102 @@ std::optional<double> si_value(const CsvTable& t, const CsvRow& row, const LabCo
   return si;
 }
 
-// A recorded column's cell: NaN when empty or "nan"; nullopt when it is text.
-std::optional<double> recorded_cell(const CsvTable& t, const CsvRow& row, int column) {
+// "'Fx_N' (column 4): 3 of 514 rows (n/a 2, empty 1)" for each column with missing cells.
+std::vector<std::string> missing_notes(const CsvTable& t, const MissingTally& tally, int rows) {
+  std::vector<std::string> notes;
+  for (const auto& [column, spellings] : tally) {
+    int n = 0;
+    std::string how;
+    for (const auto& [text, count] : spellings) {
+      n += count;
+      how += (how.empty() ? "" : ", ") + (text.empty() ? std::string("empty") : text) + " " +
+             std::to_string(count);
+    }
+    notes.push_back("'" + t.header[static_cast<std::size_t>(column)] + "' (column " +
+                    std::to_string(column + 1) + "): " + std::to_string(n) + " of " +
+                    std::to_string(rows) + " rows (" + how + ")");
+  }
+  return notes;
+}
+
+// A recorded column's cell: NaN when missing (counted) or not finite; nullopt when it is text.
+std::optional<double> recorded_cell(const CsvTable& t, const CsvRow& row, int column,
+                                    std::map<std::string, int>& missing) {
   const std::string& text = row.cells[static_cast<std::size_t>(column)];
-  if (text.empty()) return std::nan("");
+  if (is_missing_spelling(text)) {
+    ++missing[text];
+    return std::nan("");
+  }
   try {
     const std::optional<double> v = t.number(row, column);
     return v ? *v : std::nan("");
   } catch (const ParseError&) {
     char* end = nullptr;
-    std::strtod(text.c_str(), &end);  // "nan", "-inf": a missing value, not text
-    if (end != text.c_str() && *end == '\0') return std::nan("");
-    return std::nullopt;
+    std::strtod(text.c_str(), &end);  // "inf", "-inf": a missing value, not text
+    if (end == text.c_str() || *end != '\0') return std::nullopt;
+    ++missing[text];
+    return std::nan("");
+  }
+}
+
+// Half a unit in the last digit a number's text writes: "153.20" 0.005, "1.5e3" 50, "12" 0.5.
+double half_last_digit(const std::string& text) {
+  const std::size_t e = text.find_first_of("eE");
+  const std::string mantissa = text.substr(0, e);
+  const std::size_t point = mantissa.find_first_of(".,");
+  int decimals = 0;
+  if (point != std::string::npos)
+    for (std::size_t k = point + 1; k < mantissa.size(); ++k)
+      decimals += std::isdigit(static_cast<unsigned char>(mantissa[k])) ? 1 : 0;
+  const long exponent = e == std::string::npos ? 0 : std::strtol(text.c_str() + e + 1, nullptr, 10);
+  return 0.5 * std::pow(10.0, static_cast<double>(std::clamp(exponent, -400L, 400L) - decimals));
+}
+
+// Every twin (a second column of a quantity beside its SI column) holds the read column's value
+// in each row where both have one, to the digits written; else it is another channel: refused.
+void check_twins(const CsvTable& t, const LabColumns& cols, std::size_t first) {
+  for (const LabColumns::Twin& twin : cols.twins) {
+    const LabColumn& c = cols.column[static_cast<std::size_t>(twin.quantity)];
+    const char* name = quantity_name(static_cast<MeasuredQuantity>(twin.quantity));
+    for (std::size_t r = first; r < t.rows.size(); ++r) {
+      const CsvRow& row = t.rows[r];
+      const std::string& a = row.cells[static_cast<std::size_t>(c.index)];
+      const std::string& b = row.cells[static_cast<std::size_t>(twin.index)];
+      if (is_missing_spelling(a) || is_missing_spelling(b)) continue;
+      const double va = *t.number(row, c.index) * c.to_si;
+      const double vb = *t.number(row, twin.index) * twin.to_si;
+      const double tol = half_last_digit(a) * c.to_si + half_last_digit(b) * twin.to_si +
+                         1e-12 * std::max(std::abs(va), std::abs(vb));
+      if (std::abs(va - vb) <= tol) continue;
+      const auto show = [](double v) {
+        char buf[32];
+        std::snprintf(buf, sizeof buf, "%.8g", v);
+        return std::string(buf);
+      };
+      throw t.cell_error(
+          row.line, twin.index,
+          std::string("is a second ") + name + " beside '" + c.header + "' (column " +
+              std::to_string(c.index + 1) + "), but this row differs: " + b +
+              (twin.unit.empty() ? "" : " " + twin.unit) + " here = " + show(vb) + " " + c.si_unit +
+              ", " + show(va) + " " + c.si_unit + " in '" + c.header +
+              "': it holds another channel. If it is " + name + ", " + twin.remedy);
+    }
   }
 }
 
 // The recorded columns' values in SI, column by column, into the points: a column whose first
 // non-empty cell is text is a text column (listed as not read); text further down a numeric
 // column is an error at its cell.
-void read_recorded(const CsvTable& t, const LabColumns& cols, std::size_t first,
-                   MeasuredData& data) {
+void read_recorded(const CsvTable& t, const LabColumns& cols, std::size_t first, MeasuredData& data,
+                   MissingTally& tally) {
   for (const RecordedColumn& c : cols.recorded) {
     const std::string where = "'" + c.header + "' (column " + std::to_string(c.index + 1) + ")";
     std::vector<double> values;
     values.reserve(data.points.size());
     bool any = false, text = false;
+    std::map<std::string, int> missing;
     for (std::size_t r = first; r < t.rows.size() && !text; ++r) {
-      const std::optional<double> v = recorded_cell(t, t.rows[r], c.index);
+      const std::optional<double> v = recorded_cell(t, t.rows[r], c.index, missing);
       if (!v && !any) text = true;
       if (!v && any)
         throw t.cell_error(t.rows[r].line, c.index,
@@ -72,6 +165,7 @@ void read_recorded(const CsvTable& t, const LabColumns& cols, std::size_t first,
       data.columns_not_read.push_back(where + (text ? ": text" : ": empty"));
       continue;
     }
+    if (!missing.empty()) tally[c.index] = missing;
     for (std::size_t k = 0; k < data.points.size(); ++k)
       data.points[k].recorded.push_back(values[k]);
     data.recorded.push_back(
@@ -95,6 +189,7 @@ MeasuredData measured_data_from_table(const CsvTable& t, const ColumnRenames& re
   data.source = t.file;
   data.column_notes = cols.notes();
   const LabColumn& fz = cols[MeasuredQuantity::Fz];
+  MissingTally tally;
   for (std::size_t r = cols.units_row ? 1 : 0; r < t.rows.size(); ++r) {
     const CsvRow& row = t.rows[r];
     MeasuredPoint p;
@@ -102,16 +197,21 @@ MeasuredData measured_data_from_table(const CsvTable& t, const ColumnRenames& re
     double k[3] = {0.0, 0.0, 0.0};
     for (int i = 0; i < 3; ++i) {
       const LabColumn& c = cols.column[i];
-      const std::optional<double> v = si_value(t, row, c);
-      if (!v) throw t.cell_error(row.line, c.index, "empty (the kinematics must be given)");
+      const std::optional<double> v = si_value(t, row, c, tally);
+      const std::string& text = row.cells[static_cast<std::size_t>(c.index)];
+      if (!v)
+        throw t.cell_error(
+            row.line, c.index,
+            (text.empty() ? std::string("empty") : "'" + text + "', a missing value") +
+                " (the kinematics vx, vy, omega must be given in every row)");
       k[i] = *v;
     }
     p.kinematics = {k[0], k[1], k[2]};
-    for (int c = 0; c < kChannels; ++c) p.force[c] = si_value(t, row, cols.column[3 + c]);
-    p.normal_load = si_value(t, row, fz);
+    for (int c = 0; c < kChannels; ++c) p.force[c] = si_value(t, row, cols.column[3 + c], tally);
+    p.normal_load = si_value(t, row, fz, tally);
     if (p.normal_load && !(*p.normal_load > 0.0))
       throw t.cell_error(row.line, fz.index, format_value(*p.normal_load) + " must be positive");
-    p.time = si_value(t, row, cols[MeasuredQuantity::t]);
+    p.time = si_value(t, row, cols[MeasuredQuantity::t], tally);
     data.points.push_back(p);
   }
   if (data.points.empty())
@@ -125,7 +225,9 @@ MeasuredData measured_data_from_table(const CsvTable& t, const ColumnRenames& re
     if (col.present() && col.to_si != 1.0) units[c] = {col.unit, col.to_si};
   }
   data.channel_units.push_back(units);
-  read_recorded(t, cols, cols.units_row ? 1 : 0, data);
+  check_twins(t, cols, cols.units_row ? 1 : 0);
+  read_recorded(t, cols, cols.units_row ? 1 : 0, data, tally);
+  data.missing_values = missing_notes(t, tally, static_cast<int>(data.points.size()));
   return data;
 }
 
@@ -166,6 +268,7 @@ MeasuredData combine_measured(std::vector<MeasuredData> files, const std::vector
     for (const std::string& n : d.column_notes) all.column_notes.push_back(d.source + ": " + n);
     for (const std::string& n : d.columns_not_read)
       all.columns_not_read.push_back(d.source + ": " + n);
+    for (const std::string& n : d.missing_values) all.missing_values.push_back(d.source + ": " + n);
     all.channel_units.push_back(d.channel_units.empty()
                                     ? std::array<MeasuredData::ChannelUnit, kChannels>{}
                                     : d.channel_units.front());

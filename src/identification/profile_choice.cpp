@@ -24,7 +24,7 @@ ProfileChoice choose_profile(const std::string& spec, int smoothing, bool clip, 
     throw std::runtime_error(given("profile", spec) +
                              ": no such file (or use uniform, hertz, seed-tire)");
   if (smoothing <= 0) {
-    MeasuredProfile m = read_profile_csv(spec);
+    MeasuredProfile m = read_profile_csv(spec, clip);
     const auto negative = negative_intervals(m.profile);
     if (!negative.empty() && !clip)
       throw std::runtime_error(given("profile", spec) + ": the pressure is negative on rho in (" +
@@ -32,7 +32,6 @@ ProfileChoice choose_profile(const std::string& spec, int smoothing, bool clip, 
                                format_value(negative.front().second) +
                                "); a contact pressure cannot be: correct the table, or add " +
                                key_name("profile_clip", style) + " to clip it at zero");
-    m.profile.clip_negative = clip;
     return {m.profile, m.reference_pressure_pa, spec + ", " + describe(m.profile), {}, {}};
   }
   const ProfileTable t = read_profile_table(spec);

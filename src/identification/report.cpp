@@ -167,6 +167,7 @@ nlohmann::json fit_report(const ReportInput& info, const FitReport& base) {
                         {"values", c.values}});
   r["input"]["recorded_columns"] = recorded;
   r["input"]["columns_not_read"] = info.columns_not_read;
+  r["input"]["missing_values"] = info.missing_values;
   const auto outlier_list = [](const std::vector<Outlier>& list) {
     nlohmann::json out = nlohmann::json::array();
     for (const Outlier& o : list)
@@ -328,6 +329,7 @@ ReportInput describe_run(const std::string& file, const MeasuredData& data, doub
   in.column_notes = data.column_notes;
   if (data.sources.size() > 1) in.sources = data.sources;
   in.columns_not_read = data.columns_not_read;
+  in.missing_values = data.missing_values;
   for (std::size_t k = 0; k < data.recorded.size(); ++k) {
     RecordedSummary c{data.recorded[k], 0.0, 0.0, 0};
     for (const MeasuredPoint& p : data.points) {

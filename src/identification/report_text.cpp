@@ -26,6 +26,8 @@ std::string input_text(const ReportInput& info) {
   for (const std::string& note : info.column_notes) s += "\ncolumn: " + note;
   for (const RecordedSummary& c : info.recorded) s += "\nrecorded, not in the law: " + c.describe();
   for (const std::string& note : info.columns_not_read) s += "\nnot read: " + note;
+  for (const std::string& note : info.missing_values)
+    s += "\nmissing (not measured in those rows): " + note;
   if (!info.outliers.empty()) {
     s += "\noutliers: " + std::to_string(info.outliers.size()) +
          " values left out of the fit as gross errors (a robust fit's residual more than 8 robust "

@@ -32,8 +32,8 @@ expect "malformed cell" "malformed.csv:3: column 'omega_radps' (3): not a number
 printf 'vx_mps,omega_radps,Fx_N\n1,10,-5\n' > "$dir/missing.csv"
 expect "missing column" "missing required column 'vy_mps'" \
   "$app" "$dir/missing.csv" --radius 0.1 --json "$dir/report.json"
-printf 'vx_mps,vy_mps,omega_radps,Fx_N\n1,0,10,-5\n1,0,10,nan\n' > "$dir/nonfinite.csv"
-expect "non-finite value" "nonfinite.csv:3: column 'Fx_N' (4): non-finite value 'nan'" \
+printf 'vx_mps,vy_mps,omega_radps,Fx_N\n1,0,10,-5\n1,0,10,inf\n' > "$dir/nonfinite.csv"
+expect "non-finite value" "nonfinite.csv:3: column 'Fx_N' (4): non-finite value 'inf'" \
   "$app" "$dir/nonfinite.csv" --radius 0.1 --json "$dir/report.json"
 printf 'vx_mps,vy_mps,omega_radps,Fx_N\n1,0,10,-5\n2,0,10,-6\n' > "$dir/few.csv"
 expect "fewer points than parameters" \

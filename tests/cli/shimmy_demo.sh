@@ -240,7 +240,10 @@ expect "bad solver method" "solver.method: expected adams or bdf, got \"rk4\"" \
 expect "number overflow" "bad.json:2:30: invalid JSON: number overflow parsing '1e2111'" \
   $'{\n  "scenario": {"end_time_s": 1e2111}}'
 expect "map axis without parameter" "maps.y: each axis needs a 'parameter'" \
-  '{"maps": [{"x": {"parameter": "structure.offset_m"}, "y": {"from": 1}}]}'
+  '{"maps": [{"x": {"parameter": "structure.offset_m", "from": 0.2, "to": 0.3}, "y": {"from": 1}}]}'
+# An axis without its last value ran to the default's (a sweep from 30 down to 1 m/s).
+expect "map axis without its end" "maps.y: each axis needs 'to' (its last value" \
+  '{"maps": [{"x": {"parameter": "structure.offset_m", "from": 0.2, "to": 0.3}, "y": {"parameter": "scenario.forward_speed_mps", "from": 30}}]}'
 # An empty list of maps prints as an empty list (it was left out: read back, the default maps).
 printf '{"maps": []}' > "$dir/nomaps.json"
 "$app" --config "$dir/nomaps.json" --print-config > "$dir/nomaps_printed.json" || fail "print-config"

@@ -153,6 +153,34 @@ TEST(Profiles, ReadsProfileCsvNormalisedByTheMeanPressure) {
   EXPECT_LT(m.reference_pressure_pa, 300000.0);
 }
 
+// Clipped at zero, the table's mean is the clipped one: p* carries the load the clipped patch
+// has (brute force: the trapezoid rule on a fine grid of the interpolant), and a table mostly
+// negative reads when clipped, its mean naming the clipping when even that is not positive.
+TEST(Profiles, ProfileCsvClippedHasTheClippedMeanPressure) {
+  const std::string path =
+      write_temp("dip.csv", "rho,pressure_Pa\n0,-900000\n0.5,-600000\n0.8,300000\n1,0\n");
+  EXPECT_THROW(read_profile_csv(path), ParseError);  // unclipped, the mean is negative
+  const MeasuredProfile m = read_profile_csv(path, true);
+  EXPECT_TRUE(m.profile.clip_negative);
+  EXPECT_NEAR(2.0 * moment(m.profile, 1), 1.0, 1e-12);
+  double mean = 0.0;
+  const int n = 200000;
+  for (int i = 0; i < n; ++i) {
+    const double r0 = double(i) / n, r1 = double(i + 1) / n;
+    mean += (m.reference_pressure_pa * shape_value(m.profile, r0) * r0 +
+             m.reference_pressure_pa * shape_value(m.profile, r1) * r1) /
+            n;  // 2 integral p rho d rho by the trapezoid rule
+  }
+  EXPECT_NEAR(m.reference_pressure_pa, mean, 1e-4 * mean);
+  try {
+    read_profile_csv(write_temp("neg.csv", "rho,pressure_Pa\n0,-4\n1,-1\n"), true);
+    FAIL() << "no error";
+  } catch (const ParseError& e) {
+    EXPECT_NE(std::string(e.what()).find("mean pressure clipped at zero, 0 Pa"), std::string::npos)
+        << e.what();
+  }
+}
+
 // The pressure column in any pressure unit the readers know, converted as in data files: the
 // same table in Pa, kPa and bar gives the same profile and mean pressure.
 TEST(Profiles, ProfileCsvPressureInOtherUnits) {

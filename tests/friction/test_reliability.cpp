@@ -166,6 +166,25 @@ TEST(Scales, APatchBeyondTheDoublesIsRefusedNamingRadiusAndPressure) {
   EXPECT_TRUE(r.vector().allFinite());
 }
 
+// A load in range with a friction that puts f N R out of it: the friction is named, not the load.
+TEST(Scales, AFrictionBeyondTheDoublesIsBlamedOnTheFriction) {
+  for (const double f : {1e300, 1e-303}) {
+    ContactPatch p = seed_tire_patch();
+    p.friction = f;
+    try {
+      validate(p);
+      FAIL() << "no error for f = " << f;
+    } catch (const InvalidArgument& e) {
+      const std::string what = e.what();
+      EXPECT_EQ(what.rfind("friction = ", 0), 0u) << what;
+      EXPECT_NE(what.find("gives a torque scale f N R of 1e"), std::string::npos) << what;
+    }
+  }
+  ContactPatch p = seed_tire_patch();
+  p.friction = 1e250;  // f N R ~ 1e252: representable, accepted
+  EXPECT_NO_THROW(validate(p));
+}
+
 // Finite in, finite out or an error: the fractional law over parameters and kinematics from
 // 1e-300 to 1e300 (log-uniform, random signs) either throws InvalidArgument or returns finite
 // resultants and Jacobian. F0 = M0 = 1e308 is refused (it used to give NaN).

@@ -482,6 +482,33 @@ TEST(StabilityMap, AStopRequestStopsALandingAndTheMap) {
 // an error naming the budget and the input that is furthest from a landing gear's (a negative
 // torsional damping here), not after minutes; 0 is no bound, a negative budget is refused. (The
 // app's run that integrated on for minutes is tests/reliability/cases/shimmy.txt's.)
+// A stepped landing (the gear FMU): a tolerance CVODE cannot meet is refused by its range, not
+// by CVODE's flag; a communication step far longer than max_steps can cover names the step.
+TEST(LandingGear, AStepperNamesItsToleranceRangeAndAStepTooLong) {
+  const GearModel model = make_gear_model(GearConfig{}, ContactModel::coupled);
+  for (const double rtol : {1e-300, 1e-15, 0.1, 1.0}) {
+    SolverOptions o;
+    o.relative_tolerance = rtol;
+    try {
+      LandingStepper stepper(model, o, LandingInputs{});
+      ADD_FAILURE() << "relative_tolerance " << rtol << " accepted";
+    } catch (const contensou::InvalidArgument& e) {
+      EXPECT_NE(std::string(e.what()).find("solver.relative_tolerance = "), std::string::npos);
+      EXPECT_NE(std::string(e.what()).find("must lie in [1e-14, 0.1)"), std::string::npos);
+    }
+  }
+  SolverOptions o;
+  o.max_steps = 500;
+  LandingStepper stepper(model, o, LandingInputs{});
+  try {
+    stepper.advance_to(1e300);
+    ADD_FAILURE() << "a step of 1e300 s ended";
+  } catch (const std::runtime_error& e) {
+    EXPECT_NE(std::string(e.what()).find("in a step of 1e+300 s from t = 0 s"), std::string::npos)
+        << e.what();
+  }
+}
+
 TEST(LandingGear, ALandingPastItsStepBudgetEndsNamingIt) {
   GearConfig c;
   c.structure.torsional_damping_nms_per_rad = -100.0;

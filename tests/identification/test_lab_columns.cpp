@@ -135,8 +135,8 @@ TEST(LabColumns, UnknownOrWrongUnitsAreRefusedWithTheUnitsAccepted) {
   EXPECT_NE(twice.find("two columns for vx"), std::string::npos) << twice;
   // The SI-named column wins over the same quantity in another unit (logged twice by a rig).
   const MeasuredData both = read_measured_csv(
-      write("lab_both.csv", "vx_mps,vy_mps,omega_rpm,omega_radps,Fx_N\n1,2,600,3,4\n"));
-  EXPECT_EQ(both.points[0].kinematics.omega, 3.0);
+      write("lab_both.csv", "vx_mps,vy_mps,omega_rpm,omega_radps,Fx_N\n1,2,600,62.832,4\n"));
+  EXPECT_EQ(both.points[0].kinematics.omega, 62.832);
   // A near miss is still refused, now with the way to map it.
   const std::string miss = error_of("vx_mps,vy_mps,omega_radps,Fxx_N,Fy_N\n1,2,3,4,5\n");
   EXPECT_NE(miss.find("did you mean 'Fx_N'"), std::string::npos) << miss;
@@ -306,7 +306,70 @@ TEST(LabColumns, EveryOtherColumnIsRecordedOrListedAsNotRead) {
       write("lab_twice.csv", "vx_mps,vy_mps,omega_radps,omega [rpm],Fx_N\n1,0,10,95.5,-1200\n"));
   ASSERT_EQ(twice.columns_not_read.size(), 1u);
   EXPECT_EQ(twice.columns_not_read[0],
-            "'omega [rpm]' (column 4): omega is read from 'omega_radps' (column 3)");
+            "'omega [rpm]' (column 4): omega is read from 'omega_radps' (column 3); every row "
+            "checked to hold the same value");
+}
+
+// A second column of a channel beside its SI column is read only as a check: it must repeat the
+// SI column's values to the digits it writes, else it holds another channel and is refused
+// (the row named); one in a unit the channel does not have (Fx_raw) is refused until declared.
+TEST(LabColumns, ASecondColumnOfAChannelMustHoldTheSameValues) {
+  const std::string head = "vx_mps,vy_mps,omega_radps,Fx_N,Fy_N,";
+  const std::string same =
+      error_of(head + "Fx [kN]\n1,0,10,-1234.4,35,-1.234\n2,0,10,-80,36,-0.08\n");
+  EXPECT_EQ(same, "");  // 1.234 kN written to the newton: the same channel
+  const std::string other = error_of(head + "Fx [N]\n1,0,10,-1200,35,-1200\n2,0,10,-80,36,36\n");
+  EXPECT_NE(
+      other.find("lab_bad.csv:3: column 'Fx [N]' (6): is a second Fx beside 'Fx_N' (column 4), "
+                 "but this row differs: 36 N here = 36 N, -80 N in 'Fx_N'"),
+      std::string::npos)
+      << other;
+  EXPECT_NE(other.find("--columns extra='Fx [N]'"), std::string::npos) << other;
+  const std::string scaled = error_of(head + "Fx [kN]\n1,0,10,-1200,35,-1.212\n");
+  EXPECT_NE(scaled.find(":2: column 'Fx [kN]' (6): is a second Fx"), std::string::npos) << scaled;
+  const std::string raw = error_of(head + "Fx_raw\n1,0,10,-1200,35,-1212\n");
+  EXPECT_NE(raw.find("column 'Fx_raw' (6): is a second Fx beside 'Fx_N' in 'raw', which is not a "
+                     "unit of Fx"),
+            std::string::npos)
+      << raw;
+  // Declared, the same column is kept or left out; a units row gives a twin its unit.
+  const std::string path = write("lab_raw.csv", head + "Fx_raw\n1,0,10,-1200,35,-1212\n");
+  const MeasuredData kept = read_measured_csv(path, {{"extra", "Fx_raw"}});
+  ASSERT_EQ(kept.recorded.size(), 1u);
+  EXPECT_DOUBLE_EQ(kept.points[0].recorded[0], -1212.0);
+  EXPECT_EQ(read_measured_csv(path, {{"ignore", "Fx_raw"}}).recorded.size(), 0u);
+  EXPECT_EQ(error_of(head + "Fx\nm/s,m/s,rad/s,N,N,kN\n1,0,10,-1200,35,-1.2\n"), "");
+  EXPECT_NE(error_of(head + "Fx\nm/s,m/s,rad/s,N,N,N\n1,0,10,-1200,35,-1.2\n").find("differs"),
+            std::string::npos);
+}
+
+// Missing values as labs write them (n/a, NA, -, nan, empty) are missing in that cell only, and
+// counted a column; in the kinematics they are refused.
+TEST(LabColumns, MissingValueSpellingsAreMissingCellByCell) {
+  const MeasuredData d = read_measured_csv(
+      write("lab_missing.csv",
+            "vx_mps,vy_mps,omega_radps,Fx_N,Mz_Nm,T [degC]\n"
+            "1,0,10,n/a,-7.5,NA\n2,0,10,-1300,-,21\n3,0,10,NA,,22\n4,0,10,-1400,nan,-\n"));
+  ASSERT_EQ(d.points.size(), 4u);
+  EXPECT_FALSE(d.points[0].force[0].has_value());
+  EXPECT_DOUBLE_EQ(*d.points[1].force[0], -1300.0);
+  EXPECT_FALSE(d.points[1].force[2].has_value());
+  ASSERT_EQ(d.recorded.size(), 1u);  // "NA" first did not make it a text column
+  EXPECT_TRUE(std::isnan(d.points[0].recorded[0]));
+  EXPECT_DOUBLE_EQ(d.points[2].recorded[0], 295.15);
+  ASSERT_EQ(d.missing_values.size(), 3u);
+  EXPECT_EQ(d.missing_values[0], "'Fx_N' (column 4): 2 of 4 rows (NA 1, n/a 1)");
+  EXPECT_EQ(d.missing_values[1], "'Mz_Nm' (column 5): 3 of 4 rows (empty 1, - 1, nan 1)");
+  EXPECT_EQ(d.missing_values[2], "'T [degC]' (column 6): 2 of 4 rows (- 1, NA 1)");
+  const std::string kin = error_of("vx_mps,vy_mps,omega_radps,Fx_N\n1,0,10,-5\n1,N/A,10,-5\n");
+  EXPECT_NE(kin.find(":3: column 'vy_mps' (2): 'N/A', a missing value (the kinematics vx, vy, "
+                     "omega must be given in every row)"),
+            std::string::npos)
+      << kin;
+  // Text that is no spelling of a missing value is still refused in a numeric column.
+  EXPECT_NE(error_of("vx_mps,vy_mps,omega_radps,Fx_N\n1,0,10,-5\n1,0,10,n.a.\n")
+                .find("not a number: 'n.a.'"),
+            std::string::npos);
 }
 
 // Time is "t" or "time": a capital T (a temperature, more often than not) is a recorded

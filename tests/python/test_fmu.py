@@ -221,7 +221,33 @@ def test_bad_export_options_are_refused(folder: Path) -> None:
     for name in ("tire\abell", "a\x01b\x1bc"):
         with pytest.raises(ValueError, match="model_name .*control character"):
             c.fmu.export(c.seed_tire_patch(), folder / "bad.fmu", model_name=name)
+    # Arguments of the wrong kind: a clear TypeError or ValueError naming them, nothing written.
+    with pytest.raises(TypeError, match="patch: a ContactPatch .* is required, not str"):
+        c.fmu.export("seed-tire", folder / "bad.fmu")  # type: ignore[arg-type]
+    for version in ("3", True, 2.0):
+        with pytest.raises(TypeError, match="fmi_version: the integer 2 or 3 is required"):
+            c.fmu.export(c.seed_tire_patch(), folder / "bad.fmu", fmi_version=version)
+        with pytest.raises(TypeError, match="fmi_version: the integer 2 or 3 is required"):
+            c.fmu.export_gear(folder / "bad.fmu", fmi_version=version)
+    with pytest.raises(ValueError, match="fmi_version = 4: must be 2"):
+        c.fmu.export_gear(folder / "bad.fmu", fmi_version=4)
     assert not (folder / "bad.fmu").exists()
+
+
+def test_gear_fmu_names_a_tolerance_cvode_cannot_meet(folder: Path) -> None:
+    """A relative tolerance of 1e-300 set on the gear FMU is refused naming the parameter and its
+    range (it failed with CVODE's bare flag)."""
+    path = folder / "gear_tolerance.fmu"
+    c.fmu.export_gear(path)
+    messages: list[str] = []
+
+    def log(env: object, name: object, status: object, category: object, message: object) -> None:
+        messages.append(message.decode() if isinstance(message, bytes) else str(message))
+
+    with pytest.raises(Exception):
+        simulate_fmu(str(path), fmi_type="CoSimulation", stop_time=0.1, logger=log,
+                     start_values={"solver.relative_tolerance": 1e-300})
+    assert any("solver.relative_tolerance = 1e-300: must lie in [1e-1" in m for m in messages), messages
 
 
 def oscillation(t: np.ndarray, rate: np.ndarray, position: np.ndarray) -> tuple[float, float]:

@@ -202,6 +202,20 @@ def test_dask_map_equals_the_serial_map(app_run, serial_map):
         np.testing.assert_array_equal(a, b)
 
 
+def test_bifurcation_sweep_arguments_are_checked_before_anything_runs():
+    """threads must be an integer (not '4', 2.7 or True), an axis given as a mapping needs all
+    four keys: each a clear error naming the argument, before a point is simulated."""
+    axis = ("structure.offset_m", 0.3, 0.54, 2)
+    for threads in ("4", 2.7, True, -1):
+        with pytest.raises((TypeError, ValueError), match=r"threads = .*: must be an integer"):
+            c.bifurcation_sweep(None, axis, threads=threads)
+    with pytest.raises(ValueError, match=r"missing to \(an axis is \{parameter, from, to, points\}\)"):
+        c.bifurcation_sweep(None, {"parameter": "structure.offset_m", "from": 0.3, "points": 2})
+    with pytest.raises(ValueError, match="unknown key stop"):
+        c.bifurcation_sweep(None, {"parameter": "structure.offset_m", "from": 0.3, "to": 0.5,
+                                   "points": 2, "stop": 1})
+
+
 def test_bifurcation_sweep_equals_the_apps_csv(shimmy_app, tmp_path):
     """contensou.bifurcation_sweep is contensou-shimmy --bifurcation's sweep, row for row, as a
     DataFrame with its linear boundary."""

@@ -216,6 +216,32 @@ def test_a_column_that_looks_like_a_channel_is_never_dropped_unread():
     assert [x["header"] for x in kept["input"]["recorded_columns"]] == ["Fxx"]
 
 
+def test_a_second_column_of_a_channel_must_repeat_it_and_missing_spellings_are_counted():
+    """A DataFrame with the channel again beside its SI column is read as the app reads the
+    file: kept only when every row repeats it (to the digits written), refused naming the row
+    when it holds another channel; 'n/a', 'NA' and '-' are missing cell by cell and counted; the
+    same column name twice is refused by name."""
+    df = pd.read_csv(DATA, comment="#")
+    si = c.identify(df, radius=0.087, loop=False)
+    same = c.identify(df.assign(**{"Fx [kN]": (df["Fx_N"] / 1000.0).round(4)}), radius=0.087,
+                      loop=False)
+    assert same.parameters["F0_N"].value == si.parameters["F0_N"].value
+    with pytest.raises(ValueError, match=re.escape("is a second Fx beside 'Fx_N'")):
+        c.identify(df.assign(**{"Fx [N]": df["Fy_N"]}), radius=0.087, loop=False)
+    with pytest.raises(ValueError, match=re.escape("column 'Fx_raw' (8): is a second Fx")):
+        c.identify(df.assign(Fx_raw=1.01 * df["Fx_N"]), radius=0.087, loop=False)
+    text = df.astype({"Fy_N": object})
+    text.loc[[3, 5], "Fy_N"] = "n/a"
+    text.loc[8, "Fy_N"] = "NA"
+    r = c.identify(text, radius=0.087, loop=False)
+    assert np.isnan(r.measured[3, 1]) and np.isnan(r.measured[8, 1])
+    assert json.loads(r.to_json())["input"]["missing_values"] == [
+        f"'Fy_N' (column 5): 3 of {len(df)} rows (NA 1, n/a 2)"]
+    twice = pd.concat([df, df[["Fx_N"]]], axis=1)
+    with pytest.raises(ValueError, match=re.escape("duplicate column 'Fx_N' (columns 4 and 8)")):
+        c.identify(twice, radius=0.087, loop=False)
+
+
 def test_gross_errors_are_named_and_left_out_as_the_app_does(identify_app, tmp_path):
     """Glitched rows (a sign flip, a spike) are found by Python as by the app: the same report
     byte for byte, the values left out are NaN in ``measured``, and ``text`` is what the app

@@ -119,9 +119,11 @@ struct MeasuredProfile {
   PressureProfile profile;             ///< the tabulated shape
   double reference_pressure_pa = 0.0;  ///< p* [Pa]
 };
-/// Reads a measured profile (MeasuredProfile). Throws ParseError for a malformed file and
-/// InvalidArgument for a table tabulated_profile refuses.
-MeasuredProfile read_profile_csv(const std::string& path);
+/// Reads a measured profile (MeasuredProfile). With `clip_negative` the table is clipped at zero
+/// (PressureProfile::clip_negative) before its mean is taken: p* is then the clipped table's
+/// mean pressure, as the patch carries it. Throws ParseError for a malformed file or a mean
+/// pressure that is not positive, and InvalidArgument for a table tabulated_profile refuses.
+MeasuredProfile read_profile_csv(const std::string& path, bool clip_negative = false);
 
 /// The same file as its rows (rho, pressure in Pa), validated, for a smoothing fit.
 struct ProfileTable {

@@ -29,7 +29,7 @@ enum class Integrator {
 /// relative_tolerance times its scale in kStateScale; only the states the configuration switches
 /// on are integrated.
 struct SolverOptions {
-  double relative_tolerance = 1e-7;  ///< CVODE's relative tolerance (> 0)
+  double relative_tolerance = 1e-7;  ///< CVODE's relative tolerance (require_relative_tolerance)
   double output_interval_s = 5e-4;   ///< [s] samples for the time history and the shimmy analysis
   bool record = true;                ///< keep the samples (the analysis runs either way)
   long max_steps = 1000000;          ///< steps between two outputs (at least 1)
@@ -99,6 +99,16 @@ struct LandingRun {
   long convergence_failures = 0;  ///< of the Newton iteration
   double wall_s = 0.0;            ///< wall-clock time of simulate_landing [s]
 };
+
+/// The tightest relative tolerance CVODE can meet on the gear in double precision: tighter, the
+/// weighted norm of the state times the unit roundoff passes 1 (CVODE's CV_TOO_MUCH_ACC).
+inline constexpr double kTightestRelativeTolerance = 1e-14;
+/// The loosest relative tolerance taken (excluded): looser is no integration.
+inline constexpr double kLoosestRelativeTolerance = 0.1;
+
+/// Throws InvalidArgument naming `name` unless `rtol` lies in [kTightestRelativeTolerance,
+/// kLoosestRelativeTolerance).
+void require_relative_tolerance(const std::string& name, double rtol);
 
 /// The analysis window [s] of a scenario: from full load to the end, when braking from the later
 /// of full load and brake on + 0.1 s to the earlier of brake off and the end; explicit

@@ -55,8 +55,13 @@ struct StabilityMap {
 
 /// Throws InvalidArgument naming the axis (`name`, e.g. "map x") unless its parameter is a number
 /// key of the gear, 1..10000 points, both ends and their span finite, and both ends inside the
-/// key's valid values (gear_parameters.hpp; checked at `config` with the end set).
+/// key's valid values (gear_parameters.hpp; checked at `config` with the end set), and two
+/// different ends for more than one point (equal ends would repeat one value).
 void check_map_axis(const GearConfig& config, const MapAxis& axis, const std::string& name);
+
+/// check_map_axis for a bifurcation sweep's axis, which also needs at least 2 points (the sweep
+/// is a diagram along the parameter); InvalidArgument named "sweep".
+void check_sweep_axis(const GearConfig& config, const MapAxis& axis);
 /// Both axes ("map x", "map y"), and that they are two different keys.
 void check_map_axes(const GearConfig& config, const MapAxis& x, const MapAxis& y);
 

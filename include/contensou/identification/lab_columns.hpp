@@ -87,6 +87,19 @@ struct LabColumns {
   bool units_row = false;                ///< the first row under the header holds units: not data
   std::vector<RecordedColumn> recorded;  ///< the file's other columns, kept
   std::vector<std::string> not_read;     ///< why each remaining column is not read, for reports
+  /// A second column of a quantity beside the one read under its SI name, in a unit of that
+  /// quantity ("omega [rpm]" beside omega_radps, "Fx [kN]" beside Fx_N): not read, but every
+  /// row's value must equal the read column's to the digits written (measured_data.hpp checks
+  /// them), else the file is refused: the column holds another channel.
+  struct Twin {
+    int quantity = 0;    ///< MeasuredQuantity, as an index of column
+    int index = -1;      ///< the twin's column in the table (0-based)
+    std::string header;  ///< as written (trimmed)
+    std::string unit;    ///< as written ("" for SI)
+    double to_si = 1.0;  ///< value in SI = to_si * value in the file
+    std::string remedy;  ///< how to say what it is ("map it (--columns Fx='Fx [N]'); else ...")
+  };
+  std::vector<Twin> twins;  ///< every such column, checked row by row when the rows are read
 
   /// The column of quantity `q`.
   const LabColumn& operator[](MeasuredQuantity q) const { return column[static_cast<int>(q)]; }
@@ -126,7 +139,9 @@ struct LabHeader {
 /// Resolves the columns. Throws ParseError naming file, line and column for: a unit this reader
 /// does not convert (with the units it accepts), a unit of the wrong kind (Mz [N]), two columns
 /// for one quantity (the same name twice included; but when exactly one of two has the SI name,
-/// that one is read and the other listed as not read), a units row that disagrees with the
+/// that one is read and the other, in a unit of the quantity, is a Twin whose values the rows
+/// must confirm; one in a unit this reader does not know, Fx_raw, is refused until --columns
+/// says what it is), a units row that disagrees with the
 /// header, a rename naming no column, and a column no quantity reads that looks like a misspelt
 /// one or holds a force or a moment (Mx and My excepted: known channels the law does not use).
 LabColumns resolve_lab_columns(const LabHeader& in, const ColumnRenames& renames = {});

@@ -62,6 +62,11 @@ struct MeasuredData {
   std::vector<RecordedVariable> recorded;
   /// The columns not read at all, with the reason ("'comment' (column 9): text").
   std::vector<std::string> columns_not_read;
+  /// The missing cells of each column read, counted with how the file spells them (an empty
+  /// cell, "n/a", "NA", "-", "nan", "null", "#N/A"; case ignored): "'Fx_N' (column 4): 3 of 514
+  /// rows (n/a 2, NA 1)". A force or a recorded value missing is not measured in that row; the
+  /// kinematics must be given in every row.
+  std::vector<std::string> missing_values;
   /// The unit a channel's column is in: value in SI = to_si * value in the file.
   struct ChannelUnit {
     std::string unit = "";  ///< as the file writes it ("kN"; "" for SI)
@@ -81,12 +86,14 @@ struct MeasuredData {
 
 /// Reads the CSV: header row, columns in any order (vx_mps, vy_mps, omega_radps required;
 /// Fx_N, Fy_N, Mz_Nm, Fz_N, t_s optional; every other numeric column kept as a recorded
-/// variable, text columns listed as not read), '#' comments, empty cell = not measured. Columns may
+/// variable, text columns listed as not read), '#' comments, an empty cell or another spelling
+/// of a missing value (MeasuredData::missing_values) = not measured. Columns may
 /// carry other units, in the name (omega_rpm, "Fx [kN]") or in a units row under the header, and
 /// other names through `renames` (lab_columns.hpp); values are converted to SI. Throws ParseError
 /// naming file, line and column for a missing or unreadable file (read_csv), a malformed or
 /// non-finite cell, a missing required column or an empty kinematic cell, an Fz value that is
-/// not positive, a unit this reader does not convert, text in a numeric recorded column, a file
+/// not positive, a unit this reader does not convert, text in a numeric recorded column, a
+/// second column of a quantity whose values differ from the read one's (LabColumns::Twin), a file
 /// without data rows and a file without any channel (unless `channels_optional`: rows to predict,
 /// whose forces are not needed).
 MeasuredData read_measured_csv(const std::string& path, const ColumnRenames& renames = {},

@@ -42,6 +42,7 @@ struct ReportInput {
   std::vector<std::string> column_notes;      ///< columns read under other names or units
   std::vector<RecordedSummary> recorded;      ///< the file's columns the law does not read
   std::vector<std::string> columns_not_read;  ///< and those not read at all, with the reason
+  std::vector<std::string> missing_values;    ///< missing cells a column, with their spellings
   std::vector<Outlier> outliers;              ///< gross errors left out of the fit
   std::vector<Outlier> put_back;  ///< first taken for gross errors, fitted by the final model
   std::string profile;            ///< how the pressure profile was given ("" if none)
