@@ -140,6 +140,71 @@ TablePieces table_pieces(const TabulatedShape& tab, bool clip, double& error) {
   return m;
 }
 
+// The Hermite cubic on [ta, tb] through (ta, pa) and (tb, pb) with slopes da, db, at t: the
+// form of every piece of a table (table_pieces).
+double hermite(double ta, double tb, double pa, double pb, double da, double db, double t) {
+  const double h = tb - ta, s = t - ta, del = (pb - pa) / h;
+  return pa +
+         s * (da + s * ((3.0 * del - 2.0 * da - db) / h + s * (da + db - 2.0 * del) / (h * h)));
+}
+
+// The largest deviation of the cubic over the table's knots i..j (its values and slopes at i
+// and j) from the table's own pieces, at the knots between and the quarter points of each piece.
+double gap_deviation(const TabulatedShape& tab, std::size_t i, std::size_t j) {
+  const double ti = tab.rho[i] * tab.rho[i], tj = tab.rho[j] * tab.rho[j];
+  double worst = 0.0;
+  for (std::size_t k = i; k < j; ++k) {
+    const double ta = tab.rho[k] * tab.rho[k], tb = tab.rho[k + 1] * tab.rho[k + 1];
+    for (const double f : {0.0, 0.25, 0.5, 0.75}) {
+      if (k == i && f == 0.0) continue;  // the gap's own end: equal by construction
+      const double t = ta + f * (tb - ta);
+      const double table =
+          hermite(ta, tb, tab.p[k], tab.p[k + 1], tab.slope[k], tab.slope[k + 1], t);
+      const double thin = hermite(ti, tj, tab.p[i], tab.p[j], tab.slope[i], tab.slope[j], t);
+      worst = std::max(worst, std::abs(thin - table));
+    }
+  }
+  return worst;
+}
+
+// A dense table (a finite-element or film profile of thousands of knots) thinned for the
+// integrals, whose cost grows with the knots: the knots kept by bisection of the index range
+// until the Hermite cubics through the kept knots (the table's own values and slopes there) stay
+// within `tol` of the table's pieces (gap_deviation). `deviation` is the largest deviation left;
+// the table itself (deviation 0) when thinning would not halve it.
+TabulatedShape thinned_table(const TabulatedShape& tab, double tol, double& deviation) {
+  const std::size_t n = tab.rho.size();
+  std::vector<char> keep(n, 0);
+  keep.front() = keep.back() = 1;
+  std::vector<std::pair<std::size_t, std::size_t>> gaps{{0, n - 1}};
+  double worst = 0.0;
+  while (!gaps.empty()) {
+    const auto [i, j] = gaps.back();
+    gaps.pop_back();
+    if (j - i < 2) continue;
+    const double e = gap_deviation(tab, i, j);
+    if (e <= tol) {
+      worst = std::max(worst, e);
+      continue;
+    }
+    const std::size_t mid = i + (j - i) / 2;
+    keep[mid] = 1;
+    gaps.push_back({i, mid});
+    gaps.push_back({mid, j});
+  }
+  TabulatedShape out;
+  for (std::size_t k = 0; k < n; ++k)
+    if (keep[k]) {
+      out.rho.push_back(tab.rho[k]);
+      out.p.push_back(tab.p[k]);
+      out.slope.push_back(tab.slope[k]);
+    }
+  deviation = 0.0;
+  if (2 * out.rho.size() > n) return tab;
+  deviation = worst;
+  return out;
+}
+
 }  // namespace
 
 ExactModel<double> make_exact_model(const ContactPatch& patch, double representation_tolerance) {
@@ -180,9 +245,20 @@ ExactModel<double> make_exact_model(const ContactPatch& patch, double representa
   } else if (const auto* cs = std::get_if<ChebyshevShape>(&prof.shape); cs && rho_max == 1.0) {
     m.set_series(cs->c, false, 0.0);  // already a series in t = rho^2: exact
   } else if (const auto* tab = std::get_if<TabulatedShape>(&prof.shape)) {
-    double error = 0.0;
-    TablePieces pieces = table_pieces(*tab, prof.clip_negative, error);
-    m.set_table(std::move(pieces), error);
+    // A table of more than kThinFromKnots knots is thinned when the caller allows a
+    // representation error (from kThinTolerance up; the default keeps the table as it is), to
+    // that tolerance relative to its largest value; its deviation, doubled as a margin for the
+    // points between those checked, joins the representation error.
+    constexpr std::size_t kThinFromKnots = 256;
+    constexpr double kThinTolerance = 1e-12;
+    double largest = 0.0, thinning = 0.0, error = 0.0;
+    for (double v : tab->p) largest = std::max(largest, std::abs(v));
+    const TabulatedShape used =
+        tab->rho.size() > kThinFromKnots && representation_tolerance >= kThinTolerance
+            ? thinned_table(*tab, 0.5 * representation_tolerance * largest, thinning)
+            : *tab;
+    TablePieces pieces = table_pieces(used, prof.clip_negative, error);
+    m.set_table(std::move(pieces), error + 2.0 * thinning);
   } else {
     ChebyshevFit fit =
         fit_chebyshev([&](double t) { return shape_value(prof, rho_max * std::sqrt(t)); },

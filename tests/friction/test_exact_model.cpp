@@ -34,6 +34,40 @@ TEST(ExactResultants, RepresentationToleranceTradesTermsForAReportedError) {
   EXPECT_THROW(make_exact_model(patch, 0.0), InvalidArgument);
 }
 
+// A dense table (4001 knots of a profile with a kink at rho = 0.6, as a finite-element model
+// writes it) is thinned for the integrals to the knots its cubics need at the tolerance asked:
+// far fewer, the kink kept, the deviation in the representation error, and the resultants within
+// that error of the whole table's (the default tolerance keeps every knot).
+TEST(ExactResultants, ADenseTableIsThinnedToItsToleranceKeepingItsKink) {
+  std::vector<double> rho, pressure;
+  for (int i = 0; i <= 4000; ++i) {
+    const double r = i / 4000.0;
+    rho.push_back(r);
+    pressure.push_back(r < 0.6 ? 1.0 + 0.5 * r * r
+                               : 1.18 - 2.0 * (r - 0.6) * (r - 0.6) - 0.4 * (r - 0.6));
+  }
+  ContactPatch patch = uniform_patch();
+  patch.profile = tabulated_profile(rho, pressure);
+  patch.profile.kx = 0.1;
+  const ExactModel<double> whole = make_exact_model(patch), thin = make_exact_model(patch, 1e-6);
+  ASSERT_TRUE(whole.table() && thin.table());
+  EXPECT_EQ(whole.table()->knot.size(), 4001u);
+  EXPECT_LT(thin.table()->knot.size(), 400u);
+  EXPECT_GT(thin.representation_error(), 0.0);
+  EXPECT_LT(thin.representation_error(), 2e-6);
+  const auto near_kink = std::find_if(thin.table()->knot.begin(), thin.table()->knot.end(),
+                                      [](double t) { return std::abs(t - 0.36) < 1e-3; });
+  EXPECT_NE(near_kink, thin.table()->knot.end());  // t = rho^2 = 0.36 at the kink
+  for (const Kinematics<double> k :
+       {Kinematics<double>{0.03, 0.01, 0.5 / patch.radius_m}, Kinematics<double>{0.0, 0.0, 1.0}}) {
+    const auto a = exact_resultants(whole, k, {1e-9}), b = exact_resultants(thin, k, {1e-9});
+    const double scale = whole.pressure * whole.load_area * whole.friction;  // f N
+    EXPECT_LE(std::abs(a.resultants.Fx - b.resultants.Fx), 2e-6 * scale);
+    EXPECT_LE(std::abs(a.resultants.Fy - b.resultants.Fy), 2e-6 * scale);
+    EXPECT_LE(std::abs(a.resultants.Mz - b.resultants.Mz), 2e-6 * scale * patch.radius_m);
+  }
+}
+
 // A table with a negative part, clipped: the pieces are split at their zero crossings and the
 // negative parts become zero pieces, so the integrals stay exact for max(p, 0).
 TEST(ExactResultants, ClippedTableIsSplitAtItsZeros) {

@@ -112,7 +112,10 @@ struct ExactModel {
 };
 
 /// Builds the model of a patch (theory.md §2): p as it is for uniform, Hertz and Chebyshev
-/// profiles (exact), a table's cubic pieces as they are (clipped at zero if the profile says),
+/// profiles (exact), a table's cubic pieces as they are (clipped at zero if the profile says; a
+/// table of more than 256 knots, a finite-element or film profile, thinned at a tolerance of
+/// 1e-12 or more to the knots whose cubics stay within it relative to its largest value, the
+/// deviation added to the representation error; the default keeps every knot),
 /// else a Chebyshev fit in t = rho^2 to representation_tolerance relative to the profile (a
 /// smooth profile reaches 1e-15 with ~24 terms; loosen it for speed, the representation error
 /// enters every error estimate). A clipped profile negative only near the rim shrinks the disk
