@@ -67,6 +67,11 @@ Json dependence_json(const ModelSpec& spec) {
 
 Json patch_json(const std::optional<RigidPatch>& p) {
   if (!p) return Json();
+  Json wider;  // null: the bound c <= 1 does not hold the search (rigid_patch.hpp)
+  if (p->wider_contact)
+    wider = {{"radius_ratio", p->wider_contact->radius_ratio},
+             {"exponent", p->wider_contact->exponent},
+             {"median_angle_deg", p->wider_contact->median_angle_deg}};
   return {{"radius_m", p->radius_m},
           {"contact_radius_ratio", p->contact_radius_ratio},
           {"exponent", p->exponent},
@@ -74,7 +79,8 @@ Json patch_json(const std::optional<RigidPatch>& p) {
           {"ky", p->ky},
           {"force_scale_N", p->force_scale_n},
           {"median_angle_deg", p->median_angle_deg},
-          {"rows", p->rows}};
+          {"rows", p->rows},
+          {"wider_contact", wider}};
 }
 
 }  // namespace
@@ -231,6 +237,13 @@ std::optional<RigidPatch> read_patch(const Reader& r, const Json& j) {
   p.force_scale_n = r.number(m, "force_scale_N", "motion_patch.");
   p.median_angle_deg = m.value("median_angle_deg", 0.0);
   p.rows = m.value("rows", 0);
+  if (m.contains("wider_contact") && !m.at("wider_contact").is_null()) {
+    const Json& w = m.at("wider_contact");
+    const std::string where = "motion_patch.wider_contact.";
+    p.wider_contact = WiderContact{r.number(w, "radius_ratio", where),
+                                   static_cast<int>(r.number(w, "exponent", where)),
+                                   r.number(w, "median_angle_deg", where)};
+  }
   try {
     validate(p);
   } catch (const InvalidArgument& e) {

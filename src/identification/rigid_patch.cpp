@@ -59,15 +59,25 @@ Eigen::Vector3d scaled_unit(const Eigen::Vector3d& twist, double radius_m) {
   return Eigen::Vector3d(twist.x(), twist.y(), twist.z() * radius_m).normalized();
 }
 
-// The median angle [rad] between the motion the patch gives each row's wrench and its motion
+// The surface of the patch's shape on a disk of radius c R, unchecked (c > 1 allowed: the wider
+// contacts of WiderContact), at force scale f N.
+LimitSurface shape_surface(const RigidPatch& p, double tolerance) {
+  PressureProfile profile = power_profile(p.exponent);
+  profile.kx = p.kx;
+  profile.ky = p.ky;
+  const ContactPatch patch = ContactPatch::from_normal_load(p.contact_radius_ratio * p.radius_m,
+                                                            p.force_scale_n, profile, 1.0);
+  return make_limit_surface(patch, tolerance);
+}
+
+// The median angle [rad] between the motion the surface gives each row's wrench and its motion
 // (a row the surface cannot place counts as pi).
-double median_angle(const RigidPatch& patch, const PairRows& rows, double tolerance) {
-  const LimitSurface surface = limit_surface_of(patch, tolerance);
+double median_angle(const LimitSurface& surface, double radius_m, const PairRows& rows) {
   std::vector<double> angles;
   angles.reserve(rows.twist.size());
   for (std::size_t i = 0; i < rows.twist.size(); ++i) {
-    const Eigen::Vector3d m = rigid_patch_motion(surface, patch.radius_m, rows.wrench[i]);
-    const double a = angle_rad(m, scaled_unit(rows.twist[i], patch.radius_m));
+    const Eigen::Vector3d m = rigid_patch_motion(surface, radius_m, rows.wrench[i]);
+    const double a = angle_rad(m, scaled_unit(rows.twist[i], radius_m));
     angles.push_back(std::isfinite(a) ? a : std::numbers::pi);
   }
   const std::size_t mid = angles.size() / 2;
@@ -77,6 +87,10 @@ double median_angle(const RigidPatch& patch, const PairRows& rows, double tolera
     median = 0.5 * (median + *std::max_element(angles.begin(),
                                                angles.begin() + static_cast<std::ptrdiff_t>(mid)));
   return median;
+}
+
+double median_angle(const RigidPatch& patch, const PairRows& rows, double tolerance) {
+  return median_angle(limit_surface_of(patch, tolerance), patch.radius_m, rows);
 }
 
 void check_options(const RigidPatchOptions& o) {
@@ -101,6 +115,33 @@ void check_options(const RigidPatchOptions& o) {
   for (double k : o.shifts)
     if (!(std::abs(k) <= 1.0))
       throw InvalidArgument("shifts", format_value(k), "must be in [-1, 1]");
+  for (double c : o.wider_radius_ratios)
+    if (!(c > 1.0 && c <= 10.0))
+      throw InvalidArgument("wider_radius_ratios", format_value(c), "must be in (1, 10]");
+  if (!(o.wider_margin >= 0.0 && o.wider_margin < 1.0))
+    throw InvalidArgument("wider_margin", format_value(o.wider_margin), "must be in [0, 1)");
+}
+
+// The best contact wider than the body (WiderContact) when the search ended on c = 1 and one
+// places the motions better by more than the margin; none otherwise.
+std::optional<WiderContact> wider_contact(const RigidPatch& best, double best_angle,
+                                          const PairRows& rows, const RigidPatchOptions& o) {
+  if (best.contact_radius_ratio != 1.0) return std::nullopt;
+  WiderContact w;
+  double least = best_angle;
+  for (int n : o.exponents)
+    for (double c : o.wider_radius_ratios) {
+      RigidPatch p = best;
+      p.exponent = n;
+      p.contact_radius_ratio = c;
+      const double a = median_angle(shape_surface(p, o.tolerance), p.radius_m, rows);
+      if (a < least) {
+        least = a;
+        w = {c, n, a * 180.0 / std::numbers::pi};
+      }
+    }
+  if (!(least < (1.0 - o.wider_margin) * best_angle)) return std::nullopt;
+  return w;
 }
 
 // The coordinate search (header comment of rigid_patch.hpp): the grid value with the least
@@ -203,12 +244,7 @@ Eigen::Vector2d centre_of_pressure_m(const RigidPatch& p) {
 
 LimitSurface limit_surface_of(const RigidPatch& p, double tolerance) {
   validate(p);
-  PressureProfile profile = power_profile(p.exponent);
-  profile.kx = p.kx;
-  profile.ky = p.ky;
-  const ContactPatch patch = ContactPatch::from_normal_load(p.contact_radius_ratio * p.radius_m,
-                                                            p.force_scale_n, profile, 1.0);
-  return make_limit_surface(patch, tolerance);
+  return shape_surface(p, tolerance);
 }
 
 Eigen::Vector3d rigid_patch_wrench(const LimitSurface& surface, const Eigen::Vector3d& twist) {
@@ -240,6 +276,7 @@ RigidPatch fit_rigid_patch(const MeasuredData& data, double radius_m,
   RigidPatch out = search.best();
   out.median_angle_deg = search.best_angle() * 180.0 / std::numbers::pi;
   out.rows = static_cast<int>(rows.twist.size());
+  out.wider_contact = wider_contact(out, search.best_angle(), rows, options);
   out.force_scale_n = force_scale(out, all);
   return out;
 }
@@ -254,7 +291,20 @@ std::string rigid_patch_text(const RigidPatch& p) {
                 p.exponent, p.kx, p.ky, p.contact_radius_ratio,
                 1e3 * p.contact_radius_ratio * p.radius_m, 1e3 * cop.x(), 1e3 * cop.y(),
                 p.force_scale_n, p.median_angle_deg, p.rows);
-  return buf;
+  std::string out = buf;
+  if (p.wider_contact) {
+    const WiderContact& w = *p.wider_contact;
+    std::snprintf(buf, sizeof buf,
+                  "; the search ends on its bound a = R (no contact is wider than the body): a "
+                  "contact of %.2g R with n = %d, wider than the body, would place the motions "
+                  "with a median angle of %.3g deg",
+                  w.radius_ratio, w.exponent, w.median_angle_deg);
+    out += std::string(buf) +
+           ": the data carry more torque for their spin than any pressure under the body "
+           "gives (the torque or the spin as measured, or a torque from outside the contact "
+           "such as a pusher's friction); the motion predicted stays this patch's";
+  }
+  return out;
 }
 
 }  // namespace contensou

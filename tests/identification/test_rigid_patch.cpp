@@ -76,6 +76,32 @@ TEST(RigidPatch, RowsOfAPatchGiveThePatchBack) {
   EXPECT_EQ(fit.rows, 120);
 }
 
+// Rows of a ring wider than the body (1.3 R, no pressure under the body gives them) end the
+// search on its bound a = R, and the wider contact it reports is the ring's; rows of a patch on
+// the body report none, and the text says what the bound means only when it holds.
+TEST(RigidPatch, RowsOfAContactWiderThanTheBodyAreNamedAsSuch) {
+  RigidPatch ring = grid_patch();
+  ring.exponent = 32;
+  ring.kx = ring.ky = 0.0;
+  ring.contact_radius_ratio = 1.3;
+  const RigidPatch fit = fit_rigid_patch(rows_of(ring, 80, 7), kR);
+  EXPECT_DOUBLE_EQ(fit.contact_radius_ratio, 1.0);
+  ASSERT_TRUE(fit.wider_contact.has_value());
+  EXPECT_DOUBLE_EQ(fit.wider_contact->radius_ratio, 1.3);
+  EXPECT_EQ(fit.wider_contact->exponent, 32);
+  EXPECT_LT(fit.wider_contact->median_angle_deg, 1e-3);
+  EXPECT_GT(fit.median_angle_deg, 0.5);
+  EXPECT_NE(rigid_patch_text(fit).find("wider than the body"), std::string::npos);
+
+  const RigidPatch on_body = fit_rigid_patch(rows_of(grid_patch(), 80, 7), kR);
+  EXPECT_FALSE(on_body.wider_contact.has_value());
+  EXPECT_EQ(rigid_patch_text(on_body).find("wider than the body"), std::string::npos);
+
+  RigidPatchOptions none;
+  none.wider_radius_ratios.clear();
+  EXPECT_FALSE(fit_rigid_patch(rows_of(ring, 40, 7), kR, none).wider_contact.has_value());
+}
+
 TEST(RigidPatch, TheMotionOfAWrenchIsTheMotionThatMadeIt) {
   const RigidPatch truth = grid_patch();
   const LimitSurface s = limit_surface_of(truth, 1e-10);
@@ -144,6 +170,12 @@ TEST(RigidPatch, BadPatchesOptionsAndDataAreRefusedByName) {
   bad = {};
   bad.shifts = {2.0};
   EXPECT_THROW(fit_rigid_patch(d, kR, bad), InvalidArgument);
+  bad = {};
+  bad.wider_radius_ratios = {1.0};
+  EXPECT_THROW(fit_rigid_patch(d, kR, bad), InvalidArgument);
+  bad = {};
+  bad.wider_margin = 1.0;
+  EXPECT_THROW(fit_rigid_patch(d, kR, bad), InvalidArgument);
   EXPECT_THROW(fit_rigid_patch(d, 0.0), InvalidArgument);
   // Friction that drives the motion: no patch gives it.
   MeasuredData driving = d;
@@ -157,8 +189,13 @@ TEST(RigidPatch, TheModelFileCarriesThePatchAndPredictUsesIt) {
   ModelSpec s = base_model_spec(kR, 3.0);
   s.value[kF0] = 3.0;
   s.motion_patch = truth;
+  s.motion_patch->wider_contact = WiderContact{1.2, 16, 4.5};
   const ModelSpec back = model_from_json(model_to_json(s), "m.json");
   ASSERT_TRUE(back.motion_patch);
+  ASSERT_TRUE(back.motion_patch->wider_contact);
+  EXPECT_DOUBLE_EQ(back.motion_patch->wider_contact->radius_ratio, 1.2);
+  EXPECT_EQ(back.motion_patch->wider_contact->exponent, 16);
+  EXPECT_DOUBLE_EQ(back.motion_patch->wider_contact->median_angle_deg, 4.5);
   EXPECT_EQ(back.motion_patch->exponent, 8);
   EXPECT_DOUBLE_EQ(back.motion_patch->kx, 0.2);
   EXPECT_DOUBLE_EQ(back.motion_patch->contact_radius_ratio, 0.8);

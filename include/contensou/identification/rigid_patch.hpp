@@ -25,12 +25,24 @@
 #pragma once
 
 #include <Eigen/Core>
+#include <optional>
+#include <string>
 #include <vector>
 
 #include "contensou/friction/limit_surface.hpp"
 #include "contensou/identification/measured_data.hpp"
 
 namespace contensou {
+
+/// A contact wider than the body (a = c R, c > 1) that places the measured motions better than
+/// every patch on the body: evidence that the bound c <= 1 holds the search, i.e. that the data
+/// carry more torque per spin than any pressure under the body gives (the torque or the spin
+/// measured, or a torque from outside the contact). Reported, never used to predict.
+struct WiderContact {
+  double radius_ratio = 1.0;      ///< c > 1 of the best wider contact
+  int exponent = 0;               ///< its n (the patch's kx, ky kept)
+  double median_angle_deg = 0.0;  ///< on the rows the patch was chosen on [deg]
+};
 
 /// The identified patch (header comment): shape, shift, size and force scale.
 struct RigidPatch {
@@ -42,6 +54,9 @@ struct RigidPatch {
   double force_scale_n = 1.0;         ///< f N [N]: the sliding force
   double median_angle_deg = 0.0;      ///< on the rows it was chosen on [deg]
   int rows = 0;                       ///< the rows it was chosen on
+  /// Set when the search ends on c = 1 and a wider contact's median angle is smaller by more
+  /// than RigidPatchOptions::wider_margin (relative): the bound, not the data, holds c.
+  std::optional<WiderContact> wider_contact;
 };
 
 /// Throws InvalidArgument naming the first bad field: R not positive and finite, c outside
@@ -70,9 +85,12 @@ struct RigidPatchOptions {
   std::vector<int> exponents{0, 2, 4, 8, 16, 32, 64, 128};  ///< n (even)
   std::vector<double> shifts{-0.4, -0.2, 0.0, 0.2, 0.4};    ///< kx and ky (kx^2 + ky^2 <= 1)
   std::vector<double> radius_ratios{0.5, 0.6, 0.7, 0.8, 0.9, 1.0};  ///< c
-  int passes = 2;           ///< coordinate passes, at least 1
-  int max_rows = 1000;      ///< rows the search uses (spread evenly over the data), at least 3
-  double tolerance = 1e-6;  ///< of the exact integrals in the search (relative to f N)
+  /// c > 1 tried (with every exponent) when the search ends on c = 1 (WiderContact); empty: none
+  std::vector<double> wider_radius_ratios{1.1, 1.2, 1.3, 1.4, 1.5};
+  double wider_margin = 0.05;  ///< relative gain in the median angle that counts, in [0, 1)
+  int passes = 2;              ///< coordinate passes, at least 1
+  int max_rows = 1000;         ///< rows the search uses (spread evenly over the data), at least 3
+  double tolerance = 1e-6;     ///< of the exact integrals in the search (relative to f N)
 };
 
 /// The patch of `data` (rows with all three channels and some motion and force) for a body of
