@@ -74,12 +74,25 @@ LimitCycle settled_cycle(const ShimmyConfig& config, const GearModel& model, con
   LimitCycle c = assess_limit_cycle(run, config.gear.structure, st.growth_rate_per_s,
                                     st.frequency_hz, config.criterion);
   double end = config.gear.scenario.end_time_s, window_end = run.window_end_s;
+  double finished = end;  // the end of the last run that finished
   while (worth_extending(c, config.criterion) && end < kLongestRun) {
     end = std::min(2.0 * end, kLongestRun);
     GearModel longer = model;
     longer.config.scenario = extended_run(config.gear.scenario, end);
-    const LandingRun r = simulate_landing(longer, config.solver, config.criterion);
+    LandingRun r;
+    try {
+      r = simulate_landing(longer, config.solver, config.criterion);
+    } catch (const Interrupted&) {
+      throw;
+    } catch (const std::runtime_error& e) {
+      // The verdict stays the finished run's, and says why it was not looked at longer.
+      c.verdict += "; a run extended to " + format_value(end) +
+                   " s to see it settle did not finish, so this is the " + format_value(finished) +
+                   " s run's verdict (" + e.what() + ")";
+      break;
+    }
     if (!(r.window_end_s > window_end)) break;  // the window does not grow with the run
+    finished = end;
     window_end = r.window_end_s;
     c = assess_limit_cycle(r, config.gear.structure, st.growth_rate_per_s, st.frequency_hz,
                            config.criterion);

@@ -38,17 +38,36 @@ void require_landing(const LandingScenario& s) {
                               format_value(s.end_time_s) + ": there is no landing to analyse");
 }
 
+namespace {
+
+// One landing; a solver failure names the contact model and the tolerance it ran at (the
+// failure itself says where and why).
+LandingRun landing_of(const GearModel& model, ContactModel cm, const SolverOptions& solver,
+                      const ShimmyCriterion& criterion) {
+  try {
+    return simulate_landing(model, solver, criterion);
+  } catch (const Interrupted&) {
+    throw;
+  } catch (const std::runtime_error& e) {
+    throw std::runtime_error(std::string("the landing with the ") + to_string(cm) +
+                             " tire (relative tolerance " +
+                             format_value(solver.relative_tolerance) + "): " + e.what());
+  }
+}
+
+}  // namespace
+
 Landings simulate_landings(const ShimmyConfig& config, const TireInput* tire) {
   require_landing(config.gear.scenario);
   Landings out;
   for (ContactModel cm : config.models) {
     const GearModel model = gear_model(config, cm, tire);
-    out.runs.push_back(simulate_landing(model, config.solver, config.criterion));
+    out.runs.push_back(landing_of(model, cm, config.solver, config.criterion));
     // Convergence: the same landing at a 100 times tighter tolerance.
     SolverOptions tight = config.solver;
     tight.relative_tolerance *= 1e-2;
     tight.record = false;
-    out.tight.push_back(simulate_landing(model, tight, config.criterion));
+    out.tight.push_back(landing_of(model, cm, tight, config.criterion));
     out.tight_relative_tolerance = tight.relative_tolerance;
   }
   return out;

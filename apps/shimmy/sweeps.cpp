@@ -192,10 +192,12 @@ std::string why_no_point(const BifurcationSweep& s) {
          "; at " + format_value(first->value) + ": " + first->error + ")";
 }
 
-// A panel with nothing to draw, saying why.
+// A panel with nothing to draw, saying why (no y tics: a range that holds no data has no scale
+// to read).
 std::string empty_panel(const std::string& why) {
-  return "set yrange [0:1]\nset label 1 '" + why +
-         "' at graph 0.5, 0.5 center\nplot NaN notitle\nunset label 1\nset autoscale y\n";
+  return "set yrange [0:1]\nunset ytics\nset label 1 '" + why +
+         "' at graph 0.5, 0.5 center\nplot NaN notitle\nunset label 1\nset ytics\n"
+         "set autoscale y\n";
 }
 
 // Amplitude and torque-link load against the parameter, every model, both directions.
@@ -257,8 +259,13 @@ void draw_linear(const OutputDir& out, const std::vector<const BifurcationSweep*
   gp << "set ylabel 'growth rate of the linearisation [1/s]'\nset xzeroaxis lt -1\n"
      << (linear ? growth.str() + "\n" : none) << "set ylabel 'shimmy frequency [Hz]'\n"
      << (linear ? freq.str() + "\n" : none) << "set ylabel 'time to onset [s]'\n";
+  const bool ran = std::any_of(group.begin(), group.end(), [](const BifurcationSweep* s) {
+    return std::any_of(s->up.begin(), s->up.end(), [](const SweepPoint& p) { return p.valid; });
+  });
   if (any_finite(group, true, [](const SweepPoint& p) { return p.onset_s; }))
     gp << onset.str() << "\n";
+  else if (!ran)
+    gp << empty_panel("no onset to show: no up-sweep point finished its run");
   else
     gp << empty_panel("no onset: no up-sweep point reaches " +
                       format_value(o.amplitude_threshold_rad) + " rad from the kick");

@@ -506,6 +506,10 @@ void advance(Stepping& s, double tout) {
 
 }  // namespace
 
+std::string unusual_gear_inputs(const GearConfig& config) {
+  return unusual_parameters(config);
+}
+
 struct LandingStepper::Impl : Stepping {};
 
 LandingStepper::LandingStepper(const GearModel& model, const SolverOptions& options,

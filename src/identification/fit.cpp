@@ -6,6 +6,7 @@
 #include "contensou/friction/error.hpp"
 #include "contensou/identification/effect_model.hpp"
 #include "fit_problem.hpp"
+#include "shared_laws.hpp"
 
 namespace contensou {
 
@@ -23,7 +24,30 @@ namespace {
 
 constexpr int K = kModelParameters;
 
+// The given profile's shape on the patch (only the shape matters: a unit load and unit
+// friction, no shift).
+ContactPatch profile_patch(const IdentificationOptions& o) {
+  PressureProfile shape = *o.profile;
+  shape.kx = shape.ky = 0.0;
+  return ContactPatch::from_normal_load(o.radius_m, 1.0, shape, 1.0);
+}
+
+// 1e-6 of the profile is far below any measurement noise and keeps a tabulated profile's
+// series short (its PCHIP is only C1).
+ExactModel<double> profile_exact_model(const ContactPatch& patch) {
+  return make_exact_model(patch, 1e-6);
+}
+
 }  // namespace
+
+void detail::LawSharing::share(IdentificationOptions& o) {
+  require_positive("radius", o.radius_m);
+  auto shared = std::make_shared<SharedLaws>();
+  if (o.profile) shared->profile_model = profile_exact_model(profile_patch(o));
+  shared->laws = std::make_shared<ExactLawCache>(o.radius_m, shared->profile_model,
+                                                 ModelSpec{}.exact_tolerance);
+  o.shared_laws_ = std::move(shared);
+}
 
 ModelSpec base_spec_for(const MeasuredData& data, const IdentificationOptions& o) {
   require_positive("radius", o.radius_m);
@@ -38,11 +62,10 @@ ModelSpec base_spec_for(const MeasuredData& data, const IdentificationOptions& o
     s.reference_load_n = o.normal_load_n.value_or(rows->mean_n);
     s.normal_load_n = s.reference_load_n;
   }
+  const detail::SharedLaws* shared = detail::LawSharing::of(o);
+  if (shared) s.exact_laws = shared->laws;
   if (o.profile) {
-    // Only the profile's shape matters here: a unit load and unit friction.
-    PressureProfile shape = *o.profile;
-    shape.kx = shape.ky = 0.0;
-    const ContactPatch patch = ContactPatch::from_normal_load(o.radius_m, 1.0, shape, 1.0);
+    const ContactPatch patch = profile_patch(o);
     const FractionalLaw<double> law = fractional_law_from_patch(patch);
     s.c = law.c;
     s.a_k = law.a_k;
@@ -52,11 +75,14 @@ ModelSpec base_spec_for(const MeasuredData& data, const IdentificationOptions& o
     s.profile_a = law.a;
     s.profile_m = law.m;
     s.profile_m0_ratio = law.M0 / (law.F0 * o.radius_m);
-    // 1e-6 of the profile is far below any measurement noise and keeps a tabulated profile's
-    // series short (its PCHIP is only C1).
-    s.profile_model = make_exact_model(patch, 1e-6);
-    s.profile = shape;
-    s.exact_laws = std::make_shared<ExactLawCache>(o.radius_m, s.profile_model, s.exact_tolerance);
+    s.profile = patch.profile;
+    if (shared) {
+      s.profile_model = shared->profile_model;
+    } else {
+      s.profile_model = profile_exact_model(patch);
+      s.exact_laws =
+          std::make_shared<ExactLawCache>(o.radius_m, s.profile_model, s.exact_tolerance);
+    }
   }
   double f0 = 0.0, m0 = 0.0;
   for (const MeasuredPoint& p : data.points) {

@@ -8,6 +8,7 @@
 #include "contensou/identification/prediction.hpp"
 #include "contensou/identification/rigid_patch.hpp"
 #include "contensou/identification/sweeps.hpp"
+#include "shared_laws.hpp"
 
 namespace contensou {
 
@@ -211,7 +212,10 @@ void attach_motion_patch(const IdentifyOptions& o, Identification& r) {
 
 }  // namespace
 
-Identification identify(const MeasuredData& data, const IdentifyOptions& options) {
+Identification identify(const MeasuredData& data, const IdentifyOptions& given) {
+  // Every fit below (the loop, its refits, its resamples) shares the profile's laws.
+  IdentifyOptions options = given;
+  detail::LawSharing::share(options.fit);
   Identification r;
   r.fitted = data;
   r.origin.resize(data.points.size());

@@ -5,9 +5,11 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <exception>
 #include <map>
 #include <numbers>
 #include <string>
+#include <thread>
 #include <tuple>
 
 #include "contensou/friction/error.hpp"
@@ -72,14 +74,31 @@ LimitSurface shape_surface(const RigidPatch& p, double tolerance) {
 
 // The median angle [rad] between the motion the surface gives each row's wrench and its motion
 // (a row the surface cannot place counts as pi).
+// The rows on up to 8 threads (one a core), each its own rows i = w, w + T, ...: each row's
+// angle is the same whatever the threads (the surface is only read).
 double median_angle(const LimitSurface& surface, double radius_m, const PairRows& rows) {
-  std::vector<double> angles;
-  angles.reserve(rows.twist.size());
-  for (std::size_t i = 0; i < rows.twist.size(); ++i) {
+  std::vector<double> angles(rows.twist.size());
+  const auto angle_of = [&](std::size_t i) {
     const Eigen::Vector3d m = rigid_patch_motion(surface, radius_m, rows.wrench[i]);
     const double a = angle_rad(m, scaled_unit(rows.twist[i], radius_m));
-    angles.push_back(std::isfinite(a) ? a : std::numbers::pi);
-  }
+    angles[i] = std::isfinite(a) ? a : std::numbers::pi;
+  };
+  const std::size_t threads = std::min<std::size_t>(
+      {std::max(1u, std::thread::hardware_concurrency()), 8, angles.size() / 32 + 1});
+  std::vector<std::exception_ptr> error(threads);  // each thread's first, rethrown here
+  const auto block = [&](std::size_t w) {
+    try {
+      for (std::size_t i = w; i < angles.size(); i += threads) angle_of(i);
+    } catch (...) {
+      error[w] = std::current_exception();
+    }
+  };
+  std::vector<std::thread> pool;
+  for (std::size_t w = 1; w < threads; ++w) pool.emplace_back(block, w);
+  block(0);
+  for (std::thread& t : pool) t.join();
+  for (const std::exception_ptr& e : error)
+    if (e) std::rethrow_exception(e);
   const std::size_t mid = angles.size() / 2;
   std::nth_element(angles.begin(), angles.begin() + static_cast<std::ptrdiff_t>(mid), angles.end());
   double median = angles[mid];

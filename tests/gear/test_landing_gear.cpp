@@ -530,3 +530,22 @@ TEST(LandingGear, ALandingPastItsStepBudgetEndsNamingIt) {
   EXPECT_THROW(simulate_landing(make_gear_model(GearConfig{}, ContactModel::coupled), o),
                contensou::InvalidArgument);
 }
+
+// The inputs named as far from a landing gear's: none for the default gear; a negative value
+// where the default is positive comes first, then a value 1e3 times the default's with its
+// decades; a value 10 times off is not named.
+TEST(LandingGear, UnusualInputsAreTheNegativeThenTheDecadesOff) {
+  EXPECT_EQ(unusual_gear_inputs(GearConfig{}), "");
+  GearConfig c;
+  c.structure.torsional_damping_nms_per_rad = -100.0;
+  c.structure.offset_m *= 1e3;
+  c.structure.torsional_stiffness_nm_per_rad *= 10.0;
+  const std::string u = unusual_gear_inputs(c);
+  const std::size_t negative = u.find("structure.torsional_damping_nms_per_rad = -100 (negative");
+  const std::size_t offset = u.find("structure.offset_m = ");
+  ASSERT_NE(negative, std::string::npos) << u;
+  ASSERT_NE(offset, std::string::npos) << u;
+  EXPECT_LT(negative, offset) << u;
+  EXPECT_NE(u.find("(1e3x off the default)"), std::string::npos) << u;
+  EXPECT_EQ(u.find("torsional_stiffness"), std::string::npos) << u;
+}

@@ -1,13 +1,15 @@
 // The exact laws of an identification model's profile (exact_law_cache.hpp): a given profile
 // times the basis shapes phi1 = 1 + T1(2t - 1) = 2t and phi2 = 1 + T2(2t - 1) = 2(2t - 1)^2
 // (the profile_correction effect) against closed forms of their load and spin torque, and a
-// table's product against the same product as a series.
+// table's product against the same product as a series; options' shared laws are one cache that
+// builds the laws a fit builds alone.
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <numbers>
 
 #include "contensou/identification.hpp"
+#include "shared_laws.hpp"  // src/identification (internal)
 
 using namespace contensou;
 
@@ -95,4 +97,42 @@ TEST(ExactLawCache, TheParametricProfileHasThreeThenFiveBasisLaws) {
   const ExactLawCache cache(0.087, std::nullopt, 1e-6);
   EXPECT_EQ(cache.laws(false, {}, 2).size(), 3u);
   EXPECT_EQ(cache.laws(false, {}, 4).size(), 5u);
+}
+
+// Options given shared laws (identify() gives its resamples the laws of its first loop) hand
+// every base spec one cache and the profile model a spec builds alone: the laws are built once,
+// and they are the laws each fit would build (the same resultants to the last bit).
+TEST(ExactLawCache, SharedLawsAreOneCacheForEveryFitOfTheOptions) {
+  MeasuredData d;
+  MeasuredPoint p;
+  p.kinematics = {0.3, 0.1, 2.0};
+  p.force = {-100.0, -30.0, -2.0};
+  d.points.push_back(p);
+  for (const bool given : {true, false}) {
+    IdentificationOptions o;
+    o.radius_m = 0.087;
+    if (given) o.profile = hertz_profile();
+    const ModelSpec alone = base_spec_for(d, o), again = base_spec_for(d, o);
+    EXPECT_NE(alone.exact_laws, again.exact_laws) << given;
+    detail::LawSharing::share(o);
+    const ModelSpec first = base_spec_for(d, o), second = base_spec_for(d, o);
+    ASSERT_TRUE(first.exact_laws);
+    EXPECT_EQ(first.exact_laws, second.exact_laws) << given;
+    EXPECT_EQ(first.profile_model.has_value(), given);
+    const Kinematics<double> k{0.3, 0.1, 2.0};
+    if (given) {
+      const Resultants<double> a = exact_resultants(*first.profile_model, k).resultants;
+      const Resultants<double> b = exact_resultants(*alone.profile_model, k).resultants;
+      EXPECT_EQ(a.vector(), b.vector());
+    }
+    const std::vector<ExactLaw>& shared = first.exact_laws->laws(false, {}, 2);
+    const std::vector<ExactLaw>& own = alone.exact_laws->laws(false, {}, 2);
+    ASSERT_EQ(shared.size(), own.size());
+    for (std::size_t i = 0; i < own.size(); ++i)
+      EXPECT_EQ(exact_law_resultants(shared[i], k).vector(),
+                exact_law_resultants(own[i], k).vector())
+          << given << " " << i;
+  }
+  IdentificationOptions bad;
+  EXPECT_THROW(detail::LawSharing::share(bad), InvalidArgument);
 }

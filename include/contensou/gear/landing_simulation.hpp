@@ -115,6 +115,12 @@ void require_relative_tolerance(const std::string& name, double rtol);
 /// window_start_s / window_end_s override; the whole run if the window would be empty.
 std::pair<double, double> analysis_window(const LandingScenario& scenario);
 
+/// The gear's inputs furthest from the default gear's (GearConfig{}): a negative value where the
+/// default is positive first ("structure.torsional_damping_nms_per_rad = -100 (negative; the
+/// default is 216)"), then those 100 times or more off, by orders of magnitude, at most three in
+/// all; "" when none is. A failed landing names them; an app can say them before it runs.
+std::string unusual_gear_inputs(const GearConfig& config);
+
 /// Integrates from t = 0 to scenario.end_time_s. Throws InvalidArgument for a bad
 /// configuration or solver option (more than 1e6 samples included), std::runtime_error naming
 /// the CVODE failure (flag, time) if the integrator gives up, Interrupted when options.stop asks.

@@ -39,6 +39,8 @@ struct Seams;  // (Internal) src/identification/test_seams.hpp, not installed
 }  // namespace testing
 
 namespace detail {
+struct SharedLaws;  // (Internal) src/identification/shared_laws.hpp, not installed
+struct LawSharing;  // (Internal) the only way to set or read IdentificationOptions' shared laws
 /// (Internal) What tests set, through testing::Seams only, to reach failure paths; -1: off.
 struct TestSeams {
   int failing_point = -1;         ///< this point's residual fails to evaluate (a failed solve)
@@ -102,7 +104,11 @@ struct IdentificationOptions {
 
  private:
   detail::TestSeams seams_;
+  // The profile's exact model and laws, shared by the fits of one identify() (its resamples),
+  // so that each builds them once; unset: each fit builds its own (shared_laws.hpp).
+  std::shared_ptr<const detail::SharedLaws> shared_laws_;
   friend struct testing::Seams;
+  friend struct detail::LawSharing;
 };
 
 /// One parameter of a fit's report.
