@@ -47,7 +47,7 @@ void progress_bar(const std::string& label, int done, int total) {
 nlohmann::json run_landings(const ShimmyConfig& config, const app::OutputDir& out, unsigned threads,
                             const TireInput* tire) {
   if (const std::string unusual = unusual_gear_inputs(config.gear); !unusual.empty())
-    std::printf("note: inputs far from a landing gear's: %s\n", unusual.c_str());
+    std::printf("note: inputs far from the default gear's: %s\n", unusual.c_str());
   const Landings landings = simulate_landings(config, tire);
   const LandingAnalysis analysis = analyse_landings(config, landings, tire, threads, progress_bar);
   return report_landings(config, landings, analysis, tire, out);

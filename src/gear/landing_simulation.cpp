@@ -185,7 +185,7 @@ void check_step(int flag, const char* what, double t, const GearConfig& config) 
   std::string message = std::string("CVODE ") + what + " failed at t = " + format_value(t) +
                         " s with " + (name ? std::string(name) : "flag " + std::to_string(flag)) +
                         ": " + meaning +
-                        (unusual.empty() ? "" : "; inputs far from a landing gear's: " + unusual);
+                        (unusual.empty() ? "" : "; inputs far from the default gear's: " + unusual);
   std::free(name);  // CVodeGetReturnFlagName allocates
   throw std::runtime_error(message);
 }

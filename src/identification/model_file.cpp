@@ -240,9 +240,19 @@ std::optional<RigidPatch> read_patch(const Reader& r, const Json& j) {
   if (m.contains("wider_contact") && !m.at("wider_contact").is_null()) {
     const Json& w = m.at("wider_contact");
     const std::string where = "motion_patch.wider_contact.";
-    p.wider_contact = WiderContact{r.number(w, "radius_ratio", where),
-                                   static_cast<int>(r.number(w, "exponent", where)),
-                                   r.number(w, "median_angle_deg", where)};
+    const double c = r.number(w, "radius_ratio", where), wn = r.number(w, "exponent", where),
+                 angle = r.number(w, "median_angle_deg", where);
+    if (!(c > 1.0 && c <= 10.0))
+      throw InvalidArgument(r.source() + ": " + where + "radius_ratio", format_value(c),
+                            "must be in (1, 10]: a contact wider than the body");
+    if (!(wn >= 0.0 && wn <= kMaxPowerProfileExponent) || wn != 2.0 * std::floor(wn / 2.0))
+      throw InvalidArgument(
+          r.source() + ": " + where + "exponent", format_value(wn),
+          "must be an even integer in [0, " + std::to_string(kMaxPowerProfileExponent) + "]");
+    if (!(angle >= 0.0 && angle <= 180.0))
+      throw InvalidArgument(r.source() + ": " + where + "median_angle_deg", format_value(angle),
+                            "must be in [0, 180] deg");
+    p.wider_contact = WiderContact{c, static_cast<int>(wn), angle};
   }
   try {
     validate(p);

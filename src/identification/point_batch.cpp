@@ -4,6 +4,8 @@
 #include <exception>
 #include <thread>
 
+#include "run_blocks.hpp"
+
 namespace contensou::detail {
 namespace {
 
@@ -74,20 +76,9 @@ void PointBatch::evaluate_all(const double* x, bool with_jacobians) {
   ok_.assign(points_.size(), 0);
   const std::size_t blocks = points_.size();
   const std::size_t t = static_cast<std::size_t>(std::max(1, threads_));
-  std::vector<std::exception_ptr> errors(t);
-  const auto range = [&](std::size_t j) {
-    try {
-      evaluate_range(blocks * j / t, blocks * (j + 1) / t, with_jacobians);
-    } catch (...) {
-      errors[j] = std::current_exception();
-    }
-  };
-  std::vector<std::thread> workers;
-  for (std::size_t j = 1; j < t; ++j) workers.emplace_back(range, j);
-  range(0);
-  for (std::thread& w : workers) w.join();
-  for (const std::exception_ptr& e : errors)
-    if (e) std::rethrow_exception(e);
+  run_blocks(t, [&](std::size_t j) {
+    evaluate_range(blocks * j / t, blocks * (j + 1) / t, with_jacobians);
+  });
   valid_ = true;
   has_jacobians_ = with_jacobians;
 }

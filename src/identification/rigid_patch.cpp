@@ -5,7 +5,6 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
-#include <exception>
 #include <map>
 #include <numbers>
 #include <string>
@@ -13,6 +12,7 @@
 #include <tuple>
 
 #include "contensou/friction/error.hpp"
+#include "run_blocks.hpp"
 
 namespace contensou {
 
@@ -85,20 +85,9 @@ double median_angle(const LimitSurface& surface, double radius_m, const PairRows
   };
   const std::size_t threads = std::min<std::size_t>(
       {std::max(1u, std::thread::hardware_concurrency()), 8, angles.size() / 32 + 1});
-  std::vector<std::exception_ptr> error(threads);  // each thread's first, rethrown here
-  const auto block = [&](std::size_t w) {
-    try {
-      for (std::size_t i = w; i < angles.size(); i += threads) angle_of(i);
-    } catch (...) {
-      error[w] = std::current_exception();
-    }
-  };
-  std::vector<std::thread> pool;
-  for (std::size_t w = 1; w < threads; ++w) pool.emplace_back(block, w);
-  block(0);
-  for (std::thread& t : pool) t.join();
-  for (const std::exception_ptr& e : error)
-    if (e) std::rethrow_exception(e);
+  detail::run_blocks(threads, [&](std::size_t w) {
+    for (std::size_t i = w; i < angles.size(); i += threads) angle_of(i);
+  });
   const std::size_t mid = angles.size() / 2;
   std::nth_element(angles.begin(), angles.begin() + static_cast<std::ptrdiff_t>(mid), angles.end());
   double median = angles[mid];

@@ -531,7 +531,7 @@ TEST(LandingGear, ALandingPastItsStepBudgetEndsNamingIt) {
                contensou::InvalidArgument);
 }
 
-// The inputs named as far from a landing gear's: none for the default gear; a negative value
+// The inputs named as far from the default gear's: none for the default gear; a negative value
 // where the default is positive comes first, then a value 1e3 times the default's with its
 // decades; a value 10 times off is not named.
 TEST(LandingGear, UnusualInputsAreTheNegativeThenTheDecadesOff) {

@@ -9,6 +9,9 @@
 #include <cmath>
 #include <numbers>
 #include <random>
+#include <string>
+#include <utility>
+#include <vector>
 
 #include "contensou/friction/error.hpp"
 #include "contensou/friction/exact_resultants.hpp"
@@ -196,6 +199,25 @@ TEST(RigidPatch, TheModelFileCarriesThePatchAndPredictUsesIt) {
   EXPECT_DOUBLE_EQ(back.motion_patch->wider_contact->radius_ratio, 1.2);
   EXPECT_EQ(back.motion_patch->wider_contact->exponent, 16);
   EXPECT_DOUBLE_EQ(back.motion_patch->wider_contact->median_angle_deg, 4.5);
+  // A wider contact the file cannot mean is refused by name (an exponent beyond an int, a
+  // contact inside the body, an angle past 180 deg).
+  for (const auto& [from, to] : std::vector<std::pair<std::string, std::string>>{
+           {"\"exponent\":16", "\"exponent\":1e300"},
+           {"\"exponent\":16", "\"exponent\":3"},
+           {"\"radius_ratio\":1.2", "\"radius_ratio\":0.8"},
+           {"\"median_angle_deg\":4.5", "\"median_angle_deg\":400"}}) {
+    std::string bad = model_to_json(s, -1);
+    const std::size_t at = bad.find(from);
+    ASSERT_NE(at, std::string::npos) << from;
+    bad.replace(at, from.size(), to);
+    try {
+      model_from_json(bad, "m.json");
+      ADD_FAILURE() << to << " accepted";
+    } catch (const InvalidArgument& e) {
+      EXPECT_NE(std::string(e.what()).find("motion_patch.wider_contact."), std::string::npos)
+          << e.what();
+    }
+  }
   EXPECT_EQ(back.motion_patch->exponent, 8);
   EXPECT_DOUBLE_EQ(back.motion_patch->kx, 0.2);
   EXPECT_DOUBLE_EQ(back.motion_patch->contact_radius_ratio, 0.8);
